@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what the project needs on Debian 12 when run as root and something is missing.
+set -euo pipefail
+pkgs=(cmake make g++ pkg-config libsystemc-dev googletest libgtest-dev libglm-dev libcli11-dev
+      nlohmann-json3-dev python3-matplotlib python3-numpy)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+if [ "$(id -u)" -ne 0 ]; then
+  echo "setup: missing Debian packages: ${missing[*]}" >&2
+  echo "setup: run as root, or: sudo apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

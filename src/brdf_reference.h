@@ -1,0 +1,19 @@
+// Real-valued references for the specular term (SPEC section 1): the exact BRDF, the quadratic
+// model with the exact a(n) (seed 001 formula 7), the patent's linear a (UA 60553 formula 10),
+// and the prior approximations of seed 001 (Schlick, (cos k*gamma)^(n/k)).
+#pragma once
+
+namespace shading::ref {
+
+double cos_pow(double c, double n);                 // cos^n gamma
+double a_exact(double n);                           // (t^(n-1) - 1) / (t - 1), t = sqrt((n-1)/n)
+double a_patent_formula(double n);                  // 0.786 n + 0.5 as printed in the patent
+double quadratic(double c, double a);               // q(c) = c + a (c^2 - c)
+double schlick(double c, double n);                 // c / (n - n c + c)
+double cos_k_gamma(double c, double n, double k);   // cos(k * acos c)^(n/k), 0 beyond k*gamma = pi/2
+
+// The UA 60553 datapath in real numbers for the same input codes: BRDF clamped to [0, 1]
+// (saturate mode) times k_s*I, no rounding anywhere.
+double real_datapath_out(double a, double c, double ksi);
+
+}  // namespace shading::ref

@@ -1,0 +1,258 @@
+// Testbench parts for the specular-colour devices (UA 60553 and its prototype UA 22802), in three
+// pieces reused by the testbench programs and the GoogleTest suites:
+//   specular_stimulus - drives the pins as in UA 60553, Fig. 3: per surface, n and k_s*I through
+//                       their strobes; then per pixel, cos on in18, ctl17 falls (latch) and rises
+//                       (validate);
+//   specular_monitor  - watches the pins like a logic analyser: records what each register
+//                       latched at its falling edge and samples out25..27 at every rising edge of
+//                       out29 that follows a latch;
+//   specular_checker  - compares every sample with the golden model and with cos^n.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <systemc>
+#include <vector>
+
+#include "../src/brdf_reference.h"
+#include "../src/specular_formats.h"
+#include "../src/specular_golden.h"
+#include "../src/ua60553_formats.h"
+#include "report_ids.h"
+
+namespace shading::tb {
+
+using n_t = sc_dt::sc_uint<ua60553::n_fmt.width>;
+using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
+using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
+using out_t = sc_dt::sc_uint<spec::out_fmt.width>;
+
+struct surface {
+    unsigned n;
+    std::array<unsigned, 3> ksi;      // k_s*I for R, G, B
+    std::vector<uint32_t> cos_codes;  // streamed on in18, one per ctl17 period
+};
+
+// Strobe timing of Fig. 3. A pixel takes t_high + t_low: cos changes in the middle of the high
+// phase, ctl17 falls (latch), stays low for t_low (the settling phase T), rises (outputs valid).
+struct strobe_timing {
+    sc_core::sc_time t_low{15, sc_core::SC_NS};
+    sc_core::sc_time t_high{5, sc_core::SC_NS};
+    sc_core::sc_time load_pulse{4, sc_core::SC_NS};  // width of a ctl15/20/22/24 pulse
+};
+
+struct pixel_sample {
+    uint64_t n = 0, cos = 0;
+    std::array<uint64_t, 3> ksi{}, out{};
+    sc_core::sc_time at;
+};
+
+class specular_stimulus : public sc_core::sc_module {
+public:
+    sc_core::sc_out<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
+    sc_core::sc_out<n_t> in16_n{"in16_n"};
+    sc_core::sc_out<cos_t> in18_cos{"in18_cos"};
+    sc_core::sc_out<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
+
+    SC_HAS_PROCESS(specular_stimulus);
+    specular_stimulus(const sc_core::sc_module_name& name, std::vector<surface> surfaces, strobe_timing t)
+        : sc_module(name), surfaces_(std::move(surfaces)), t_(t) {
+        SC_THREAD(run);
+    }
+
+    bool finished() const { return finished_; }
+    std::size_t pixels() const {
+        std::size_t p = 0;
+        for (const auto& s : surfaces_) p += s.cos_codes.size();
+        return p;
+    }
+
+private:
+    template <typename T>
+    void load(sc_core::sc_out<bool>& ctl, sc_core::sc_out<T>& data, uint64_t value) {
+        data.write(T(value));
+        ctl.write(true);
+        wait(t_.load_pulse);
+        ctl.write(false);  // falling edge: the register latches
+        wait(t_.load_pulse);
+    }
+
+    void run() {
+        ctl17.write(true);  // idle high: the first falling edge latches the first pixel
+        wait(t_.t_high);
+        for (const auto& s : surfaces_) {
+            load(ctl15, in16_n, s.n);
+            load(ctl20, in19_ksi_r, s.ksi[0]);
+            load(ctl22, in21_ksi_g, s.ksi[1]);
+            load(ctl24, in23_ksi_b, s.ksi[2]);
+            for (uint32_t c : s.cos_codes) {
+                in18_cos.write(c);
+                wait(t_.t_high / 2);
+                ctl17.write(false);  // latch cos into RG2
+                wait(t_.t_low);
+                ctl17.write(true);   // out29 rises: outputs 25..27 valid
+                wait(t_.t_high / 2);
+            }
+        }
+        finished_ = true;
+        sc_core::sc_stop();
+    }
+
+    std::vector<surface> surfaces_;
+    strobe_timing t_;
+    bool finished_ = false;
+};
+
+class specular_monitor : public sc_core::sc_module {
+public:
+    sc_core::sc_in<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
+    sc_core::sc_in<n_t> in16_n{"in16_n"};
+    sc_core::sc_in<cos_t> in18_cos{"in18_cos"};
+    sc_core::sc_in<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
+    sc_core::sc_in<out_t> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
+    sc_core::sc_in<bool> out29_valid{"out29_valid"};
+
+    SC_HAS_PROCESS(specular_monitor);
+    specular_monitor(const sc_core::sc_module_name& name, std::function<void(const pixel_sample&)> sink)
+        : sc_module(name), sink_(std::move(sink)) {
+        SC_METHOD(on_load);
+        sensitive << ctl15.neg() << ctl20.neg() << ctl22.neg() << ctl24.neg();
+        dont_initialize();
+        SC_METHOD(on_latch);
+        sensitive << ctl17.neg();
+        dont_initialize();
+        SC_METHOD(on_valid);
+        sensitive << out29_valid.pos();
+        dont_initialize();
+    }
+
+private:
+    void on_load() {
+        if (ctl15.negedge()) cur_.n = in16_n.read().to_uint64();
+        if (ctl20.negedge()) cur_.ksi[0] = in19_ksi_r.read().to_uint64();
+        if (ctl22.negedge()) cur_.ksi[1] = in21_ksi_g.read().to_uint64();
+        if (ctl24.negedge()) cur_.ksi[2] = in23_ksi_b.read().to_uint64();
+    }
+    void on_latch() {
+        cur_.cos = in18_cos.read().to_uint64();
+        pending_ = true;
+    }
+    void on_valid() {
+        if (!pending_) return;  // a rising edge with no pixel latched before it
+        pending_ = false;
+        pixel_sample s = cur_;
+        s.out = {out25_r.read().to_uint64(), out26_g.read().to_uint64(), out27_b.read().to_uint64()};
+        s.at = sc_core::sc_time_stamp();
+        sink_(s);
+    }
+
+    std::function<void(const pixel_sample&)> sink_;
+    pixel_sample cur_;
+    bool pending_ = false;
+};
+
+// Per-n statistics of one run.
+struct specular_stats {
+    std::size_t samples = 0, mismatches = 0;
+    double max_rel_err_056 = 0.0;  // |q_device - cos^n| / cos^n where cos^n >= 0.56 (seed 001)
+    std::size_t rel_err_points = 0;
+};
+
+class specular_checker {
+public:
+    using golden_fn = std::function<datapath_nets(uint64_t n, uint64_t cos, const std::array<uint64_t, 3>& ksi)>;
+
+    explicit specular_checker(golden_fn golden, std::size_t max_reports = 10)
+        : golden_(std::move(golden)), max_reports_(max_reports) {}
+
+    void check(const pixel_sample& s) {
+        auto& st = stats_[s.n];
+        ++st.samples;
+        const auto g = golden_(s.n, s.cos, s.ksi);
+        if (g.out != s.out) {
+            ++st.mismatches;
+            ++mismatches_;
+            if (mismatches_ <= max_reports_) {
+                std::ostringstream os;
+                os << "at " << s.at << " n=" << s.n << " cos=0x" << std::hex << s.cos << std::dec
+                   << ": device (" << s.out[0] << "," << s.out[1] << "," << s.out[2] << ") golden ("
+                   << g.out[0] << "," << g.out[1] << "," << g.out[2] << ") [Q9.8 codes]";
+                SC_REPORT_WARNING(msg::mismatch, os.str().c_str());
+            }
+        }
+        // Accuracy against the exact BRDF, on the channel with the largest k_s*I.
+        std::size_t ch = 0;
+        for (std::size_t i = 1; i < 3; ++i)
+            if (s.ksi[i] > s.ksi[ch]) ch = i;
+        if (s.ksi[ch] == 0 || s.cos > spec::cos_one) return;
+        const double c = to_real(s.cos, spec::cos_fmt);
+        const double exact = ref::cos_pow(c, static_cast<double>(s.n));
+        if (exact < 0.56) return;
+        const double q = to_real(s.out[ch], spec::out_fmt) / static_cast<double>(s.ksi[ch]);
+        st.max_rel_err_056 = std::max(st.max_rel_err_056, std::abs(q - exact) / exact);
+        ++st.rel_err_points;
+    }
+
+    const std::map<uint64_t, specular_stats>& stats() const { return stats_; }
+    std::size_t samples() const {
+        std::size_t n = 0;
+        for (const auto& [k, st] : stats_) n += st.samples;
+        return n;
+    }
+    std::size_t mismatches() const { return mismatches_; }
+
+private:
+    golden_fn golden_;
+    std::size_t max_reports_;
+    std::map<uint64_t, specular_stats> stats_;
+    std::size_t mismatches_ = 0;
+};
+
+// A bench that owns the pins' signals, the device, the stimulus, the monitor and the checker.
+// Device is any specular_datapath-derived top (device_ua60553, device_ua22802, ...).
+template <typename Device>
+class specular_bench : public sc_core::sc_module {
+public:
+    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
+    sc_core::sc_signal<n_t> in16_n{"in16_n"};
+    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"};
+    sc_core::sc_signal<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
+    sc_core::sc_signal<out_t> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
+    sc_core::sc_signal<bool> out29_valid{"out29_valid"};
+
+    specular_checker checker;
+    Device dut;
+    specular_stimulus stim;
+    specular_monitor mon;
+
+    template <typename... DeviceArgs>
+    specular_bench(const sc_core::sc_module_name& name, std::vector<surface> surfaces, strobe_timing t,
+                   specular_checker::golden_fn golden, DeviceArgs&&... device_args)
+        : sc_module(name),
+          checker(std::move(golden)),
+          dut("dut", std::forward<DeviceArgs>(device_args)...),
+          stim("stim", std::move(surfaces), t),
+          mon("mon", [this](const pixel_sample& s) { checker.check(s); }) {
+        bind(dut);
+        bind(stim);
+        bind(mon);
+        dut.out25_r(out25_r); dut.out26_g(out26_g); dut.out27_b(out27_b); dut.out29_valid(out29_valid);
+        mon.out25_r(out25_r); mon.out26_g(out26_g); mon.out27_b(out27_b); mon.out29_valid(out29_valid);
+    }
+
+    bool finished() const { return stim.finished(); }
+
+private:
+    template <typename M>
+    void bind(M& m) {
+        m.ctl15(ctl15); m.ctl17(ctl17); m.ctl20(ctl20); m.ctl22(ctl22); m.ctl24(ctl24);
+        m.in16_n(in16_n); m.in18_cos(in18_cos);
+        m.in19_ksi_r(in19_ksi_r); m.in21_ksi_g(in21_ksi_g); m.in23_ksi_b(in23_ksi_b);
+    }
+};
+
+}  // namespace shading::tb
