@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The main job: install what is missing (as root), configure, build in Release, run every
+# testbench and study, then print one summary table. Each step is a script in scripts/run.d/,
+# run in name order; each appends rows to out/summary.tsv:
+#   bench <TAB> case <TAB> samples <TAB> mismatches <TAB> max_error <TAB> cycles_per_pixel <TAB> note
+# VCDs go to traces/, CSV and PNG results to out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/build.sh
+mkdir -p out traces
+export SHADING_BIN="$PWD/build/bin" SHADING_OUT="$PWD/out" SHADING_SUMMARY="$PWD/out/summary.tsv"
+printf 'bench\tcase\tsamples\tmismatches\tmax_error\tcycles_per_pixel\tnote\n' > "$SHADING_SUMMARY"
+status=0
+for step in scripts/run.d/*.sh; do
+  echo "== ${step}"
+  if ! bash "$step"; then
+    echo "run: ${step} FAILED" >&2
+    status=1
+  fi
+done
+echo
+echo "Summary (out/summary.tsv):"
+column -t -s $'\t' "$SHADING_SUMMARY"
+exit $status
