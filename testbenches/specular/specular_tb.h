@@ -43,6 +43,9 @@ struct strobe_timing {
     sc_core::sc_time t_low{15, sc_core::SC_NS};
     sc_core::sc_time t_high{5, sc_core::SC_NS};
     sc_core::sc_time load_pulse{4, sc_core::SC_NS};  // width of a ctl15/20/22/24 pulse
+    // How long before the latching edge in18 changes; zero makes it change at the edge (a setup
+    // violation, for the tests of that bad input). Negative values are not allowed.
+    sc_core::sc_time cos_lead = t_high / 2;
 };
 
 struct pixel_sample {
@@ -90,8 +93,9 @@ private:
             load(ctl22, in21_ksi_g, s.ksi[1]);
             load(ctl24, in23_ksi_b, s.ksi[2]);
             for (uint32_t c : s.cos_codes) {
+                wait(t_.t_high / 2 - t_.cos_lead);
                 in18_cos.write(c);
-                wait(t_.t_high / 2);
+                wait(t_.cos_lead);
                 ctl17.write(false);  // latch cos into RG2
                 wait(t_.t_low);
                 ctl17.write(true);   // out29 rises: outputs 25..27 valid
