@@ -59,3 +59,10 @@ enum class overflow_mode {
 };
 
 }  // namespace shading
+
+#include <ostream>
+namespace shading {
+inline std::ostream& operator<<(std::ostream& os, overflow_mode m) {
+    return os << (m == overflow_mode::saturate ? "saturate" : "wrap");
+}
+}  // namespace shading

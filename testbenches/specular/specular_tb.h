@@ -73,6 +73,11 @@ public:
         for (const auto& s : surfaces_) p += s.cos_codes.size();
         return p;
     }
+    // Simulated time the whole stream takes (for watchdogs): 4 loads per surface, then pixels.
+    sc_core::sc_time duration() const {
+        return t_.t_high + t_.load_pulse * (8.0 * static_cast<double>(surfaces_.size())) +
+               (t_.t_low + t_.t_high) * static_cast<double>(pixels());
+    }
 
 private:
     template <typename T>
