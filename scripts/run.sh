@@ -6,6 +6,7 @@
 # VCDs go to traces/, CSV and PNG results to out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 scripts/build.sh
 mkdir -p out traces
 export SHADING_BIN="$PWD/build/bin" SHADING_OUT="$PWD/out" SHADING_SUMMARY="$PWD/out/summary.tsv"

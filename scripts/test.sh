@@ -3,5 +3,6 @@
 # Extra arguments go to ctest, e.g. scripts/test.sh -R UA60553Device
 set -euo pipefail
 cd "$(dirname "$0")/.."
+export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc)" "$@"

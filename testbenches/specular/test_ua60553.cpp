@@ -37,7 +37,7 @@ std::vector<uint32_t> codes(uint32_t first, uint32_t last) {
 }
 
 // Runs the bench to the end of its stimulus, with a watchdog on simulated time.
-void run(bench_t& bench, const strobe_timing& t) {
+void run(bench_t& bench) {
     const sc_time limit = bench.stim.duration() * 1.01 + sc_time(1, sc_core::SC_US);
     sc_core::sc_start(limit);
     ASSERT_TRUE(bench.finished()) << "stimulus did not finish within " << limit;
@@ -54,7 +54,7 @@ TEST_P(UA60553Exhaustive, EveryCosCodeBitExactAgainstTheGoldenModel) {
     std::vector<surface> s{{n, {255, 170, 1}, codes(0, spec::cos_one)}};
     strobe_timing t;
     bench_t bench("tb", s, t, golden_for(mode), mode);
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(bench.checker.samples(), spec::cos_one + 1);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
 }
@@ -78,7 +78,7 @@ TEST_P(UA60553Random, RandomTriplesBitExact) {
     for (int i = 0; i < 3000; ++i) s.push_back({n(rng), {k(rng), k(rng), k(rng)}, {c(rng), c(rng)}});
     strobe_timing t;
     bench_t bench("tb", s, t, golden_for(GetParam()), GetParam());
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(bench.checker.samples(), 6000u);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
 }
@@ -103,7 +103,7 @@ TEST(UA60553Timing, StrobeOnePicosecondLongerThanTheCriticalPathIsSilentAndCorre
     t.t_low = sc_time(11201, SC_PS);
     std::vector<surface> s{{100, {255, 255, 255}, codes(0x7000, 0x8000)}};
     bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
     EXPECT_EQ(bench.dut.chk_timing.violations(), 0u);
     EXPECT_EQ(report_log::get().count(msg::timing), 0u);
@@ -116,7 +116,7 @@ TEST(UA60553Timing, StrobeOnePicosecondShorterThanTheCriticalPathIsReported) {
     t.t_low = sc_time(11199, SC_PS);
     std::vector<surface> s{{100, {255, 255, 255}, codes(0x7000, 0x7100)}};
     bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(bench.dut.chk_timing.violations(), 0x101u) << "one report per validating edge";
     EXPECT_EQ(report_log::get().count(msg::timing), 0x101u);
     EXPECT_GT(bench.checker.mismatches(), 0u) << "a too-short strobe samples unsettled outputs";
@@ -132,7 +132,7 @@ TEST(UA60553Timing, SurfaceLoadTooCloseToTheValidatingEdgeIsReported) {
     t.load_pulse = sc_time(1, SC_NS);
     std::vector<surface> s{{1000, {255, 255, 255}, {0x7800}}};
     bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
-    run(bench, t);
+    run(bench);
     EXPECT_GE(bench.dut.chk_timing.violations(), 1u);
 }
 
@@ -142,7 +142,7 @@ TEST(UA60553BadInput, NZeroIsReportedAndGivesAEqualToK32) {
     std::vector<surface> s{{0, {255, 255, 255}, {0x0000, 0x4000, 0x6000, 0x8000}}};
     strobe_timing t;
     bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(report_log::get().count(msg::input), 1u);
     EXPECT_EQ(bench.dut.a_coef.read(), 64u) << "a = K32 = 0.1b on Q11.7";
     EXPECT_EQ(bench.checker.mismatches(), 0u);
@@ -154,7 +154,7 @@ TEST(UA60553BadInput, NAbove1000IsReportedAndFollowsTheLinearLaw) {
                            {1023, {255, 255, 255}, codes(0x7F00, 0x8000)}};
     strobe_timing t;
     bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(report_log::get().count(msg::input), 2u);
     EXPECT_EQ(bench.dut.a_coef.read(), 1023u * 101u + 64u);  // 1023 * 0.1100101b + 0.1b, no overflow
     EXPECT_EQ(bench.checker.mismatches(), 0u);
@@ -165,7 +165,7 @@ TEST(UA60553BadInput, CosAboveOneIsReportedAndSaturatesToFullIntensity) {
     std::vector<surface> s{{50, {255, 100, 3}, {0x8001, 0x9000, 0xC000, 0xFFFF}}};
     strobe_timing t;
     bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(report_log::get().count(msg::input), 4u);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
     // Hand-worked: q clamps to 1.0, so each output is k_s*I exactly (integer part, zero fraction).
@@ -179,7 +179,7 @@ TEST(UA60553BadInput, CosAboveOneInWrapModeIsReportedAndBitExact) {
     std::vector<surface> s{{50, {255, 100, 3}, codes(0x8001, 0x8400)}};
     strobe_timing t;
     bench_t bench("tb", s, t, golden_for(overflow_mode::wrap), overflow_mode::wrap);
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(report_log::get().count(msg::input), 0x400u);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
 }
@@ -199,7 +199,7 @@ TEST(UA60553BadInput, CosChangingAtTheLatchingEdgeIsReportedAndTheOldValueKept) 
         return r;
     };
     bench_t bench("tb", s, t, golden);
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(report_log::get().count(msg::setup), stream.size());
     EXPECT_EQ(bench.checker.mismatches(), 0u);
     EXPECT_EQ(bench.dut.rg2_cos.read(), 0x7000u);
@@ -213,7 +213,7 @@ TEST(UA60553Trace, VcdDeclaresTheDatapathSignals) {
         bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
         vcd_file vcd(path);
         vcd.trace(bench);
-        run(bench, t);
+        run(bench);
     }
     std::ifstream in(path + ".vcd");
     ASSERT_TRUE(in.good()) << path << ".vcd was not written";
@@ -249,7 +249,7 @@ TEST(UA60553Checker, AWrongGoldenValueIsCaught) {
     };
     strobe_timing t;
     bench_t bench("tb", s, t, wrong);
-    run(bench, t);
+    run(bench);
     EXPECT_EQ(bench.checker.mismatches(), 10u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 10u);
 }
