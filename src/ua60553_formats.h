@@ -28,3 +28,29 @@ inline constexpr qfmt mul6_fmt{17, false, 7};  // n * K31: Q10.7, exact (10 x 7 
 inline constexpr qfmt a_fmt{18, false, 7};     // ADD15 = a: Q11.7, one bit wider than MUL6
 
 }  // namespace shading::ua60553
+
+namespace shading::ua60553 {
+
+// A ROM-free generator beyond formula 10, found by the study's search (testbenches/study,
+// README "A better ROM-free a(n)"): the same MUL6 and ADD15 on the same buses, but node 32 may
+// carry a negative constant (its two's complement on a Q1.7 signed bus, sign-extended by ADD15),
+// and n < 2 forces a = 0 (an OR gate over n's bits 9..1 drives the key block on the a bus).
+// Why: a(n) = 2(1 - e^(-1/2)) n - 1/2 + O(1/n) = 0.78694 n - 0.5 (README), so the patent's slope is
+// right but its +0.5 has the wrong sign; and a(1) = 0 cannot lie on a line through a(2) = 1 with
+// slope 0.79.
+struct tuned_generator {
+    const char* name;
+    const char* k31_bits;  // node 31, Q0.7, MSB (weight 1/2) first
+    const char* k32_bits;  // |K32|, Q0.7, MSB first
+    bool k32_negative;     // node 32 = -|K32|
+};
+
+inline constexpr qfmt k32s_fmt{8, true, 7};  // node 32 of the tuned device: Q1.7 signed
+
+// The search's winner (build/bin/generator_search, out/generator_search.csv): the patent's own
+// node-31 constant 0.1100101b = 0.7890625 with node 32 = -0.101b = -0.625, and n < 2 -> a = 0.
+// Worst relative error above cos^n = 0.56 over n in [1, 1000]: 3.09 % bit-accurate (the ROM
+// prototype: 3.16 %; the patent's constants: 56.7 %, at n = 1).
+inline constexpr tuned_generator minimax{"minimax", "1100101", "1010000", true};
+
+}  // namespace shading::ua60553

@@ -1,0 +1,48 @@
+// Search for the best ROM-free generator of `a` (generator_search.h). Writes every candidate
+// whose worst error is below --keep as CSV (best first) and prints the winner; the winner is fixed
+// in src/ua60553_formats.h as ua60553::minimax (a test re-checks it).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include "generator_search.h"
+
+int main(int argc, char* argv[]) {
+    CLI::App app{"search for the ROM-free a(n) generator with the smallest worst-case error"};
+    std::string csv = "out/generator_search.csv";
+    double keep = 0.06;
+    app.add_option("--csv", csv, "output CSV");
+    app.add_option("--keep", keep, "keep candidates whose worst max rel error is below this");
+    CLI11_PARSE(app, argc, argv);
+
+    using namespace shading::study;
+    const grid g;
+    const auto all = search_generators(g, keep);
+    std::ofstream out(csv);
+    out << "rank,k31_bits,k31,k32_sign,k32_bits,k32,n_lt2_zero,nonzero_bits,worst_maxrel_1_1000,"
+           "worst_maxrel_1_512\n";
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const auto& c = all[i];
+        out << i + 1 << ',' << c.k31_string() << ',' << c.k31 / 128.0 << ',' << (c.k32 < 0 ? '-' : '+')
+            << ',' << c.k32_string() << ',' << c.k32 / 128.0 << ',' << c.n_lt2_zero << ',' << c.nnz()
+            << ',' << c.worst_1000 << ',' << c.worst_512 << '\n';
+    }
+    if (all.empty()) {
+        std::cerr << "generator_search: no candidate below " << keep << "\n";
+        return 1;
+    }
+    const auto& w = all.front();
+    std::printf("winner: K31 = 0.%s (%.7f), K32 = %c0.%s (%+.7f), n<2 -> a=0: %s, worst max rel err "
+                "above 0.56: %.5f (n in [1,1000]), %.5f (n in [1,512]); %zu candidates kept\n",
+                w.k31_string().c_str(), w.k31 / 128.0, w.k32 < 0 ? '-' : '+', w.k32_string().c_str(),
+                w.k32 / 128.0, w.n_lt2_zero ? "yes" : "no", w.worst_1000, w.worst_512, all.size());
+    for (const auto& c : all)
+        if (!c.n_lt2_zero) {
+            std::printf("best without the n<2 special case: K31 = 0.%s, K32 = %+.7f, worst %.5f\n",
+                        c.k31_string().c_str(), c.k32 / 128.0, c.worst_1000);
+            break;
+        }
+    return out ? 0 : 1;
+}
