@@ -1,0 +1,228 @@
+// Accuracy study of the quadratic BRDF (seed 001) and of the devices built on it. For every
+// n in [1, 1000] and every method: the largest relative error against cos^n where cos^n >= 0.56
+// and the NMSE over the 32769 Q1.15 codes of cos in [0, 1] (study_metrics.h). Writes, into --out:
+//   accuracy.csv            one row per n, two columns per method (+ the a of each generator)
+//   accuracy_summary.csv    one row per method: worst cases, whether seed 001's 4 % holds
+//   fig2_curve.csv          cos^n and the approximations along cos for --fig2-n (seed 001, Fig. 2)
+//   rom_fraction_sweep.csv  the measurement that fixed the ROM word's fraction bits
+//   hw_cost.csv             ROM bits, multiplier cells and adder bits per design
+// and appends one summary row per method to $SHADING_SUMMARY.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "../src/brdf_reference.h"
+#include "../src/specular_formats.h"
+#include "../src/specular_golden.h"
+#include "../src/ua22802_formats.h"
+#include "../src/ua22802_golden.h"
+#include "../src/ua60553_formats.h"
+#include "../src/ua60553_tuned_golden.h"
+#include "study_metrics.h"
+
+using namespace shading;
+using namespace shading::study;
+
+namespace {
+
+struct method {
+    std::string id, label;
+    std::function<double(unsigned n, uint64_t code)> f;
+};
+
+std::vector<method> methods() {
+    auto c_of = [](uint64_t code) { return to_real(code, spec::cos_fmt); };
+    return {
+        {"quad_exact", "quadratic, exact a(n), real-valued (clamped to [0,1])",
+         [c_of](unsigned n, uint64_t code) {
+             return std::clamp(ref::quadratic(c_of(code), ref::a_exact(n)), 0.0, 1.0);
+         }},
+        {"rom", "UA 22802 ROM device (Q10.6 a, bit-accurate)",
+         [](unsigned n, uint64_t code) { return datapath_brdf(golden_a_rom(n), ua22802::a_fmt.frac, code); }},
+        {"patent", "UA 60553, patent a = 0.7890625 n + 0.5 (bit-accurate)",
+         [](unsigned n, uint64_t code) {
+             return datapath_brdf(golden_a_linear(n, ua60553::patent), ua60553::a_fmt.frac, code);
+         }},
+        {"minimax", "UA 60553 tuned, a = 0.7890625 n - 0.625, n<2: a=0 (bit-accurate)",
+         [](unsigned n, uint64_t code) {
+             return datapath_brdf(golden_a_tuned(n, ua60553::minimax), ua60553::a_fmt.frac, code);
+         }},
+        {"schlick", "Schlick c/(n - n c + c)",
+         [c_of](unsigned n, uint64_t code) { return ref::schlick(c_of(code), n); }},
+        {"cosk", "(cos k gamma)^(n/k) as printed",
+         [c_of](unsigned n, uint64_t code) { return ref::cos_k_gamma(c_of(code), n, cosk_k_for(n)); }},
+        {"cosk_k2", "(cos k gamma)^(n/k^2) re-derived",
+         [c_of](unsigned n, uint64_t code) {
+             const double k = cosk_k_for(n);
+             return ref::cos_k_gamma(c_of(code), n / k, k);  // exponent (n/k)/k
+         }},
+    };
+}
+
+// Hardware cost (README, "Cost"): multiplier cells = WA x WB of each array multiplier (a multiplier
+// by a hardwired constant keeps only the rows of its non-zero constant bits: WN x nnz); adder bits
+// = output width of each adder; gates = inputs of the special case's OR gate + AND gates of the key
+// block. Registers and the colour path are common to all and listed for completeness.
+struct cost {
+    std::string design;
+    unsigned rom_bits, gen_mult_cells, gen_adder_bits, gen_gates, mul10_cells, shared_mult_cells,
+        shared_adder_bits;
+    unsigned total_mult() const { return gen_mult_cells + mul10_cells + shared_mult_cells; }
+    unsigned total_adder() const { return gen_adder_bits + shared_adder_bits; }
+};
+
+unsigned nnz(const char* bits) {
+    unsigned k = 0;
+    for (; *bits; ++bits) k += *bits == '1';
+    return k;
+}
+
+std::vector<cost> costs() {
+    const unsigned shared_mult = 16 * 16 + 3 * (16 * 8);  // MUL7, MUL12..14
+    const unsigned shared_add = 32 + 16;                  // ADD9, ADD11
+    const unsigned wn = ua60553::n_fmt.width, wa60553 = ua60553::a_fmt.width;
+    return {
+        {"ua22802_rom", ua22802::rom_bits, 0, 0, 0, ua22802::a_fmt.width * 32, shared_mult, shared_add},
+        {"ua60553_patent", 0, wn * nnz(ua60553::patent.k31_bits), wa60553, 0, wa60553 * 32, shared_mult,
+         shared_add},
+        {"ua60553_minimax", 0, wn * nnz(ua60553::minimax.k31_bits), wa60553, (wn - 1) + wa60553,
+         wa60553 * 32, shared_mult, shared_add},
+    };
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+    CLI::App app{"accuracy study of the quadratic BRDF and the UA 22802 / UA 60553 devices"};
+    std::string out_dir = "out";
+    unsigned fig2_n = 10;
+    app.add_option("--out", out_dir, "output directory");
+    app.add_option("--fig2-n", fig2_n, "n of the Fig. 2 curve")->check(CLI::Range(1u, 1000u));
+    CLI11_PARSE(app, argc, argv);
+
+    const grid g;
+    const auto ms = methods();
+    const std::size_t M = ms.size();
+    std::vector<std::vector<double>> maxrel(M, std::vector<double>(1001)), nm(M, std::vector<double>(1001));
+
+    std::vector<double> exact(spec::cos_one + 1);
+    for (unsigned n = 1; n <= 1000; ++n) {
+        for (uint64_t c = 0; c <= spec::cos_one; ++c) exact[c] = ref::cos_pow(to_real(c, spec::cos_fmt), n);
+        for (std::size_t m = 0; m < M; ++m) {
+            const auto& f = ms[m].f;
+            maxrel[m][n] = g.max_rel_err_056(n, [&](uint64_t code) { return f(n, code); });
+            double num = 0, den = 0;
+            for (uint64_t c = 0; c <= spec::cos_one; ++c) {
+                const double e = f(n, c) - exact[c];
+                num += e * e;
+                den += exact[c] * exact[c];
+            }
+            nm[m][n] = num / den;
+        }
+    }
+
+    std::ofstream csv(out_dir + "/accuracy.csv");
+    csv << "n,cosk_k,a_exact,a_rom,a_patent,a_minimax";
+    for (const auto& m : ms) csv << ",maxrel056_" << m.id << ",nmse_" << m.id;
+    csv << '\n';
+    csv.precision(9);
+    for (unsigned n = 1; n <= 1000; ++n) {
+        csv << n << ',' << cosk_k_for(n) << ',' << ref::a_exact(n) << ','
+            << to_real(golden_a_rom(n), ua22802::a_fmt) << ','
+            << to_real(golden_a_linear(n, ua60553::patent), ua60553::a_fmt) << ','
+            << to_real(golden_a_tuned(n, ua60553::minimax), ua60553::a_fmt);
+        for (std::size_t m = 0; m < M; ++m) csv << ',' << maxrel[m][n] << ',' << nm[m][n];
+        csv << '\n';
+    }
+
+    // Per method: worst over n in [1, 512] and [1, 1000], the n where it occurs, seed 001's claim.
+    std::ofstream sum(out_dir + "/accuracy_summary.csv");
+    sum << "method,label,worst_maxrel056_1_512,at_n,worst_maxrel056_1_1000,at_n,seed_4pct_holds_1_512,"
+           "worst_nmse_1_1000,at_n,n_above_4pct\n";
+    const char* summary_path = std::getenv("SHADING_SUMMARY");
+    std::ofstream tsv;
+    if (summary_path != nullptr && *summary_path != '\0') tsv.open(summary_path, std::ios::app);
+    std::printf("%-11s %12s %6s %12s %6s %6s %12s %6s\n", "method", "worst<=512", "at n", "worst<=1000",
+                "at n", "<=4%", "worst NMSE", "at n");
+    std::size_t points = 0;
+    for (unsigned n = 1; n <= 1000; ++n) points += g.codes(n).size();
+    for (std::size_t m = 0; m < M; ++m) {
+        auto arg = [&](const std::vector<double>& v, unsigned hi) {
+            return static_cast<unsigned>(std::max_element(v.begin() + 1, v.begin() + hi + 1) - v.begin());
+        };
+        const unsigned n512 = arg(maxrel[m], 512), n1000 = arg(maxrel[m], 1000), nn = arg(nm[m], 1000);
+        const bool holds = maxrel[m][n512] <= 0.04;
+        unsigned above = 0;
+        for (unsigned n = 1; n <= 1000; ++n) above += maxrel[m][n] > 0.04;
+        sum << ms[m].id << ",\"" << ms[m].label << "\"," << maxrel[m][n512] << ',' << n512 << ','
+            << maxrel[m][n1000] << ',' << n1000 << ',' << (holds ? "yes" : "no") << ',' << nm[m][nn] << ','
+            << nn << ',' << above << '\n';
+        std::printf("%-11s %12.5f %6u %12.5f %6u %6s %12.3e %6u\n", ms[m].id.c_str(), maxrel[m][n512], n512,
+                    maxrel[m][n1000], n1000, holds ? "yes" : "no", nm[m][nn], nn);
+        if (tsv.is_open())
+            tsv << "accuracy\t" << ms[m].id << '\t' << points << "\t-\t" << maxrel[m][n1000]
+                << "\t-\tworst max rel err above 0.56, n in [1,1000] (at n=" << n1000
+                << "); seed 4% for n<=512: " << (holds ? "holds" : "fails") << "; worst NMSE "
+                << nm[m][nn] << '\n';
+    }
+    // The tuned generator against the ROM, n by n.
+    unsigned tuned_worse = 0;
+    double tuned_excess = 0;
+    for (unsigned n = 1; n <= 1000; ++n) {
+        const double d = maxrel[3][n] - maxrel[1][n];
+        if (d > 0) ++tuned_worse;
+        tuned_excess = std::max(tuned_excess, d);
+    }
+    std::printf("minimax vs rom, n by n: worse at %u of 1000 n, by at most %.5f (absolute)\n", tuned_worse,
+                tuned_excess);
+
+    // Seed 001, Fig. 2: the curves along cos for one n.
+    std::ofstream fig2(out_dir + "/fig2_curve.csv");
+    fig2 << "n,cos,exact";
+    for (const auto& m : ms) fig2 << ',' << m.id;
+    fig2 << '\n';
+    fig2.precision(9);
+    for (uint64_t c = 0; c <= spec::cos_one; c += 8) {
+        fig2 << fig2_n << ',' << to_real(c, spec::cos_fmt) << ',' << ref::cos_pow(to_real(c, spec::cos_fmt), fig2_n);
+        for (const auto& m : ms) fig2 << ',' << m.f(fig2_n, c);
+        fig2 << '\n';
+    }
+
+    // The ROM word's fraction bits: how much rounding a to F fraction bits adds to each n's error.
+    std::ofstream sweep(out_dir + "/rom_fraction_sweep.csv");
+    sweep << "frac_bits,word_bits,rom_bits,worst_maxrel056_1_1000,max_excess_over_model_rel_n3_1000,"
+             "max_excess_over_model_abs\n";
+    for (int F = 2; F <= 10; ++F) {
+        double worst = 0, excess_rel = 0, excess_abs = 0;
+        for (unsigned n = 1; n <= 1000; ++n) {
+            const uint64_t a = static_cast<uint64_t>(std::floor(std::ldexp(ref::a_exact(n), F) + 0.5));
+            const double e = g.max_rel_err_056(n, [&](uint64_t code) { return datapath_brdf(a, F, code); });
+            worst = std::max(worst, e);
+            excess_abs = std::max(excess_abs, e - maxrel[0][n]);
+            if (n >= 3) excess_rel = std::max(excess_rel, (e - maxrel[0][n]) / maxrel[0][n]);
+        }
+        const unsigned word = 10 + F;
+        sweep << F << ',' << word << ',' << 1024 * word << ',' << worst << ',' << excess_rel << ',' << excess_abs
+              << '\n';
+    }
+
+    std::ofstream hw(out_dir + "/hw_cost.csv");
+    hw << "design,rom_bits,generator_multiplier_cells,generator_adder_bits,special_case_gates,mul10_cells,"
+          "shared_multiplier_cells,shared_adder_bits,total_multiplier_cells,total_adder_bits\n";
+    for (const auto& c : costs())
+        hw << c.design << ',' << c.rom_bits << ',' << c.gen_mult_cells << ',' << c.gen_adder_bits << ','
+           << c.gen_gates << ',' << c.mul10_cells << ',' << c.shared_mult_cells << ',' << c.shared_adder_bits
+           << ',' << c.total_mult() << ',' << c.total_adder() << '\n';
+
+    std::cout << "accuracy_study: wrote " << out_dir << "/{accuracy,accuracy_summary,fig2_curve,"
+              << "rom_fraction_sweep,hw_cost}.csv\n";
+    return (csv && sum && fig2 && sweep && hw) ? 0 : 1;
+}
