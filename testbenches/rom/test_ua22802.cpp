@@ -3,11 +3,16 @@
 // process under gtest_discover_tests).
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <memory>
 #include <random>
+#include <set>
+#include <string>
 
 #include "common/report_log.h"
 #include "common/sim_guard.h"
 #include "specular/specular_tb.h"
+#include "trace.h"
 #include "ua22802.h"
 #include "ua22802_golden.h"
 #include "ua60553.h"
@@ -130,4 +135,47 @@ TEST(Ua22802, CheckerCatchesAWrongGoldenModel) {
     ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
     EXPECT_EQ(bench.checker.mismatches(), 3u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
+}
+
+TEST(Ua22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
+    // traces/ua22802.gtkw is hand-written: every signal it lists must exist in the VCD the bench
+    // writes (scope path + name + [msb:0]), or GTKWave silently drops it.
+    const std::string vcd_base = ::testing::TempDir() + "ua22802_names";
+    std::vector<surface> s{{5, {1, 2, 3}, {0x7000}}};
+    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
+    {
+        auto tf = std::make_unique<vcd_file>(vcd_base);
+        tf->trace(bench);
+        ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
+    }
+    std::set<std::string> traced;
+    std::vector<std::string> scope;
+    std::ifstream vcd(vcd_base + ".vcd");
+    for (std::string tok; vcd >> tok;) {
+        if (tok == "$scope") {
+            std::string kind, name;
+            vcd >> kind >> name;
+            scope.push_back(name);
+        } else if (tok == "$upscope") {
+            scope.pop_back();
+        } else if (tok == "$var") {
+            std::string kind, width, id, name, range;
+            vcd >> kind >> width >> id >> name >> range;
+            std::string full;
+            for (const auto& sc : scope) full += sc + ".";
+            traced.insert(full + name + (range == "$end" ? "" : range));
+        } else if (tok == "$enddefinitions") {
+            break;
+        }
+    }
+    ASSERT_GT(traced.size(), 20u);
+    std::ifstream gtkw(std::string(SHADING_SOURCE_DIR) + "/traces/ua22802.gtkw");
+    ASSERT_TRUE(gtkw.good());
+    std::size_t listed = 0;
+    for (std::string line; std::getline(gtkw, line);) {
+        if (line.rfind("SystemC.", 0) != 0) continue;
+        ++listed;
+        EXPECT_TRUE(traced.count(line)) << line << " is not in the VCD";
+    }
+    EXPECT_EQ(listed, 27u);
 }
