@@ -1,0 +1,83 @@
+// The forward-difference evaluator against its golden model and against the Horner unit's
+// golden model, one pixel per clock. Each TEST elaborates its own bench.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "common/report_log.h"
+#include "common/sim_guard.h"
+#include "interp/interp_line.h"
+#include "interp/interp_tb.h"
+#include "trace.h"
+
+using namespace shading;
+using namespace shading::tb;
+using sc_core::sc_time;
+
+namespace {
+const sc_time limit(10, sc_core::SC_MS);
+
+std::vector<fd_interval> random_intervals(std::size_t n, unsigned len, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int64_t> ua(-24 * 256 * 65536 + 1, 24 * 256 * 65536 - 1),
+        ub(-38 * 256 * 65536 + 1, 38 * 256 * 65536 - 1), uc(-15 * 256 * 65536 + 1, 15 * 256 * 65536 - 1),
+        ud(0, 256 * 65536 - 1);
+    std::vector<fd_interval> v;
+    for (std::size_t i = 0; i < n; ++i) v.push_back({{ua(rng), ub(rng), uc(rng), ud(rng)}, len});
+    return v;
+}
+
+template <unsigned M>
+void expect_exact_and_close_to_horner(fd_bench<M>& bench, std::size_t pixels) {
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_EQ(bench.checker.samples().size(), pixels);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    // Documented bound: 0 <= FD - Horner <= 2 LSB of Q16.16 (FD exact then floored; Horner three
+    // floors below the exact polynomial).
+    EXPECT_GE(bench.checker.min_vs_horner(), 0);
+    EXPECT_LE(bench.checker.max_vs_horner(), 2);
+}
+}  // namespace
+
+// The longest supported interval (64 pixels), random coefficients over their whole range.
+TEST(InterpFd, LongestIntervalBitExactAndWithinBoundOfHorner) {
+    fd_bench<6> bench("tb", random_intervals(40, 64, 31));
+    auto vcd = vcd_from_env("test_interp_fd_m6");
+    if (vcd) vcd->trace(bench);
+    expect_exact_and_close_to_horner(bench, 40 * 64);
+}
+
+TEST(InterpFd, ShortestIntervalBitExact) {
+    fd_bench<2> bench("tb", random_intervals(100, 4, 32));
+    expect_exact_and_close_to_horner(bench, 400);
+}
+
+// A raster line of 200 pixels in intervals of 32, the last one 8 pixels long, with the cubic
+// and quadratic coefficients of every variant: one pixel per clock, no bubble between intervals.
+TEST(InterpFd, RasterLineOnePixelPerClock) {
+    const auto line = make_line(200, 5);
+    std::vector<fd_interval> ivs;
+    for (auto v : all_variants)
+        for (const auto& iv : line.intervals) {
+            const auto k = variant_coefs(v, iv);
+            ivs.push_back({is_quad(v) ? as_cubic(k) : k, iv.len});
+        }
+    fd_bench<5> bench("tb", ivs);
+    expect_exact_and_close_to_horner(bench, 5 * 200);
+    for (const auto& [k, lat] : bench.checker.latencies()) {
+        ASSERT_EQ(lat.size(), 1u) << "pixel " << k;
+        EXPECT_EQ(*lat.begin(), (k + 1) * interp_period()) << "pixel " << k;
+    }
+    EXPECT_DOUBLE_EQ(bench.checker.cycles_per_pixel(), 1.0);
+}
+
+// len = 0 or len > N is bad input: reported (shading/input) and a full interval is evaluated.
+TEST(InterpFd, LenOutOfRangeIsReportedAndAFullIntervalEvaluated) {
+    report_log::get().expect(msg::input);
+    auto ivs = random_intervals(3, 16, 33);
+    ivs[1].len = 0;
+    ivs[2].len = 17;
+    fd_bench<4> bench("tb", ivs);
+    expect_exact_and_close_to_horner(bench, 3 * 16);
+    EXPECT_EQ(report_log::get().count(msg::input), 2u);
+}

@@ -1,0 +1,123 @@
+// The iterative Horner unit (seed 004, Fig. 4) against its golden model, micro-step by
+// micro-step, and its latency and throughput in clocks. Each TEST elaborates its own bench.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "common/report_log.h"
+#include "common/sim_guard.h"
+#include "interp/interp_tb.h"
+#include "trace.h"
+
+using namespace shading;
+using namespace shading::tb;
+using sc_core::sc_time;
+
+namespace {
+const sc_time limit(10, sc_core::SC_MS);
+
+// Random coefficients within the documented bounds (interp_formats.h), every t = k/2^m of an
+// interval including t = 1.
+std::vector<horner_request> every_t(std::size_t intervals, unsigned m, bool deg2, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int64_t> ua(-24 * 256 * 65536 + 1, 24 * 256 * 65536 - 1),
+        ub(-38 * 256 * 65536 + 1, 38 * 256 * 65536 - 1), uc(-15 * 256 * 65536 + 1, 15 * 256 * 65536 - 1),
+        ud(0, 256 * 65536 - 1);
+    std::vector<horner_request> r;
+    for (std::size_t i = 0; i < intervals; ++i) {
+        const interp::cubic_coefs k{ua(rng), ub(rng), uc(rng), ud(rng)};
+        for (unsigned j = 0; j <= (1u << m); ++j) r.push_back({k, uint64_t{j} << (8 - m), deg2});
+    }
+    return r;
+}
+}  // namespace
+
+TEST(InterpHorner, CubicBitExactEveryTOfAnInterval) {
+    horner_bench bench("tb", every_t(12, 5, false, 21));
+    auto vcd = vcd_from_env("test_interp_horner_cubic");
+    if (vcd) vcd->trace(bench);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_EQ(bench.checker.samples().size(), 12u * 33u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+}
+
+TEST(InterpHorner, Degree2BitExactEveryTOfAnInterval) {
+    horner_bench bench("tb", every_t(12, 6, true, 22));
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_EQ(bench.checker.samples().size(), 12u * 65u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    for (const auto& s : bench.checker.samples()) EXPECT_EQ(s.steps.size(), 4u);
+}
+
+// Latency: I(t) is on the output 6 clocks (cubic) / 4 clocks (degree 2) after the edge that
+// accepted the request. Throughput back to back: one pixel per 6 / 4 clocks.
+TEST(InterpHorner, LatencyAndThroughputCubic) {
+    horner_bench bench("tb", every_t(2, 4, false, 23));
+    auto vcd = vcd_from_env("test_interp_horner_latency");
+    if (vcd) vcd->trace(bench);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    const auto& s = bench.checker.samples();
+    ASSERT_EQ(s.size(), 34u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    for (const auto& x : s) EXPECT_EQ(x.valid - x.accepted, 6 * interp_period()) << "at " << x.valid;
+    for (std::size_t i = 1; i < s.size(); ++i)
+        EXPECT_EQ(s[i].accepted, s[i - 1].valid) << "back-to-back: the done edge accepts the next request";
+    EXPECT_DOUBLE_EQ(bench.checker.cycles_per_result(), 6.0);
+    EXPECT_EQ(s.front().accepted, interp_period());  // presented after the edge at 0, accepted at the next
+}
+
+TEST(InterpHorner, LatencyAndThroughputDegree2) {
+    horner_bench bench("tb", every_t(2, 4, true, 24));
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    const auto& s = bench.checker.samples();
+    ASSERT_EQ(s.size(), 34u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    for (const auto& x : s) EXPECT_EQ(x.valid - x.accepted, 4 * interp_period());
+    EXPECT_DOUBLE_EQ(bench.checker.cycles_per_result(), 4.0);
+}
+
+// Idle gaps between requests change neither results nor latency; RG holds I(t) while idle.
+TEST(InterpHorner, GapsBetweenRequestsAndHoldWhileIdle) {
+    auto reqs = every_t(3, 3, false, 25);
+    for (std::size_t i = 0; i < reqs.size(); i += 2) reqs[i].deg2 = true;  // mixed degrees
+    const auto last = interp::golden_horner(reqs.back().k, reqs.back().t, reqs.back().deg2);
+    horner_bench bench("tb", reqs, 3);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    const auto& s = bench.checker.samples();
+    ASSERT_EQ(s.size(), reqs.size());
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    for (const auto& x : s)
+        EXPECT_EQ(x.valid - x.accepted, (x.req.deg2 ? 4 : 6) * interp_period());
+    EXPECT_GT(bench.checker.cycles_per_result(), 6.0);
+    // The bench stops two clocks after the last done: the output still holds the last I(t).
+    EXPECT_EQ(bench.i_t.read().to_uint64(), last);
+    EXPECT_FALSE(bench.busy.read());
+}
+
+// t > 1 is bad input: reported (shading/input) and evaluated as given, bit-exact to the golden
+// model (which applies the same floors and wraps).
+TEST(InterpHorner, TAboveOneIsReportedAndEvaluatedAsGiven) {
+    report_log::get().expect(msg::input);
+    auto reqs = every_t(1, 2, false, 26);
+    reqs.push_back({reqs.front().k, 300, false});
+    reqs.push_back({reqs.front().k, 511, true});
+    horner_bench bench("tb", reqs);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_EQ(bench.checker.samples().size(), reqs.size());
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::input), 2u);
+}
+
+// The checker can fail: a golden model whose step 3 is off by one LSB is caught every time.
+TEST(InterpHorner, CheckerCatchesAWrongMicroStep) {
+    report_log::get().expect(msg::mismatch);
+    auto wrong = [](const horner_request& r) {
+        auto s = horner_checker::golden(r);
+        s[2] = (s[2] + 1) & interp::coef_fmt.mask();
+        return s;
+    };
+    horner_bench bench("tb", every_t(1, 2, false, 27), 0, wrong);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_EQ(bench.checker.mismatches(), 5u);
+    EXPECT_GT(report_log::get().count(msg::mismatch), 0u);
+}
