@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <systemc>
@@ -81,7 +82,8 @@ int sc_main(int argc, char* argv[]) {
                     st.mismatches, st.max_rel_err_056);
         if (sum.is_open())
             sum << "ua22802\tn=" << n << '\t' << st.samples << '\t' << st.mismatches << '\t'
-                << st.max_rel_err_056 << "\t-\tmax rel err vs cos^n where cos^n >= 0.56; ROM "
+                << std::fixed << std::setprecision(2) << 100.0 * st.max_rel_err_056
+                << "%\t1 strobe\tmax rel err vs cos^n where cos^n >= 0.56; ROM "
                 << bench.dut.rom.bits << " bits\n";
     }
     const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (done ? 0 : 1);

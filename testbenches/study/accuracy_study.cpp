@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -168,8 +169,9 @@ int main(int argc, char* argv[]) {
         std::printf("%-11s %12.5f %6u %12.5f %6u %6s %12.3e %6u\n", ms[m].id.c_str(), maxrel[m][n512], n512,
                     maxrel[m][n1000], n1000, holds ? "yes" : "no", nm[m][nn], nn);
         if (tsv.is_open())
-            tsv << "accuracy\t" << ms[m].id << '\t' << points << "\t-\t" << maxrel[m][n1000]
-                << "\t-\tworst max rel err above 0.56, n in [1,1000] (at n=" << n1000
+            tsv << "accuracy\t" << ms[m].id << '\t' << points << "\t-\t" << std::fixed
+                << std::setprecision(2) << 100.0 * maxrel[m][n1000] << std::defaultfloat
+                << "%\t-\tworst max rel err above 0.56, n in [1,1000] (at n=" << n1000
                 << "); seed 4% for n<=512: " << (holds ? "holds" : "fails") << "; worst NMSE "
                 << nm[m][nn] << '\n';
     }
