@@ -56,7 +56,10 @@ public:
             if (terms_[i].input >= n_inputs) config_error("a term names an input that does not exist");
             (terms_[i].negative ? neg : pos).push_back(i);
         }
-        if (pos.empty() || terms_.size() < 2) config_error("needs a positive term and at least two terms");
+        if (pos.empty() || terms_.size() < 2) {
+            config_error("needs a positive term and at least two terms");
+            return;
+        }
         in.init(n_inputs);
         term.init(terms_.size());
         sh.init(terms_.size(), [this](const char* nm, std::size_t i) {

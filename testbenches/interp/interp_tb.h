@@ -9,7 +9,9 @@
 
 #include <array>
 #include <cstdint>
+#include <fstream>
 #include <functional>
+#include <string>
 #include <map>
 #include <set>
 #include <sstream>
@@ -31,6 +33,16 @@ inline sc_core::sc_time interp_period() { return sc_core::sc_time(20, sc_core::S
 using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
 using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
 using t_t = sc_dt::sc_uint<interp::t_fmt.width>;
+
+// One row of the run summary (scripts/run.sh): appended to the TSV file at `path` if not empty.
+inline void append_summary(const std::string& path, const std::string& bench, const std::string& case_name,
+                           std::size_t samples, std::size_t mismatches, double max_error,
+                           double cycles_per_pixel, const std::string& note) {
+    if (path.empty()) return;
+    std::ofstream f(path, std::ios::app);
+    f << bench << '\t' << case_name << '\t' << samples << '\t' << mismatches << '\t' << max_error << '\t'
+      << cycles_per_pixel << '\t' << note << '\n';
+}
 
 inline int64_t coef_code(const coef_t& v) { return code_value(v.to_uint64(), interp::coef_fmt); }
 inline coef_t coef_word(int64_t code) { return coef_t(wrap_bits(code, interp::coef_fmt.width)); }
@@ -169,8 +181,10 @@ class coef_bench : public sc_core::sc_module {
 public:
     sc_core::sc_clock clk{"clk", interp_period()};
     sc_core::sc_signal<bool> sample_valid{"sample_valid"};
-    sc_core::sc_vector<sc_core::sc_signal<sample_t>> c1{"c1", 4}, c2{"c2", 4}, q{"q", 3};
-    sc_core::sc_vector<sc_core::sc_signal<coef_t>> coef{"coef", 19};
+    // Nets named for the waveform: c1_i1 .. c1_i4 (case-1 samples), c2_i*, q_i*; and per unit
+    // c1sa_a .. quad_c (unit: c1sa, c1ex, c2sa, c2ex, quad; then the coefficient).
+    sc_core::sc_vector<sc_core::sc_signal<sample_t>> c1{"c1"}, c2{"c2"}, q{"q"};
+    sc_core::sc_vector<sc_core::sc_signal<coef_t>> coef{"coef"};
 
     coef_checker checker;
     coef_unit_cubic<interp::sample_set::case1, interp::div3_mode::shift_add> dut_c1_sa{"dut_c1_sa"};
@@ -185,6 +199,19 @@ public:
                coef_checker::golden_fn golden = &coef_checker::golden)
         : sc_module(name), checker(std::move(golden)), stim("stim", std::move(sets)),
           mon("mon", [this](const coef_sample& s) { checker.check(s); }) {
+        auto named = [](const std::string& prefix) {
+            return [prefix](const char*, std::size_t i) {
+                return new sc_core::sc_signal<sample_t>((prefix + std::to_string(i + 1)).c_str());
+            };
+        };
+        c1.init(4, named("c1_i"));
+        c2.init(4, named("c2_i"));
+        q.init(3, named("q_i"));
+        coef.init(19, [](const char*, std::size_t i) {
+            constexpr const char* unit[] = {"c1sa", "c1ex", "c2sa", "c2ex", "quad"};
+            constexpr const char* name[] = {"a", "b", "c", "d"};
+            return new sc_core::sc_signal<coef_t>((std::string(unit[i / 4]) + "_" + name[i % 4]).c_str());
+        });
         bind_cubic(dut_c1_sa, c1, 0);
         bind_cubic(dut_c1_ex, c1, 4);
         bind_cubic(dut_c2_sa, c2, 8);
@@ -223,6 +250,7 @@ struct horner_sample {
     uint64_t out = 0;
     std::vector<uint64_t> steps;  // RG after every micro-step, as seen at the rising edges
     sc_core::sc_time accepted, valid;
+    bool matched = true;          // set by the checker
 };
 
 // Moore source: presents request 0 with start = 1; at each acceptance edge (start = 1 and
@@ -338,6 +366,7 @@ public:
         samples_.push_back(s);
         const auto g = golden_(s.req);
         if (g.back() != s.out || g != s.steps) {
+            samples_.back().matched = false;
             ++mismatches_;
             std::ostringstream os;
             os << "Horner at " << s.valid << " t=" << s.req.t << (s.req.deg2 ? " deg2" : " cubic")
@@ -405,6 +434,7 @@ struct fd_sample {
     unsigned k = 0;            // pixel index within it
     uint64_t out = 0;
     sc_core::sc_time accepted, valid;
+    bool matched = true;  // set by the checker
 };
 
 // Moore source: presents interval 0 with start = 1; at each acceptance edge (start = 1 and
@@ -517,6 +547,7 @@ public:
         const auto g = interp::golden_fd(s.iv.k, M, len, frac_);
         const bool in_range = s.k < g.size();
         if (!in_range || g[s.k] != s.out) {
+            samples_.back().matched = false;
             ++mismatches_;
             std::ostringstream os;
             os << "forward differences at " << s.valid << " interval " << s.interval << " pixel " << s.k
