@@ -22,6 +22,7 @@ LABELS = {
     "rom": "UA 22802 ROM device",
     "patent": "UA 60553, patent a = 0.789n + 0.5",
     "minimax": "UA 60553 tuned, a = 0.789n - 0.625, n<2: 0",
+    "rom_matched": "UA 60553 tuned, a = 0.789n - 0.570, n<2: 0",
     "schlick": "Schlick",
     "cosk": "(cos k\u03b3)^(n/k) as printed",
     "cosk_k2": "(cos k\u03b3)^(n/k\u00b2) re-derived",
@@ -31,6 +32,7 @@ STYLE = {
     "rom": dict(color="tab:blue", lw=1.2, ls="--"),
     "patent": dict(color="tab:red", lw=1.2),
     "minimax": dict(color="tab:green", lw=1.2),
+    "rom_matched": dict(color="tab:olive", lw=1.2, ls="-."),
     "schlick": dict(color="tab:purple", lw=1.0),
     "cosk": dict(color="tab:gray", lw=1.0, ls=":"),
     "cosk_k2": dict(color="tab:orange", lw=1.0),
@@ -52,7 +54,7 @@ def main():
     c, exact = fig2["cos"], fig2["exact"]
     fig, (ax_a, ax_b) = plt.subplots(2, 1, figsize=(8, 9))
     ax_a.plot(c, exact, label=f"cos^{n2} \u03b3", color="black", lw=2.5, alpha=0.4)
-    for m in ("quad_exact", "rom", "patent", "minimax"):
+    for m in ("quad_exact", "rom", "patent", "minimax", "rom_matched"):
         ax_a.plot(c, fig2[m], label=LABELS[m], **STYLE[m])
     ax_a.axhline(0.56, color="gray", lw=0.6, ls=":")
     ax_a.set_xlabel("cos \u03b3")
@@ -61,7 +63,7 @@ def main():
     ax_a.set_ylim(-0.05, 1.05)
     ax_a.legend(fontsize=8)
     mask = exact >= 0.56
-    for m in ("quad_exact", "rom", "patent", "minimax"):
+    for m in ("quad_exact", "rom", "patent", "minimax", "rom_matched"):
         ax_b.plot(c[mask], 100 * (fig2[m][mask] - exact[mask]) / exact[mask], label=LABELS[m], **STYLE[m])
     ax_b.set_xlabel("cos \u03b3 (region cos^n \u03b3 \u2265 0.56)")
     ax_b.set_ylabel("relative error, %")

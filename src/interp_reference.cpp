@@ -39,7 +39,8 @@ std::array<double, 4> sample_ts(interp::sample_set set) {
 
 std::vector<double> fit_polynomial(const std::vector<double>& ts, const std::vector<double>& vals) {
     const std::size_t n = ts.size();
-    if (vals.size() != n || n == 0) throw std::invalid_argument("fit_polynomial: sizes");
+    // Cubic and quadratic fits only (a small bound also keeps n + 1 below any overflow).
+    if (vals.size() != n || n == 0 || n > 8) throw std::invalid_argument("fit_polynomial: 1..8 points");
     std::vector<std::vector<double>> m(n, std::vector<double>(n + 1));
     for (std::size_t r = 0; r < n; ++r) {
         double p = 1.0;

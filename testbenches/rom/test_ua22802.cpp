@@ -41,7 +41,7 @@ std::vector<uint32_t> random_codes(std::mt19937& rng, std::size_t k, uint32_t hi
 }
 }  // namespace
 
-TEST(Ua22802, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
+TEST(UA22802, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
     const std::vector<unsigned> ns{1, 2, 3, 512, 1000};
     std::vector<surface> s;
     for (unsigned n : ns) s.push_back({n, {255, 170, 3}, all_cos_codes()});
@@ -60,7 +60,7 @@ TEST(Ua22802, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
     EXPECT_EQ(bench.dut.a_coef.read().to_uint64(), golden_a_rom(1000));
 }
 
-TEST(Ua22802, EveryAddressIncludingOutOfRangeN) {
+TEST(UA22802, EveryAddressIncludingOutOfRangeN) {
     // n = 0 and n = 1001..1023 are reported (shading/input) and read their documented words.
     report_log::get().expect(msg::input);
     const unsigned before = report_log::get().count(msg::input);
@@ -75,7 +75,7 @@ TEST(Ua22802, EveryAddressIncludingOutOfRangeN) {
     EXPECT_EQ(bench.dut.chk_in16_n.violations(), 24u);
 }
 
-TEST(Ua22802, WrapModeAndCosAboveOneMatchGolden) {
+TEST(UA22802, WrapModeAndCosAboveOneMatchGolden) {
     // Wrap mode: q < 0 for a > 1 below (a-1)/a is passed on as two's-complement bits; cos codes
     // above 0x8000 are reported and pass through the datapath unchanged.
     report_log::get().expect(msg::input);
@@ -93,7 +93,7 @@ TEST(Ua22802, WrapModeAndCosAboveOneMatchGolden) {
     EXPECT_EQ(report_log::get().count(msg::input) - before, above);
 }
 
-TEST(Ua22802, SameTimingAsUa60553AndShortStrobesAreReported) {
+TEST(UA22802, SameTimingAsUa60553AndShortStrobesAreReported) {
     // Both devices in one elaboration: the RG2 path (per pixel) and the RG1 path (per surface)
     // are the same, so the same strobe timing serves both.
     report_log::get().expect(msg::timing);
@@ -123,7 +123,7 @@ TEST(Ua22802, SameTimingAsUa60553AndShortStrobesAreReported) {
     EXPECT_GE(bench.checker.mismatches(), 1u) << "unsettled outputs differ from the golden model";
 }
 
-TEST(Ua22802, CheckerCatchesAWrongGoldenModel) {
+TEST(UA22802, CheckerCatchesAWrongGoldenModel) {
     // Negative test: the UA 60553 golden (patent a = 0.789 n + 0.5) differs from the ROM device.
     report_log::get().expect(msg::mismatch);
     std::vector<surface> s{{10, {255, 255, 255}, {0x7000, 0x7800, 0x7c00}}};
@@ -137,7 +137,7 @@ TEST(Ua22802, CheckerCatchesAWrongGoldenModel) {
     EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
 }
 
-TEST(Ua22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
+TEST(UA22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
     // traces/ua22802.gtkw is hand-written: every signal it lists must exist in the VCD the bench
     // writes (scope path + name + [msb:0]), or GTKWave silently drops it.
     const std::string vcd_base = ::testing::TempDir() + "ua22802_names";

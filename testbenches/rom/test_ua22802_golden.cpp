@@ -25,7 +25,7 @@ long double a_series(unsigned n) {
 }
 }  // namespace
 
-TEST(Ua22802Rom, EveryWordIsTheRoundedSeriesValue) {
+TEST(UA22802Rom, EveryWordIsTheRoundedSeriesValue) {
     ASSERT_EQ(ua22802::a_rom_content.size(), 1024u);
     EXPECT_EQ(ua22802::a_rom_content[0], 0u) << "n = 0: documented as a = 0";
     EXPECT_EQ(ua22802::a_rom_content[1], 0u) << "n = 1: a = 0 (q = cos)";
@@ -37,7 +37,7 @@ TEST(Ua22802Rom, EveryWordIsTheRoundedSeriesValue) {
     }
 }
 
-TEST(Ua22802Rom, HandWorkedWords) {
+TEST(UA22802Rom, HandWorkedWords) {
     // n = 2: t = sqrt(1/2), a = 1 -> 64. n = 3: a = 1 + t = 1 + sqrt(2/3) = 1.81650 -> 116.256 -> 116.
     // n = 4: a = 1 + t + t^2, t = sqrt(3/4): 1 + 0.866025 + 0.75 = 2.616025 -> 167.426 -> 167.
     EXPECT_EQ(golden_a_rom(2), 64u);
@@ -52,7 +52,7 @@ TEST(Ua22802Rom, HandWorkedWords) {
     EXPECT_LE(golden_a_rom(1023), ua22802::a_fmt.mask());
 }
 
-TEST(Ua22802Golden, HandWorkedPixels) {
+TEST(UA22802Golden, HandWorkedPixels) {
     // n = 2, cos = 0.5: a = 1, q = 0.5 + (0.25 - 0.5) = 0.25 = cos^2 exactly -> 0x2000.
     // out = floor(0x2000 * 255 / 2^7) = 16320 = 63.75 in Q9.8.
     auto r = golden_ua22802(2, 0x4000, {255, 128, 1}, overflow_mode::saturate);
@@ -68,7 +68,7 @@ TEST(Ua22802Golden, HandWorkedPixels) {
     EXPECT_EQ(golden_ua22802(3, 0x6000, {0, 0, 0}, overflow_mode::saturate).brdf, 0x3480u);
 }
 
-TEST(Ua22802Golden, WithinTheRoundingBoundOfTheRealQuadratic) {
+TEST(UA22802Golden, WithinTheRoundingBoundOfTheRealQuadratic) {
     // |a_rom - a| <= 2^-7 and |cos^2 - cos| <= 1/4 give <= 2^-9 on q; MUL10's floor adds < 2^-15.
     const double bound = std::ldexp(1.0, -9) + std::ldexp(1.0, -15);
     for (unsigned n = 1; n <= 1000; n += (n < 40 ? 1 : 37)) {
@@ -84,7 +84,7 @@ TEST(Ua22802Golden, WithinTheRoundingBoundOfTheRealQuadratic) {
     }
 }
 
-TEST(Ua22802Golden, SeedAccuracyClaimHoldsBitAccurately) {
+TEST(UA22802Golden, SeedAccuracyClaimHoldsBitAccurately) {
     // Seed 001: relative error <= 4 % where cos^n >= 0.56, n in [1, 512]. Measured: 3.16 %.
     double worst = 0;
     for (unsigned n = 1; n <= 1000; ++n)

@@ -4,6 +4,8 @@
 #include <bitset>
 #include <cstdlib>
 
+#include "../src/ua22802_formats.h"
+#include "../src/ua22802_golden.h"
 #include "../src/ua60553_formats.h"
 
 namespace shading::study {
@@ -63,6 +65,36 @@ std::vector<candidate> search_generators(const grid& g, double keep_below) {
         return x.worst_512 < y.worst_512;
     });
     return all;
+}
+
+std::size_t rank_against_rom(const grid& g, std::vector<candidate>& all) {
+    std::vector<double> rom(1001);
+    for (unsigned n = 1; n <= 1000; ++n) {
+        const uint64_t w = golden_a_rom(n);
+        rom[n] = g.max_rel_err_056(n, [w](uint64_t code) { return datapath_brdf(w, ua22802::a_fmt.frac, code); });
+    }
+    for (auto& c : all) {
+        c.excess_over_rom = -1.0;
+        c.n_worse_than_rom = 0;
+        for (unsigned n = 1; n <= 1000; ++n) {
+            const uint64_t a = candidate_a(c, n);
+            const double e = g.max_rel_err_056(n, [a](uint64_t code) {
+                return datapath_brdf(a, ua60553::a_fmt.frac, code);
+            });
+            c.excess_over_rom = std::max(c.excess_over_rom, e - rom[n]);
+            c.n_worse_than_rom += e > rom[n] ? 1u : 0u;
+        }
+    }
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < all.size(); ++i) {
+        const auto& x = all[i];
+        const auto& b = all[best];
+        if (x.excess_over_rom != b.excess_over_rom ? x.excess_over_rom < b.excess_over_rom
+            : x.worst_1000 != b.worst_1000     ? x.worst_1000 < b.worst_1000
+                                               : x.nnz() < b.nnz())
+            best = i;
+    }
+    return best;
 }
 
 }  // namespace shading::study

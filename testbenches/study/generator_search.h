@@ -20,6 +20,10 @@ struct candidate {
     int64_t k32 = 0;          // signed, Q0.7 units
     bool n_lt2_zero = false;  // special case n < 2 -> a = 0
     double worst_1000 = 0, worst_512 = 0;
+    // Filled by rank_against_rom: max over n in [1, 1000] of (error(n) - error_ROM(n)) and the
+    // number of n where the candidate is worse than the ROM prototype.
+    double excess_over_rom = 0;
+    unsigned n_worse_than_rom = 0;
     unsigned nnz() const;
     std::string k31_string() const;  // 7 bits, MSB (weight 1/2) first
     std::string k32_string() const;  // |K32|, 7 bits
@@ -30,5 +34,10 @@ uint64_t candidate_a(const candidate& c, unsigned n);
 
 // All candidates whose worst error is below `keep_below`, best first. Deterministic.
 std::vector<candidate> search_generators(const grid& g, double keep_below);
+
+// Fills excess_over_rom / n_worse_than_rom of every candidate and returns the index of the one
+// that follows the ROM prototype (UA 22802) most closely n by n: smallest excess, then smallest
+// worst case, then fewest non-zero constant bits. Deterministic.
+std::size_t rank_against_rom(const grid& g, std::vector<candidate>& all);
 
 }  // namespace shading::study

@@ -30,7 +30,7 @@ std::vector<uint32_t> random_codes(std::mt19937& rng, std::size_t k, uint32_t hi
 }
 }  // namespace
 
-TEST(Ua60553Tuned, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
+TEST(UA60553Tuned, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
     std::vector<uint32_t> all;
     for (uint32_t c = 0; c <= spec::cos_one; ++c) all.push_back(c);
     const std::vector<unsigned> ns{1, 2, 3, 512, 1000};
@@ -46,7 +46,7 @@ TEST(Ua60553Tuned, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
     EXPECT_EQ(bench.dut.node32_k.read().to_uint64(), 0x100u - 80u) << "-0.625 on the Q1.7 bus";
 }
 
-TEST(Ua60553Tuned, EveryNIncludingOutOfRangeInWrapMode) {
+TEST(UA60553Tuned, EveryNIncludingOutOfRangeInWrapMode) {
     report_log::get().expect(msg::input);
     const unsigned before = report_log::get().count(msg::input);
     std::mt19937 rng(553);
@@ -60,7 +60,7 @@ TEST(Ua60553Tuned, EveryNIncludingOutOfRangeInWrapMode) {
     EXPECT_EQ(report_log::get().count(msg::input) - before, 24u) << "n = 0 and 1001..1023";
 }
 
-TEST(Ua60553Tuned, PatentConstantsWithoutSpecialCaseMatchDeviceUa60553ForNAtLeast2) {
+TEST(UA60553Tuned, PatentConstantsWithoutSpecialCaseMatchDeviceUa60553ForNAtLeast2) {
     // The variant with the patent's constants differs from device_ua60553 only below n = 2:
     // checked against the UA 60553 golden model for n >= 2.
     const ua60553::tuned_generator as_patent{"p", "1100101", "1000000", false};
@@ -78,7 +78,7 @@ TEST(Ua60553Tuned, PatentConstantsWithoutSpecialCaseMatchDeviceUa60553ForNAtLeas
     EXPECT_EQ(bench.checker.samples(), 800u);
 }
 
-TEST(Ua60553Tuned, RgOnePathIncludesTheKeyBlockAndShortStrobesAreReported) {
+TEST(UA60553Tuned, RgOnePathIncludesTheKeyBlockAndShortStrobesAreReported) {
     report_log::get().expect(msg::timing);
     report_log::get().expect(msg::mismatch);
     std::vector<surface> s{{1, {255, 255, 255}, {0x6000, 0x7000}}};
@@ -91,7 +91,7 @@ TEST(Ua60553Tuned, RgOnePathIncludesTheKeyBlockAndShortStrobesAreReported) {
     EXPECT_EQ(bench.dut.chk_timing.violations(), 2u);
 }
 
-TEST(Ua60553Tuned, CheckerCatchesThePatentGoldenModel) {
+TEST(UA60553Tuned, CheckerCatchesThePatentGoldenModel) {
     // Negative test: n = 1 is where the patent's a = 1.29 and the variant's a = 0 differ most.
     report_log::get().expect(msg::mismatch);
     std::vector<surface> s{{1, {255, 255, 255}, {0x5000, 0x6000, 0x7000}}};
@@ -101,4 +101,22 @@ TEST(Ua60553Tuned, CheckerCatchesThePatentGoldenModel) {
         });
     ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
     EXPECT_EQ(bench.checker.mismatches(), 3u);
+}
+
+TEST(UA60553Tuned, RomMatchedGeneratorBitExactAgainstItsGolden) {
+    // The second named generator on the same device: node 32 = -0.1001001b = -73/128.
+    std::mt19937 rng(22802);
+    std::vector<surface> s;
+    for (unsigned n : {1u, 2u, 3u, 30u, 31u, 1000u}) s.push_back({n, {255, 40, 3}, random_codes(rng, 500, spec::cos_one)});
+    specular_bench<device_ua60553_tuned> bench(
+        "tb", s, strobe_timing{},
+        [](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+            return golden_ua60553_tuned(n, c, k, overflow_mode::saturate, ua60553::rom_matched);
+        },
+        overflow_mode::saturate, ua60553::rom_matched);
+    ASSERT_TRUE(run_to_completion(bench, sc_time(10, SC_MS)));
+    EXPECT_EQ(bench.checker.samples(), 3000u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    EXPECT_EQ(bench.dut.node32_k.read().to_uint64(), 0x100u - 73u) << "-0.5703125 on the Q1.7 bus";
+    EXPECT_EQ(bench.dut.a_coef.read().to_uint64(), 1000u * 101u - 73u);
 }
