@@ -10,6 +10,8 @@ mkdir -p traces "$SHADING_OUT"
 "$SHADING_BIN/interp_fd_tb" --vcd traces/interp_fd --csv "$SHADING_OUT/interp_fd.csv"
 # The longest supported interval (64 pixels) through the forward differences, no VCD.
 "$SHADING_BIN/interp_fd_tb" --m 6 --no-vcd
+# Seed 004's NMSE claim per interval length, and the adaptive degree (golden models).
+"$SHADING_BIN/interp_study" --csv "$SHADING_OUT/interp_nmse.csv"
 # Every signal a GTKWave view names must exist in its VCD.
 /usr/bin/python3 - <<'PY'
 import re, sys

@@ -99,7 +99,7 @@ int sc_main(int argc, char* argv[]) {
         std::cout << "  " << name << ": mismatches " << bench.checker.mismatches(u) << ", " << note << " = "
                   << max_err[u] << '\n';
         append_summary(summary_path, "interp_coef", name, samples.size(), bench.checker.mismatches(u), max_err[u],
-                       cpp, note);
+                       u < 4, cpp, note);
     }
     const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (finished ? 0 : 1);
     if (!finished) std::cerr << "interp_coef: the simulation did not finish\n";

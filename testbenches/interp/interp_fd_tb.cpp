@@ -79,7 +79,7 @@ int run(const options& o) {
         const double cpp = n ? (last - first) / interp_period() / static_cast<double>(n) : 0.0;
         std::cout << "  " << variant_name(v) << ": " << n << " pixels, mismatches " << bad
                   << ", max |I - exact| = " << max_err << ", clocks per pixel " << cpp << '\n';
-        append_summary(o.summary_path, "interp_fd", variant_name(v) + "_m" + std::to_string(M), n, bad, max_err, cpp,
+        append_summary(o.summary_path, "interp_fd", variant_name(v) + "_m" + std::to_string(M), n, bad, max_err, false, cpp,
                        in_bound ? "max |I_hw - exact|; FD-Horner within [0,2] LSB" : "FD-Horner OUT OF BOUND");
     }
     const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (finished ? 0 : 1) +

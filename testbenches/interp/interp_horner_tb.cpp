@@ -89,7 +89,7 @@ int sc_main(int argc, char* argv[]) {
         const double cpp = n ? (last - first) / interp_period() / static_cast<double>(n) : 0.0;
         std::cout << "  " << variant_name(v) << ": " << n << " pixels, mismatches " << bad
                   << ", max |I - exact| = " << max_err << ", clocks per pixel " << cpp << '\n';
-        append_summary(summary_path, "interp_horner", variant_name(v), n, bad, max_err, cpp,
+        append_summary(summary_path, "interp_horner", variant_name(v), n, bad, max_err, false, cpp,
                        "max |I_hw - exact intensity| (0..255); back-to-back");
     }
     const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (finished ? 0 : 1) +

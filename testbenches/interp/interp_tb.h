@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <iomanip>
 #include <string>
 #include <map>
 #include <set>
@@ -35,13 +36,15 @@ using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
 using t_t = sc_dt::sc_uint<interp::t_fmt.width>;
 
 // One row of the run summary (scripts/run.sh): appended to the TSV file at `path` if not empty.
+// max_error is written as a percentage when `relative`, else in intensity levels (0..255).
 inline void append_summary(const std::string& path, const std::string& bench, const std::string& case_name,
-                           std::size_t samples, std::size_t mismatches, double max_error,
+                           std::size_t samples, std::size_t mismatches, double max_error, bool relative,
                            double cycles_per_pixel, const std::string& note) {
     if (path.empty()) return;
     std::ofstream f(path, std::ios::app);
-    f << bench << '\t' << case_name << '\t' << samples << '\t' << mismatches << '\t' << max_error << '\t'
-      << cycles_per_pixel << '\t' << note << '\n';
+    f << bench << '\t' << case_name << '\t' << samples << '\t' << mismatches << '\t' << std::fixed
+      << std::setprecision(relative ? 4 : 2) << (relative ? 100.0 * max_error : max_error)
+      << (relative ? "%" : " lv") << std::defaultfloat << '\t' << cycles_per_pixel << '\t' << note << '\n';
 }
 
 inline int64_t coef_code(const coef_t& v) { return code_value(v.to_uint64(), interp::coef_fmt); }
