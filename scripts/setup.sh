@@ -2,7 +2,7 @@
 # Installs what the project needs on Debian 12 when run as root and something is missing.
 set -euo pipefail
 pkgs=(cmake make g++ pkg-config libsystemc-dev googletest libgtest-dev libglm-dev libcli11-dev
-      nlohmann-json3-dev python3-matplotlib python3-numpy)
+      python3-matplotlib python3-numpy)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -36,8 +36,15 @@ std::vector<uint32_t> codes(uint32_t first, uint32_t last) {
     return v;
 }
 
-// Runs the bench to the end of its stimulus, with a watchdog on simulated time.
+// Runs the bench to the end of its stimulus, with a watchdog on simulated time. With
+// SHADING_TRACE=<dir>, writes <dir>/<Suite.Test>.vcd (one name per test: ctest runs in parallel).
 void run(bench_t& bench) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    for (char& ch : name)
+        if (ch == '/') ch = '_';
+    auto vcd = vcd_from_env(name);
+    if (vcd) vcd->trace(bench);
     const sc_time limit = bench.stim.duration() * 1.01 + sc_time(1, sc_core::SC_US);
     sc_core::sc_start(limit);
     ASSERT_TRUE(bench.finished()) << "stimulus did not finish within " << limit;
