@@ -5,6 +5,7 @@
 #include <random>
 
 #include "common/report_log.h"
+#include "common/vcd_names.h"
 #include "common/sim_guard.h"
 #include "interp/interp_line.h"
 #include "interp/interp_tb.h"
@@ -91,4 +92,20 @@ TEST(InterpCoefUnits, CheckerCatchesAWrongGolden) {
     EXPECT_EQ(bench.checker.mismatches(0), 20u);
     EXPECT_EQ(bench.checker.mismatches(1), 0u);
     EXPECT_GT(report_log::get().count(msg::mismatch), 0u);
+}
+
+TEST(InterpCoefUnits, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
+    // traces/interp_coef.gtkw is hand-written: every signal it lists must exist in the VCD of the bench
+    // the testbench program builds, or GTKWave silently drops it.
+    const std::string base = ::testing::TempDir() + "interp_coef_names";
+    {
+        coef_bench bench("tb", random_sets(4, 1));
+        vcd_file vcd(base);
+        vcd.trace(bench);
+        EXPECT_TRUE(tb::run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_MS)));
+    }
+    const auto declared = vcd_declared(base + ".vcd");
+    const auto shown = gtkw_listed(source_path("traces/interp_coef.gtkw"));
+    EXPECT_GE(shown.size(), 10u);
+    for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
 }

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "common/report_log.h"
+#include "common/vcd_names.h"
 #include "common/sim_guard.h"
 #include "interp/interp_line.h"
 #include "interp/interp_tb.h"
@@ -80,4 +81,20 @@ TEST(InterpFd, LenOutOfRangeIsReportedAndAFullIntervalEvaluated) {
     fd_bench<4> bench("tb", ivs);
     expect_exact_and_close_to_horner(bench, 3 * 16);
     EXPECT_EQ(report_log::get().count(msg::input), 2u);
+}
+
+TEST(InterpFd, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
+    // traces/interp_fd.gtkw is hand-written: every signal it lists must exist in the VCD of the bench
+    // the testbench program builds, or GTKWave silently drops it.
+    const std::string base = ::testing::TempDir() + "interp_fd_names";
+    {
+        fd_bench<5> bench("tb", random_intervals(2, 32, 1));
+        vcd_file vcd(base);
+        vcd.trace(bench);
+        EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    }
+    const auto declared = vcd_declared(base + ".vcd");
+    const auto shown = gtkw_listed(source_path("traces/interp_fd.gtkw"));
+    EXPECT_GE(shown.size(), 10u);
+    for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
 }

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "common/report_log.h"
+#include "common/vcd_names.h"
 #include "common/sim_guard.h"
 #include "interp/interp_tb.h"
 #include "trace.h"
@@ -120,4 +121,20 @@ TEST(InterpHorner, CheckerCatchesAWrongMicroStep) {
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
     EXPECT_EQ(bench.checker.mismatches(), 5u);
     EXPECT_GT(report_log::get().count(msg::mismatch), 0u);
+}
+
+TEST(InterpHorner, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
+    // traces/interp_horner.gtkw is hand-written: every signal it lists must exist in the VCD of the bench
+    // the testbench program builds, or GTKWave silently drops it.
+    const std::string base = ::testing::TempDir() + "interp_horner_names";
+    {
+        horner_bench bench("tb", every_t(1, 2, false, 1));
+        vcd_file vcd(base);
+        vcd.trace(bench);
+        EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    }
+    const auto declared = vcd_declared(base + ".vcd");
+    const auto shown = gtkw_listed(source_path("traces/interp_horner.gtkw"));
+    EXPECT_GE(shown.size(), 10u);
+    for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
 }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "common/report_log.h"
+#include "common/vcd_names.h"
 #include "common/sim_guard.h"
 #include "specular/specular_tb.h"
 #include "trace.h"
@@ -148,32 +149,11 @@ TEST(UA22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
         tf->trace(bench);
         ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
     }
-    std::set<std::string> traced;
-    std::vector<std::string> scope;
-    std::ifstream vcd(vcd_base + ".vcd");
-    for (std::string tok; vcd >> tok;) {
-        if (tok == "$scope") {
-            std::string kind, name;
-            vcd >> kind >> name;
-            scope.push_back(name);
-        } else if (tok == "$upscope") {
-            scope.pop_back();
-        } else if (tok == "$var") {
-            std::string kind, width, id, name, range;
-            vcd >> kind >> width >> id >> name >> range;
-            std::string full;
-            for (const auto& sc : scope) full += sc + ".";
-            traced.insert(full + name + (range == "$end" ? "" : range));
-        } else if (tok == "$enddefinitions") {
-            break;
-        }
-    }
+    const auto traced = vcd_declared(vcd_base + ".vcd");
     ASSERT_GT(traced.size(), 20u);
-    std::ifstream gtkw(std::string(SHADING_SOURCE_DIR) + "/traces/ua22802.gtkw");
-    ASSERT_TRUE(gtkw.good());
+    const auto shown = gtkw_listed(source_path("traces/ua22802.gtkw"));
     std::size_t listed = 0;
-    for (std::string line; std::getline(gtkw, line);) {
-        if (line.rfind("SystemC.", 0) != 0) continue;
+    for (const auto& line : shown) {
         ++listed;
         EXPECT_TRUE(traced.count(line)) << line << " is not in the VCD";
     }

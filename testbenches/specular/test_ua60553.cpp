@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/report_log.h"
+#include "common/vcd_names.h"
 #include "report_ids.h"
 #include "specular/specular_tb.h"
 #include "trace.h"
@@ -243,6 +244,11 @@ TEST(UA60553Trace, VcdDeclaresTheDatapathSignals) {
                             "out26_g", "out27_b", "out29_valid", "node28_carry1", "node30_carry0"})
         EXPECT_EQ(names.count(sig), 1u) << sig;
     for (const auto& n : names) EXPECT_EQ(n.find_first_of("[] "), std::string::npos) << n;
+    // The committed view traces/ua60553.gtkw shows only nets this VCD declares.
+    const auto declared = vcd_declared(path + ".vcd");
+    const auto shown = gtkw_listed(source_path("traces/ua60553.gtkw"));
+    EXPECT_GE(shown.size(), 30u);
+    for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
 }
 
 TEST(UA60553Checker, AWrongGoldenValueIsCaught) {
