@@ -29,6 +29,8 @@ public:
         sensitive << x;
     }
 
+    const sc_core::sc_time& delay() const { return drv_.delay(); }
+
 private:
     void compute() {
         const int64_t v = code_value(x.read().to_uint64(), qfmt{WIN, true, 0}) * (int64_t{1} << ALIGN);

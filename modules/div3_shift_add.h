@@ -27,6 +27,8 @@ public:
         net.in[0](x);
         net.y(y);
     }
+
+    const sc_core::sc_time& delay() const { return net.delay(); }  // slowest x -> y path
 };
 
 }  // namespace shading

@@ -34,6 +34,7 @@ public:
     }
 
     const sc_core::sc_time& clk_to_q() const { return drv_.delay(); }
+    const sc_core::sc_time& setup() const { return setup_; }
     unsigned violations() const { return violations_; }
 
 private:

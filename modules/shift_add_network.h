@@ -10,8 +10,10 @@
 // A negative shift drops low wires (floor) of that term before it is added or subtracted.
 #pragma once
 
+#include <algorithm>
 #include <sstream>
 #include <systemc>
+#include <utility>
 #include <vector>
 
 #include "adder.h"
@@ -74,14 +76,17 @@ public:
         }
         tie0.y(carry0);
         tie1.y(carry1);
-        sc_core::sc_signal<word>* p = reduce(pos);
+        sc_core::sc_time p_arrival, q_arrival;
+        sc_core::sc_signal<word>* p = reduce(pos, p_arrival);
         sc_core::sc_signal<word>* out = p;
+        delay_ = p_arrival;
         if (!neg.empty()) {
-            inv.x(*reduce(neg));
+            inv.x(*reduce(neg, q_arrival));
             inv.y(neg_inv);
             auto& a = add[next_];
             a.a(*p); a.b(neg_inv); a.cin(carry1); a.s(node[next_]);  // P + ~Q + 1 = P - Q
             out = &node[next_++];
+            delay_ = std::max(p_arrival, q_arrival + inv.delay()) + a.delay();
         } else {
             // No subtraction: the inverter bank is left unused; tie its ports off.
             inv.x(neg_inv);
@@ -93,23 +98,28 @@ public:
     }
 
     const std::vector<sa_term>& terms() const { return terms_; }
+    // Slowest input-to-y path, summed from the adders' and the inverter bank's own delays while
+    // the tree was wired (callers need it for their clock-phase requirements).
+    const sc_core::sc_time& delay() const { return delay_; }
 
 private:
-    // Balanced tree over the given terms; returns the net carrying their sum.
-    sc_core::sc_signal<word>* reduce(const std::vector<std::size_t>& idx) {
-        std::vector<sc_core::sc_signal<word>*> level;
-        for (std::size_t i : idx) level.push_back(&term[i]);
+    // Balanced tree over the given terms; returns the net carrying their sum. `arrival` becomes
+    // the slowest path from an input to that net (shifters are wiring: terms arrive at 0).
+    sc_core::sc_signal<word>* reduce(const std::vector<std::size_t>& idx, sc_core::sc_time& arrival) {
+        std::vector<std::pair<sc_core::sc_signal<word>*, sc_core::sc_time>> level;
+        for (std::size_t i : idx) level.emplace_back(&term[i], sc_core::SC_ZERO_TIME);
         while (level.size() > 1) {
-            std::vector<sc_core::sc_signal<word>*> next;
+            std::vector<std::pair<sc_core::sc_signal<word>*, sc_core::sc_time>> next;
             for (std::size_t i = 0; i + 1 < level.size(); i += 2) {
                 auto& a = add[next_];
-                a.a(*level[i]); a.b(*level[i + 1]); a.cin(carry0); a.s(node[next_]);
-                next.push_back(&node[next_++]);
+                a.a(*level[i].first); a.b(*level[i + 1].first); a.cin(carry0); a.s(node[next_]);
+                next.emplace_back(&node[next_++], std::max(level[i].second, level[i + 1].second) + a.delay());
             }
             if (level.size() % 2) next.push_back(level.back());
             level = std::move(next);
         }
-        return level.front();
+        arrival = level.front().second;
+        return level.front().first;
     }
 
     void config_error(const char* why) {
@@ -123,6 +133,7 @@ private:
     std::vector<sa_term> terms_;
     std::size_t next_ = 0;
     sc_core::sc_signal<word>* out_ = nullptr;
+    sc_core::sc_time delay_;
     sc_core::sc_signal<word> unused_inv_{"unused_inv"};
 };
 
