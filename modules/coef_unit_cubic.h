@@ -7,6 +7,7 @@
 // constant divider (div3_mode::exact). This class only instantiates and wires.
 #pragma once
 
+#include <algorithm>
 #include <systemc>
 #include <type_traits>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "../src/interp_formats.h"
 #include "const_div.h"
 #include "div3_shift_add.h"
+#include "phase_checker.h"
 #include "reg.h"
 #include "shift_add_network.h"
 #include "shifter.h"
@@ -75,6 +77,10 @@ public:
     div3_t div3_c{"div3_c"};          // Q16.8 / 3 -> Q16.16
     shifter<WS, WC, true> align_b{"align_b", interp::div3_shift};    // Q16.8 -> Q16.16, wiring
     shifter<WI, WC, false> align_d{"align_d", interp::div3_shift};   // Q8.8 -> Q16.16, wiring
+    // Assertion monitor (not hardware); requirements set in the constructor: see rg_to_outputs().
+    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
+                            "high: I1..I4 straight into rg_i1..4 (their setup time); low: rg_i clock-to-"
+                            "output -> shift-and-add networks -> /3 -> A..D before the rising edge"};
 
     explicit coef_unit_cubic(const sc_core::sc_module_name& name)
         : sc_module(name),
@@ -95,7 +101,20 @@ public:
         div3_c.x(c3_sum); div3_c.y(c);
         align_b.x(b_sum); align_b.y(b);
         align_d.x(held_i1); align_d.y(d);
+        chk_clock.clk(clk);
+        chk_clock.set_min_high(std::max({rg_i1.setup(), rg_i2.setup(), rg_i3.setup(), rg_i4.setup()}));
+        chk_clock.set_min_low(rg_to_outputs());
     }
+
+    // Slowest path from the falling edge that latches the samples to A..D, which the next rising
+    // edge samples (the aligners are wiring; D = I1 needs only the clock-to-output).
+    sc_core::sc_time rg_to_outputs() const {
+        const auto q = std::max({rg_i1.clk_to_q(), rg_i2.clk_to_q(), rg_i3.clk_to_q(), rg_i4.clk_to_q()});
+        return q + std::max({net_a.delay() + div3_a.delay(), net_b.delay(), net_c.delay() + div3_c.delay()});
+    }
+    // Shortest clock phases this unit works with (checked by chk_clock).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 };
 
 }  // namespace shading

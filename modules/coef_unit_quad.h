@@ -5,10 +5,12 @@
 // valid at the next rising edge; Q8.8 in, Q16.16 out (exact). Only instantiates and wires.
 #pragma once
 
+#include <algorithm>
 #include <systemc>
 #include <vector>
 
 #include "../src/interp_formats.h"
+#include "phase_checker.h"
 #include "reg.h"
 #include "shift_add_network.h"
 #include "shifter.h"
@@ -42,6 +44,10 @@ public:
     shifter<WS, WC, true> align_a{"align_a", interp::div3_shift};     // Q16.8 -> Q16.16
     shifter<WS, WC, true> align_b{"align_b", interp::div3_shift};     // Q16.8 -> Q16.16
     shifter<WI, WC, false> align_c{"align_c", interp::div3_shift};    // Q8.8 -> Q16.16
+    // Assertion monitor (not hardware); requirements set in the constructor: see rg_to_outputs().
+    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
+                            "high: I1..I3 straight into rg_i1..3 (their setup time); low: rg_i clock-to-"
+                            "output -> shift-and-add networks -> a..c before the rising edge"};
 
     explicit coef_unit_quad(const sc_core::sc_module_name& name) : sc_module(name) {
         rg_i1.ctl(clk); rg_i1.d(i1); rg_i1.q(held_i1);
@@ -55,7 +61,20 @@ public:
         align_a.x(a_sum); align_a.y(a);
         align_b.x(b_sum); align_b.y(b);
         align_c.x(held_i1); align_c.y(c);
+        chk_clock.clk(clk);
+        chk_clock.set_min_high(std::max({rg_i1.setup(), rg_i2.setup(), rg_i3.setup()}));
+        chk_clock.set_min_low(rg_to_outputs());
     }
+
+    // Slowest path from the falling edge that latches the samples to a..c, which the next rising
+    // edge samples (the aligners are wiring).
+    sc_core::sc_time rg_to_outputs() const {
+        return std::max({rg_i1.clk_to_q(), rg_i2.clk_to_q(), rg_i3.clk_to_q()}) +
+               std::max(net_a.delay(), net_b.delay());
+    }
+    // Shortest clock phases this unit works with (checked by chk_clock).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 };
 
 }  // namespace shading

@@ -11,6 +11,7 @@
 // This class only instantiates and wires.
 #pragma once
 
+#include <algorithm>
 #include <systemc>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "constant.h"
 #include "fd_ctrl.h"
 #include "mux.h"
+#include "phase_checker.h"
 #include "reg.h"
 #include "shift_add_network.h"
 #include "shifter.h"
@@ -71,6 +73,12 @@ public:
     shifter<WF, WC, true> out_align{"out_align", -S};  // Q22.34 -> Q16.16, 18 low wires dropped (floor)
     constant<bool> k_carry0{"k_carry0", false};
     fd_ctrl<M> ctrl{"ctrl"};
+    // Assertion monitor (not hardware); requirements set in the constructor from the blocks'
+    // delays: see setup_to_rg() and rg_to_output().
+    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
+                            "high: A..D -> set-up network -> MX (load) and fd_sel -> MX -> register "
+                            "inputs before the falling edge; low: RG_P clock-to-output -> i_px before "
+                            "the rising edge"};
 
     explicit fd_eval(const sc_core::sc_module_name& name) : sc_module(name) {
         setup_p.x(d); setup_p.y(init_p);
@@ -96,7 +104,31 @@ public:
         out_align.x(p_value); out_align.y(i_px);
         ctrl.clk(clk); ctrl.start(start); ctrl.len(len);
         ctrl.fd_sel(fd_sel); ctrl.pixel(pixel); ctrl.valid(valid); ctrl.last(last);
+        chk_clock.clk(clk);
+        chk_clock.set_min_high(setup_to_rg());
+        // The recurrence RG -> ADD -> MX -> RG is launched and captured by falling edges: it may
+        // use both phases, so the low phase only has to make up what the high phase lacks.
+        const auto loop = std::max({rg_p.clk_to_q(), rg_d1.clk_to_q(), rg_d2.clk_to_q()}) +
+                          std::max({add_p.delay(), add_d1.delay(), add_d2.delay()}) +
+                          std::max({mx_p.delay(), mx_d1.delay(), mx_d2.delay()});
+        const auto rest = loop > setup_to_rg() ? loop - setup_to_rg() : sc_core::SC_ZERO_TIME;
+        chk_clock.set_min_low(std::max(rg_to_output(), rest));
     }
+
+    // Slowest path launched by the rising edge into a register: the controller selects LOAD, and
+    // A..D may settle as late as that accepting edge (fd_ctrl: stable from it to the falling edge), so
+    // the set-up networks and the multiplexer must settle within the high phase. fd_sel -> MX
+    // alone (HOLD/STEP) is part of it.
+    sc_core::sc_time setup_to_rg() const {
+        return std::max({setup_d1.delay() + mx_d1.delay(), setup_d2.delay() + mx_d2.delay(),
+                         setup_d3.delay() + mx_d3.delay(), mx_p.delay()});  // setup_p is wiring
+    }
+    // RG_P's new value reaches i_px (out_align is wiring) before the rising edge where valid says
+    // the pixel is on the output.
+    sc_core::sc_time rg_to_output() const { return rg_p.clk_to_q(); }
+    // Shortest clock phases this unit works with (checked by chk_clock).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 
 private:
     void wire_mux(mux<WF, 3>& m, sc_core::sc_signal<fd_t>& hold, sc_core::sc_signal<fd_t>& load,

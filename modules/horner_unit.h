@@ -18,6 +18,7 @@
 #include "key_block.h"
 #include "mul.h"
 #include "mux.h"
+#include "phase_checker.h"
 #include "reg.h"
 
 namespace shading {
@@ -67,6 +68,14 @@ public:
     constant<coef_t> k_zero{"k_zero", coef_t(0)};
     constant<bool> k_carry0{"k_carry0", false};
     horner_ctrl ctrl{"ctrl"};
+    // Assertion monitor (not hardware). High phase: the selects and the inputs A..D, t (driven
+    // after the accepting rising edge, as the handshake allows) must reach RG before it latches.
+    // Low phase: RG's new value must be on i_t at the rising edge where done is read. The loop
+    // RG -> MX1 -> MUL -> MX2 -> Sm -> RG takes clk_to_q + select_to_rg = min_low + min_high, so
+    // the two phase checks cover it.
+    phase_checker chk_clock{"chk_clock", select_to_rg(), rg.clk_to_q(),
+                            "high: selects, A, t -> MX1 -> MUL -> MX2 -> Sm -> RG input before the "
+                            "falling edge; low: RG clock-to-output -> i_t before the rising edge"};
 
     SC_HAS_PROCESS(horner_unit);
     explicit horner_unit(const sc_core::sc_module_name& name) : sc_module(name) {
@@ -84,6 +93,7 @@ public:
         ctrl.clk(clk); ctrl.start(start); ctrl.deg2(deg2); ctrl.t(t);
         ctrl.mx1_sel(mx1_sel); ctrl.mx2_sel(mx2_sel); ctrl.bk_pass(bk_pass); ctrl.step(step);
         ctrl.done(done); ctrl.busy(busy);
+        chk_clock.clk(clk);
         SC_METHOD(wire_out);  // RG's output is the unit's output: a zero-delay wire
         sensitive << rg_value;
     }
@@ -93,6 +103,9 @@ public:
     sc_core::sc_time select_to_rg() const {
         return mx1.delay() + mul.delay() + mx2.delay() + sm.delay();
     }
+    // Shortest clock phases this unit works with (checked by chk_clock).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 
 private:
     void wire_out() { i_t.write(rg_value.read()); }
