@@ -4,7 +4,8 @@
 //   *_monitor  - samples the pins at rising edges: the inputs a request was evaluated with and
 //                the result at the edge where the unit says it is valid;
 //   *_checker  - compares every sample with the golden model (src/interp_golden.h).
-// Clock: 20 ns, rising edge first at 0. Registers latch on the falling edge (reg.h).
+// Clock: 20 ns, rising edge first at 0, unless a bench is given other phases (interp_clock).
+// Registers latch on the falling edge (reg.h).
 #pragma once
 
 #include <array>
@@ -30,6 +31,15 @@
 namespace shading::tb {
 
 inline sc_core::sc_time interp_period() { return sc_core::sc_time(20, sc_core::SC_NS); }
+
+// A bench's clock by its phases: high first (rising edge at 0), then low. The default is the
+// 20 ns, 50 % clock every program and most tests use; the timing tests shorten one phase.
+struct interp_clock {
+    sc_core::sc_time high = interp_period() / 2;
+    sc_core::sc_time low = interp_period() / 2;
+    sc_core::sc_time period() const { return high + low; }
+    double duty() const { return high / period(); }  // sc_clock rounds period * duty back to high
+};
 
 using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
 using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
@@ -182,7 +192,7 @@ private:
 
 class coef_bench : public sc_core::sc_module {
 public:
-    sc_core::sc_clock clk{"clk", interp_period()};
+    sc_core::sc_clock clk;
     sc_core::sc_signal<bool> sample_valid{"sample_valid"};
     // Nets named for the waveform: c1_i1 .. c1_i4 (case-1 samples), c2_i*, q_i*; and per unit
     // c1sa_a .. quad_c (unit: c1sa, c1ex, c2sa, c2ex, quad; then the coefficient).
@@ -199,8 +209,9 @@ public:
     coef_monitor mon;
 
     coef_bench(const sc_core::sc_module_name& name, std::vector<coef_inputs> sets,
-               coef_checker::golden_fn golden = &coef_checker::golden)
-        : sc_module(name), checker(std::move(golden)), stim("stim", std::move(sets)),
+               coef_checker::golden_fn golden = &coef_checker::golden, const interp_clock& ck = {})
+        : sc_module(name), clk("clk", ck.period(), ck.duty()), checker(std::move(golden)),
+          stim("stim", std::move(sets)),
           mon("mon", [this](const coef_sample& s) { checker.check(s); }) {
         auto named = [](const std::string& prefix) {
             return [prefix](const char*, std::size_t i) {
@@ -385,12 +396,14 @@ public:
     // Clocks per result over the run: (last valid edge - first acceptance edge) / results.
     double cycles_per_result() const {
         if (samples_.empty()) return 0.0;
-        return (samples_.back().valid - samples_.front().accepted) / interp_period() /
+        return (samples_.back().valid - samples_.front().accepted) / period_ /
                static_cast<double>(samples_.size());
     }
+    void set_period(const sc_core::sc_time& p) { period_ = p; }
 
 private:
     golden_fn golden_;
+    sc_core::sc_time period_ = interp_period();
     std::size_t mismatches_ = 0;
     std::vector<horner_sample> samples_;
     std::set<sc_core::sc_time> latencies_;
@@ -398,7 +411,7 @@ private:
 
 class horner_bench : public sc_core::sc_module {
 public:
-    sc_core::sc_clock clk{"clk", interp_period()};
+    sc_core::sc_clock clk;
     sc_core::sc_signal<bool> start{"start"}, deg2{"deg2"}, done{"done"}, busy{"busy"};
     sc_core::sc_signal<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"}, i_t{"i_t"};
     sc_core::sc_signal<t_t> t{"t"};
@@ -409,9 +422,10 @@ public:
     horner_monitor mon;
 
     horner_bench(const sc_core::sc_module_name& name, std::vector<horner_request> reqs, unsigned gap = 0,
-                 horner_checker::golden_fn golden = &horner_checker::golden)
-        : sc_module(name), checker(std::move(golden)), stim("stim", std::move(reqs), gap),
-          mon("mon", [this](const horner_sample& s) { checker.check(s); }) {
+                 horner_checker::golden_fn golden = &horner_checker::golden, const interp_clock& ck = {})
+        : sc_module(name), clk("clk", ck.period(), ck.duty()), checker(std::move(golden)),
+          stim("stim", std::move(reqs), gap), mon("mon", [this](const horner_sample& s) { checker.check(s); }) {
+        checker.set_period(ck.period());
         dut.clk(clk); dut.start(start); dut.deg2(deg2);
         dut.a(a); dut.b(b); dut.c(c); dut.d(d); dut.t(t);
         dut.i_t(i_t); dut.done(done); dut.busy(busy);
@@ -573,12 +587,14 @@ public:
     const std::map<unsigned, std::set<sc_core::sc_time>>& latencies() const { return latencies_; }
     double cycles_per_pixel() const {
         if (samples_.empty()) return 0.0;
-        return (samples_.back().valid - samples_.front().accepted) / interp_period() /
+        return (samples_.back().valid - samples_.front().accepted) / period_ /
                static_cast<double>(samples_.size());
     }
+    void set_period(const sc_core::sc_time& p) { period_ = p; }
 
 private:
     int frac_;
+    sc_core::sc_time period_ = interp_period();
     std::size_t mismatches_ = 0;
     std::vector<fd_sample> samples_;
     int64_t min_vs_horner_ = INT64_MAX, max_vs_horner_ = INT64_MIN;
@@ -589,7 +605,7 @@ template <unsigned M>
 class fd_bench : public sc_core::sc_module {
 public:
     using len_t = typename fd_ctrl<M>::len_t;
-    sc_core::sc_clock clk{"clk", interp_period()};
+    sc_core::sc_clock clk;
     sc_core::sc_signal<bool> start{"start"}, valid{"valid"}, last{"last"};
     sc_core::sc_signal<len_t> len{"len"};
     sc_core::sc_signal<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"}, i_px{"i_px"};
@@ -599,9 +615,10 @@ public:
     fd_stimulus<M> stim;
     fd_monitor<M> mon;
 
-    fd_bench(const sc_core::sc_module_name& name, std::vector<fd_interval> ivs)
-        : sc_module(name), stim("stim", std::move(ivs)),
+    fd_bench(const sc_core::sc_module_name& name, std::vector<fd_interval> ivs, const interp_clock& ck = {})
+        : sc_module(name), clk("clk", ck.period(), ck.duty()), stim("stim", std::move(ivs)),
           mon("mon", [this](const fd_sample& s) { checker.check(s); }) {
+        checker.set_period(ck.period());
         dut.clk(clk); dut.start(start); dut.len(len);
         dut.a(a); dut.b(b); dut.c(c); dut.d(d);
         dut.i_px(i_px); dut.valid(valid); dut.last(last);

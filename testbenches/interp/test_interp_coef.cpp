@@ -13,6 +13,7 @@
 
 using namespace shading;
 using namespace shading::tb;
+using sc_core::sc_time;
 
 namespace {
 std::vector<coef_inputs> random_sets(std::size_t n, unsigned seed) {
@@ -38,6 +39,7 @@ TEST(InterpCoefUnits, BitExactAgainstGoldenRandomAndCorners) {
     EXPECT_TRUE(tb::run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_MS)));
     EXPECT_EQ(bench.checker.samples().size(), 400u);
     for (std::size_t u = 0; u < 5; ++u) EXPECT_EQ(bench.checker.mismatches(u), 0u) << "unit " << u;
+    EXPECT_EQ(report_log::get().count(msg::timing), 0u) << "the default 20 ns clock meets every unit's phases";
 }
 
 // A raster line's intervals: the units' coefficients are those of the real-valued formulas
@@ -108,4 +110,64 @@ TEST(InterpCoefUnits, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     const auto shown = gtkw_listed(source_path("traces/interp_coef.gtkw"));
     EXPECT_GE(shown.size(), 10u);
     for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+}
+
+// Clock phases (chk_clock). The samples go straight into the registers, so the high phase needs
+// only their setup time (0). Low: from the latching falling edge, the register's clock-to-output
+// (0.2 ns) plus the slowest network path to a coefficient must end before the rising edge.
+// A shift-and-add network takes max(P tree, Q tree + inverter 0.1) + 1 ns for P + ~Q + 1, each
+// tree ceil(log2 terms) adders of 1 ns; the shift-and-add /3 (1 positive, 3 negative terms) is
+// max(0, 2 + 0.1) + 1 = 3.1 ns, the exact /3 a multiplier's 3 ns (hand sums, comb_delay.h).
+TEST(InterpCoefTiming, PhaseRequirementsAreTheHandSumsOfTheDefaultDelays) {
+    using interp::div3_mode;
+    using interp::sample_set;
+    coef_unit_cubic<sample_set::case1, div3_mode::shift_add> c1sa("c1sa");
+    coef_unit_cubic<sample_set::case1, div3_mode::exact> c1ex("c1ex");
+    coef_unit_cubic<sample_set::case2, div3_mode::shift_add> c2sa("c2sa");
+    coef_unit_cubic<sample_set::case2, div3_mode::exact> c2ex("c2ex");
+    coef_unit_quad quad("quad");
+    // Case 1: -S_C has 3 positive, 4 negative terms: max(2, 2 + 0.1) + 1 = 3.1 ns; then /3.
+    // (8(-S_A): 4 and 2 terms, max(2, 1.1) + 1 = 3 ns, and B: 3 and 3, 3.1 ns, are no slower.)
+    EXPECT_EQ(c1sa.min_low(), sc_time(6400, sc_core::SC_PS));  // 0.2 + 3.1 + 3.1
+    EXPECT_EQ(c1ex.min_low(), sc_time(6300, sc_core::SC_PS));  // 0.2 + 3.1 + 3
+    // Case 2: -S_C has 6 positive terms (3 adder levels), 2 negative: max(3, 1.1) + 1 = 4 ns.
+    EXPECT_EQ(c2sa.min_low(), sc_time(7300, sc_core::SC_PS));  // 0.2 + 4 + 3.1
+    EXPECT_EQ(c2ex.min_low(), sc_time(7200, sc_core::SC_PS));  // 0.2 + 4 + 3
+    // Quadratic: b has 1 positive, 3 negative terms: max(0, 2 + 0.1) + 1 = 3.1 ns; no division.
+    EXPECT_EQ(quad.min_low(), sc_time(3300, sc_core::SC_PS));  // 0.2 + 3.1
+    for (auto t : {c1sa.min_high(), c1ex.min_high(), c2sa.min_high(), c2ex.min_high(), quad.min_high()})
+        EXPECT_EQ(t, sc_core::SC_ZERO_TIME);
+}
+
+// Low phase 1 ns shorter than the quadratic unit needs (2.3 ns; period 20 ns): every unit
+// reports, and each one's coefficients are sampled before they settle.
+TEST(InterpCoefTiming, LowPhaseOneNanosecondShortIsReportedByEveryUnit) {
+    report_log::get().expect(msg::timing);
+    report_log::get().expect(msg::mismatch);
+    interp_clock ck;
+    ck.high = sc_time(17700, sc_core::SC_PS);
+    ck.low = sc_time(2300, sc_core::SC_PS);
+    coef_bench bench("tb", random_sets(30, 14), &coef_checker::golden, ck);
+    EXPECT_TRUE(tb::run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_MS)));
+    for (auto v : {bench.dut_c1_sa.chk_clock.low_violations(), bench.dut_c1_ex.chk_clock.low_violations(),
+                   bench.dut_c2_sa.chk_clock.low_violations(), bench.dut_c2_ex.chk_clock.low_violations(),
+                   bench.dut_quad.chk_clock.low_violations()})
+        EXPECT_GT(v, 0u);
+    EXPECT_GT(report_log::get().count(msg::timing), 0u);
+    for (std::size_t u = 0; u < 5; ++u) EXPECT_GT(bench.checker.mismatches(u), 0u) << "unit " << u;
+}
+
+// Phases 1 ns longer than the slowest unit needs (1 ns high, 8.3 ns low: a 9.3 ns clock):
+// silent, bit-exact, one interval per clock.
+TEST(InterpCoefTiming, PhasesOneNanosecondLongerAreSilentAndBitExact) {
+    interp_clock ck;
+    ck.high = sc_time(1000, sc_core::SC_PS);
+    ck.low = sc_time(8300, sc_core::SC_PS);
+    coef_bench bench("tb", random_sets(60, 15), &coef_checker::golden, ck);
+    EXPECT_TRUE(tb::run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_MS)));
+    const auto& s = bench.checker.samples();
+    ASSERT_EQ(s.size(), 60u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 0u);
+    for (std::size_t i = 1; i < s.size(); ++i) EXPECT_EQ(s[i].at - s[i - 1].at, ck.period());
 }

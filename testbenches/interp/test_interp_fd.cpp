@@ -51,6 +51,7 @@ TEST(InterpFd, LongestIntervalBitExactAndWithinBoundOfHorner) {
 TEST(InterpFd, ShortestIntervalBitExact) {
     fd_bench<2> bench("tb", random_intervals(100, 4, 32));
     expect_exact_and_close_to_horner(bench, 400);
+    EXPECT_EQ(bench.dut.chk_clock.violations(), 0u) << "the default 20 ns clock meets both phases";
 }
 
 // A raster line of 200 pixels in intervals of 32, the last one 8 pixels long, with the cubic
@@ -97,4 +98,61 @@ TEST(InterpFd, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     const auto shown = gtkw_listed(source_path("traces/interp_fd.gtkw"));
     EXPECT_GE(shown.size(), 10u);
     for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+}
+
+// Clock phases (chk_clock). High: at the accepting rising edge the controller selects LOAD and
+// A..D may just have settled, so the deepest set-up network (D1 and D2: three positive terms, two
+// adder levels) and the multiplexer must settle before the falling edge: 1 + 1 + 0.3 = 2.3 ns.
+// Low: RG_P's clock-to-output 0.2 ns puts the pixel on i_px (out_align is wiring) before the
+// rising edge. The recurrence RG -> ADD -> MX -> RG (0.2 + 1 + 0.3 = 1.5 ns) spans both phases
+// and fits in 2.3 + 0.2 (hand sums of the default delays, comb_delay.h).
+TEST(InterpFdTiming, PhaseRequirementsAreTheHandSumsOfTheDefaultDelays) {
+    fd_eval<5> dut("dut");
+    EXPECT_EQ(dut.min_high(), sc_time(2300, sc_core::SC_PS));
+    EXPECT_EQ(dut.min_low(), sc_time(200, sc_core::SC_PS));
+}
+
+// High phase 1 ns shorter (1.3 ns, period 20 ns): reported at every falling edge (the first 10).
+// This bench's source presents A..D a clock before the accepting edge, earlier than fd_ctrl's
+// contract requires, so its set-up values have settled and the pixels stay exact; a source that
+// settles A..D at the accepting edge itself would load unsettled set-up values.
+TEST(InterpFdTiming, HighPhaseOneNanosecondShortIsReported) {
+    report_log::get().expect(msg::timing);
+    interp_clock ck;
+    ck.high = sc_time(1300, sc_core::SC_PS);
+    ck.low = sc_time(18700, sc_core::SC_PS);
+    fd_bench<3> bench("tb", random_intervals(4, 8, 34), ck);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_GT(bench.dut.chk_clock.high_violations(), 10u);
+    EXPECT_EQ(bench.dut.chk_clock.low_violations(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 10u) << "the first 10 violations are reported";
+    EXPECT_EQ(bench.checker.samples().size(), 4u * 8u);
+}
+
+// High phase 0.2 ns, shorter than even fd_sel -> MX (0.3 ns): the registers latch the previous
+// selection's value, so intervals load late and the pixels are wrong.
+TEST(InterpFdTiming, HighPhaseShorterThanTheSelectPathGivesWrongPixels) {
+    report_log::get().expect(msg::timing);
+    report_log::get().expect(msg::mismatch);
+    interp_clock ck;
+    ck.high = sc_time(200, sc_core::SC_PS);
+    ck.low = sc_time(19800, sc_core::SC_PS);
+    fd_bench<3> bench("tb", random_intervals(4, 8, 35), ck);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_GT(bench.dut.chk_clock.high_violations(), 0u);
+    EXPECT_GT(report_log::get().count(msg::timing), 0u);
+    EXPECT_GT(bench.checker.mismatches(), 0u);
+}
+
+// Both phases 1 ns longer than required (3.3 ns high, 1.2 ns low: a 4.5 ns clock): silent,
+// bit-exact, one pixel per clock.
+TEST(InterpFdTiming, PhasesOneNanosecondLongerAreSilentAndBitExact) {
+    interp_clock ck;
+    ck.high = sc_time(3300, sc_core::SC_PS);
+    ck.low = sc_time(1200, sc_core::SC_PS);
+    fd_bench<4> bench("tb", random_intervals(6, 16, 36), ck);
+    expect_exact_and_close_to_horner(bench, 6 * 16);
+    EXPECT_EQ(bench.dut.chk_clock.violations(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 0u);
+    EXPECT_DOUBLE_EQ(bench.checker.cycles_per_pixel(), 1.0);
 }

@@ -40,6 +40,7 @@ TEST(InterpHorner, CubicBitExactEveryTOfAnInterval) {
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
     EXPECT_EQ(bench.checker.samples().size(), 12u * 33u);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
+    EXPECT_EQ(bench.dut.chk_clock.violations(), 0u) << "the default 20 ns clock meets both phases";
 }
 
 TEST(InterpHorner, Degree2BitExactEveryTOfAnInterval) {
@@ -137,4 +138,45 @@ TEST(InterpHorner, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     const auto shown = gtkw_listed(source_path("traces/interp_horner.gtkw"));
     EXPECT_GE(shown.size(), 10u);
     for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+}
+
+// Clock phases (chk_clock). High: the selects switch at the rising edge and RG latches at the
+// falling one, so MX1 -> MUL -> MX2 -> Sm must settle in between: 0.3 + 3 + 0.3 + 1 = 4.6 ns
+// (mux, multiplier, mux, adder; comb_delay.h). Low: RG's clock-to-output 0.2 ns puts I(t) on i_t
+// before the rising edge that reads it (hand sums of the default delays).
+TEST(InterpHornerTiming, PhaseRequirementsAreTheHandSumsOfTheDefaultDelays) {
+    horner_unit dut("dut");
+    EXPECT_EQ(dut.min_high(), sc_time(4600, sc_core::SC_PS));
+    EXPECT_EQ(dut.min_low(), sc_time(200, sc_core::SC_PS));
+}
+
+// High phase 1 ns shorter (3.6 ns, period still 20 ns): RG latches Sm before MUL's product has
+// reached it. Every falling edge is a violation; the first 10 are reported, the results are wrong.
+TEST(InterpHornerTiming, HighPhaseOneNanosecondShortIsReportedAndResultsAreWrong) {
+    report_log::get().expect(msg::timing);
+    report_log::get().expect(msg::mismatch);
+    interp_clock ck;
+    ck.high = sc_time(3600, sc_core::SC_PS);
+    ck.low = sc_time(16400, sc_core::SC_PS);
+    horner_bench bench("tb", every_t(2, 3, false, 28), 0, &horner_checker::golden, ck);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_GT(bench.dut.chk_clock.high_violations(), 10u);
+    EXPECT_EQ(bench.dut.chk_clock.low_violations(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 10u) << "the first 10 violations are reported";
+    EXPECT_GT(bench.checker.mismatches(), 0u) << "RG latched unsettled sums";
+}
+
+// Both phases 1 ns longer than required (5.6 ns high, 1.2 ns low: a 6.8 ns clock): silent,
+// bit-exact, and still 6 clocks per cubic pixel.
+TEST(InterpHornerTiming, PhasesOneNanosecondLongerAreSilentAndBitExact) {
+    interp_clock ck;
+    ck.high = sc_time(5600, sc_core::SC_PS);
+    ck.low = sc_time(1200, sc_core::SC_PS);
+    horner_bench bench("tb", every_t(4, 4, false, 29), 0, &horner_checker::golden, ck);
+    EXPECT_TRUE(tb::run_to_completion(bench, limit));
+    EXPECT_EQ(bench.checker.samples().size(), 4u * 17u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    EXPECT_EQ(bench.dut.chk_clock.violations(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 0u);
+    for (const auto& x : bench.checker.samples()) EXPECT_EQ(x.valid - x.accepted, 6 * sc_time(6800, sc_core::SC_PS));
 }
