@@ -26,7 +26,7 @@ function(shading_add_gtest name)
   target_link_libraries(${name} PRIVATE shading_modules shading_gtest_main GTest::gtest ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   # Tests read committed files (traces/*.gtkw) from the source tree.
-  target_compile_definitions(${name} PRIVATE SHADING_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+  target_compile_definitions(${name} PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60
