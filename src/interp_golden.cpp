@@ -110,6 +110,18 @@ std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, 
     return out;
 }
 
+std::vector<uint64_t> golden_interp_line(const std::vector<interval_samples>& intervals, unsigned m,
+                                         sample_set set, div3_mode mode) {
+    const unsigned n = 1u << m;
+    std::vector<uint64_t> out;
+    for (const auto& iv : intervals) {
+        const unsigned len = (iv.len == 0 || iv.len > n) ? n : iv.len;
+        const auto px = golden_fd(golden_cubic_coefs(iv.i, set, mode), m, len);
+        out.insert(out.end(), px.begin(), px.end());
+    }
+    return out;
+}
+
 double fd_error_bound(unsigned k, unsigned m, int frac) {
     if (frac >= coef_fmt.frac + 3 * static_cast<int>(m)) return 0.0;
     const double kk = k;

@@ -42,6 +42,16 @@ struct fd_setup {
 fd_setup golden_fd_setup(const cubic_coefs& k, unsigned m, int frac = fd_fmt.frac);
 std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac = fd_fmt.frac);
 
+// The raster-line interpolator (modules/interp_line_unit.h): per interval, I1..I4 (sample_fmt
+// codes) -> golden_cubic_coefs -> golden_fd over its len pixels (len 0 or > 2^m: a full interval of
+// 2^m, as fd_ctrl evaluates it). Returns the pixels of all intervals in order, coef_fmt bus bits.
+struct interval_samples {
+    std::array<uint64_t, 4> i{};
+    unsigned len = 0;
+};
+std::vector<uint64_t> golden_interp_line(const std::vector<interval_samples>& intervals, unsigned m,
+                                         sample_set set, div3_mode mode);
+
 // Worst-case accumulated error after k steps of the recurrence when each set-up difference is
 // floored (D1, D2 sums of 3 floored terms, D3 of 2): (3k + 3 C(k,2) + 2 C(k,3)) * 2^-frac,
 // plus nothing when frac >= 16 + 3m (exact set-up). In units of the real value.
