@@ -11,6 +11,7 @@ mkdir -p traces "$SHADING_OUT"
 "$SHADING_BIN/interp_fd_tb" --vcd traces/interp_fd --csv "$SHADING_OUT/interp_fd.csv"
 # The longest supported interval (64 pixels) through the forward differences, no VCD.
 "$SHADING_BIN/interp_fd_tb" --m 6 --no-vcd
+"$SHADING_BIN/interp_line_tb" --vcd traces/interp_line
 # Seed 004's NMSE claim per interval length, and the adaptive degree (golden models).
 "$SHADING_BIN/interp_study" --csv "$SHADING_OUT/interp_nmse.csv"
 /usr/bin/python3 scripts/plot_interp.py "$SHADING_OUT"
