@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Seed 004's interpolation hardware: the coefficient units, the iterative Horner unit and the
-# forward-difference evaluator, each over one raster line (VCDs in traces/, views traces/*.gtkw),
+# Seed 004's interpolation hardware: the coefficient units, the iterative Horner unit, the
+# forward-difference evaluator and the raster-line interpolator joining them, each over one raster
+# line (VCDs in traces/, views traces/*.gtkw),
 # the per-pixel and /3 CSVs and their plots in $SHADING_OUT. Summary rows go to $SHADING_SUMMARY.
 # (The tests check that every signal a view names exists in its bench's VCD.)
 set -euo pipefail

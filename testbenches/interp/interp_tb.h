@@ -54,7 +54,7 @@ inline void append_summary(const std::string& path, const std::string& bench, co
     std::ofstream f(path, std::ios::app);
     f << bench << '\t' << case_name << '\t' << samples << '\t' << mismatches << '\t' << std::fixed
       << std::setprecision(relative ? 4 : 2) << (relative ? 100.0 * max_error : max_error)
-      << (relative ? "%" : " lv") << std::defaultfloat << '\t' << cycles_per_pixel << '\t' << note << '\n';
+      << (relative ? "%" : " lv") << std::defaultfloat << std::setprecision(4) << '\t' << cycles_per_pixel << '\t' << note << '\n';
 }
 
 inline int64_t coef_code(const coef_t& v) { return code_value(v.to_uint64(), interp::coef_fmt); }
