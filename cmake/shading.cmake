@@ -13,7 +13,7 @@
 function(shading_add_bench name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE shading_modules shading_tb_common CLI11::CLI11 ${ARG_LIBS})
+  target_link_libraries(${name} PRIVATE shading_modules shading_golden shading_tb_common CLI11::CLI11 ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
 endfunction()
 
@@ -23,7 +23,7 @@ function(shading_add_gtest name)
     set(ARG_TIMEOUT 300)
   endif()
   add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE shading_modules shading_gtest_main GTest::gtest ${ARG_LIBS})
+  target_link_libraries(${name} PRIVATE shading_modules shading_golden shading_gtest_main GTest::gtest ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   # Tests read committed files (traces/*.gtkw) from the source tree.
   target_compile_definitions(${name} PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

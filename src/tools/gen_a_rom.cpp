@@ -7,8 +7,8 @@
 #include <fstream>
 #include <iostream>
 
-#include "brdf_reference.h"
-#include "ua22802_formats.h"
+#include "reference/brdf_reference.h"
+#include "formats/ua22802_formats.h"
 
 int main(int argc, char* argv[]) {
     using namespace shading;

@@ -4,13 +4,13 @@
 
 #include <systemc>
 
-#include "adder.h"
+#include "blocks/adder.h"
 #include "common/report_log.h"
-#include "constant.h"
-#include "inverter_bank.h"
-#include "mul.h"
-#include "reg.h"
-#include "report_ids.h"
+#include "blocks/constant.h"
+#include "blocks/inverter_bank.h"
+#include "blocks/mul.h"
+#include "blocks/reg.h"
+#include "core/report_ids.h"
 
 using namespace shading;
 using sc_core::SC_NS;

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <systemc>
 
-#include "specular_golden.h"  // the bit-accurate golden model, to check what we read
-#include "ua60553.h"          // shading::device_ua60553 (link shading_modules)
+#include "golden/specular_golden.h"  // the bit-accurate golden model, to check what we read
+#include "ua60553/ua60553.h"          // shading::device_ua60553 (link shading_modules)
 
 using shading::device_ua60553;
 using sc_core::SC_NS;

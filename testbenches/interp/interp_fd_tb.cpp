@@ -16,7 +16,7 @@
 #include "common/sim_guard.h"
 #include "interp/interp_line.h"
 #include "interp/interp_tb.h"
-#include "trace.h"
+#include "core/trace.h"
 
 using namespace shading;
 using namespace shading::tb;

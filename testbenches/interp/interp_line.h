@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "interp_golden.h"
-#include "interp_reference.h"
+#include "golden/interp_golden.h"
+#include "reference/interp_reference.h"
 
 namespace shading::tb {
 

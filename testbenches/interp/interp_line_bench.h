@@ -17,9 +17,9 @@
 #include <systemc>
 #include <vector>
 
-#include "interp_golden.h"
+#include "golden/interp_golden.h"
 #include "interp_line.h"
-#include "interp_line_unit.h"
+#include "interp/interp_line_unit.h"
 #include "interp_tb.h"
 
 namespace shading::tb {

@@ -14,7 +14,7 @@
 #include <iomanip>
 #include <limits>
 
-#include "fixed_point.h"
+#include "formats/fixed_point.h"
 #include "interp/interp_line.h"
 
 using namespace shading;

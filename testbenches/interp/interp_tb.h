@@ -20,13 +20,13 @@
 #include <systemc>
 #include <vector>
 
-#include "interp_formats.h"
-#include "interp_golden.h"
-#include "coef_unit_cubic.h"
-#include "coef_unit_quad.h"
-#include "fd_eval.h"
-#include "horner_unit.h"
-#include "report_ids.h"
+#include "formats/interp_formats.h"
+#include "golden/interp_golden.h"
+#include "interp/coef_unit_cubic.h"
+#include "interp/coef_unit_quad.h"
+#include "interp/fd_eval.h"
+#include "interp/horner_unit.h"
+#include "core/report_ids.h"
 
 namespace shading::tb {
 

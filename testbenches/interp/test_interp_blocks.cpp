@@ -6,11 +6,11 @@
 #include <systemc>
 
 #include "common/report_log.h"
-#include "div3_shift_add.h"
-#include "key_block.h"
-#include "mux.h"
-#include "shift_add_network.h"
-#include "shifter.h"
+#include "blocks/div3_shift_add.h"
+#include "blocks/key_block.h"
+#include "blocks/mux.h"
+#include "blocks/shift_add_network.h"
+#include "blocks/shifter.h"
 
 using namespace shading;
 using sc_core::SC_NS;

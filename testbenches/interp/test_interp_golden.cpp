@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "interp_formats.h"
-#include "interp_golden.h"
-#include "interp_reference.h"
+#include "formats/interp_formats.h"
+#include "golden/interp_golden.h"
+#include "reference/interp_reference.h"
 
 using namespace shading;
 using namespace shading::interp;

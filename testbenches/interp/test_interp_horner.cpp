@@ -8,7 +8,7 @@
 #include "common/vcd_names.h"
 #include "common/sim_guard.h"
 #include "interp/interp_tb.h"
-#include "trace.h"
+#include "core/trace.h"
 
 using namespace shading;
 using namespace shading::tb;

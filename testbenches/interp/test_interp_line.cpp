@@ -12,7 +12,7 @@
 #include "common/vcd_names.h"
 #include "interp/interp_line.h"
 #include "interp/interp_line_bench.h"
-#include "trace.h"
+#include "core/trace.h"
 
 using namespace shading;
 using namespace shading::tb;

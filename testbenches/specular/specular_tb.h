@@ -18,11 +18,11 @@
 #include <systemc>
 #include <vector>
 
-#include "../src/brdf_reference.h"
-#include "../src/specular_formats.h"
-#include "../src/specular_golden.h"
-#include "../src/ua60553_formats.h"
-#include "report_ids.h"
+#include "reference/brdf_reference.h"
+#include "formats/specular_formats.h"
+#include "golden/specular_golden.h"
+#include "formats/ua60553_formats.h"
+#include "core/report_ids.h"
 
 namespace shading::tb {
 

@@ -20,13 +20,13 @@
 #include <string>
 #include <vector>
 
-#include "../src/brdf_reference.h"
-#include "../src/specular_formats.h"
-#include "../src/specular_golden.h"
-#include "../src/ua22802_formats.h"
-#include "../src/ua22802_golden.h"
-#include "../src/ua60553_formats.h"
-#include "../src/ua60553_tuned_golden.h"
+#include "reference/brdf_reference.h"
+#include "formats/specular_formats.h"
+#include "golden/specular_golden.h"
+#include "formats/ua22802_formats.h"
+#include "golden/ua22802_golden.h"
+#include "formats/ua60553_formats.h"
+#include "golden/ua60553_tuned_golden.h"
 #include "study_metrics.h"
 
 using namespace shading;

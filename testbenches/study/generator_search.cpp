@@ -4,9 +4,9 @@
 #include <bitset>
 #include <cstdlib>
 
-#include "../src/ua22802_formats.h"
-#include "../src/ua22802_golden.h"
-#include "../src/ua60553_formats.h"
+#include "formats/ua22802_formats.h"
+#include "golden/ua22802_golden.h"
+#include "formats/ua60553_formats.h"
 
 namespace shading::study {
 

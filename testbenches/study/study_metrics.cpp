@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "../src/brdf_reference.h"
-#include "../src/specular_formats.h"
-#include "../src/specular_golden.h"
+#include "reference/brdf_reference.h"
+#include "formats/specular_formats.h"
+#include "golden/specular_golden.h"
 
 namespace shading::study {
 

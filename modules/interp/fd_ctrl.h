@@ -1,0 +1,69 @@
+// Controller of the forward-difference evaluator (fd_eval.h): a clocked FSM on the rising edge.
+// Handshake (decision, see the README): `start` is a level "interval pending", sampled at rising
+// edges; an interval is accepted at an edge where start = 1 and the evaluator is idle (valid = 0)
+// or on its last pixel (last = 1). At acceptance it reads `len` (pixels of this interval, 1..N;
+// the last interval of a raster line may be shorter) and selects LOAD, so the registers take the
+// set-up values at the next falling edge: A..D must be stable from the acceptance edge to that
+// falling edge. Then STEP for len - 1 clocks, then HOLD. `valid` is high during each pixel's clock;
+// the pixel is on the output at the rising edge that ends it: pixel k at acceptance + (k+1) clocks.
+#pragma once
+
+#include <sstream>
+#include <systemc>
+
+#include "core/report_ids.h"
+
+namespace shading {
+
+template <unsigned M>
+class fd_ctrl : public sc_core::sc_module {
+public:
+    static constexpr unsigned n_pixels = 1u << M;
+    static constexpr unsigned sel_hold = 0, sel_load = 1, sel_step = 2;
+    using len_t = sc_dt::sc_uint<M + 1>;
+
+    sc_core::sc_in<bool> clk{"clk"};
+    sc_core::sc_in<bool> start{"start"};
+    sc_core::sc_in<len_t> len{"len"};
+    sc_core::sc_out<sc_dt::sc_uint<2>> fd_sel{"fd_sel"};
+    sc_core::sc_out<len_t> pixel{"pixel"};  // index k of the pixel on its way out
+    sc_core::sc_out<bool> valid{"valid"}, last{"last"};
+
+    SC_HAS_PROCESS(fd_ctrl);
+    explicit fd_ctrl(const sc_core::sc_module_name& name) : sc_module(name) {
+        SC_METHOD(on_clock);
+        sensitive << clk.pos();
+        dont_initialize();
+    }
+
+private:
+    void on_clock() {
+        unsigned sel = sel_hold;
+        if (start.read() && remaining_ <= 1) {
+            length_ = len.read().to_uint();
+            if (length_ == 0 || length_ > n_pixels) {
+                std::ostringstream os;
+                os << name() << ": len = " << length_ << " at " << sc_core::sc_time_stamp()
+                   << " is outside 1.." << n_pixels << "; a full interval of " << n_pixels
+                   << " pixels is evaluated";
+                SC_REPORT_WARNING(msg::input, os.str().c_str());
+                length_ = n_pixels;
+            }
+            remaining_ = length_;
+            sel = sel_load;
+        } else if (remaining_ > 1) {
+            --remaining_;
+            sel = sel_step;
+        } else {
+            remaining_ = 0;
+        }
+        fd_sel.write(sel);
+        pixel.write(remaining_ ? length_ - remaining_ : 0);
+        valid.write(remaining_ != 0);
+        last.write(remaining_ == 1);
+    }
+
+    unsigned remaining_ = 0, length_ = 0;
+};
+
+}  // namespace shading

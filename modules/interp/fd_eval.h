@@ -1,0 +1,144 @@
+// Forward-difference evaluator: the classic alternative to Horner for a cubic at equally spaced
+// t = k/N (N = 2^M pixels): after a set-up of shifts and adds,
+//   P <- P + D1,  D1 <- D1 + D2,  D2 <- D2 + D3        (three additions per pixel, no multiplier)
+// with P(0) = D, D1 = A/N^3 + B/N^2 + C/N, D2 = 6A/N^3 + 2B/N^2, D3 = 6A/N^3.
+// One pixel per clock. Set-up networks: shift_add_network (N = 2^M makes every /N^k a shift).
+// Registers rg_p, rg_d1, rg_d2, rg_d3 (reg.h, clocked by clk, latch on the falling edge), each fed
+// by a 3-input multiplexer: 0 hold (own output), 1 load (set-up), 2 step (the adder).
+// Formats (src/interp_formats.h): A..D Q16.16 signed in; set-up, registers and adders Q22.34
+// signed (fd_fmt): 34 = 16 + 3*6 fraction bits make the set-up exact for M <= 6, so P(k) is the
+// polynomial of the coefficient codes, exactly; the output drops 18 low wires (floor) -> Q16.16.
+// This class only instantiates and wires.
+#pragma once
+
+#include <algorithm>
+#include <systemc>
+#include <vector>
+
+#include "formats/interp_formats.h"
+#include "blocks/adder.h"
+#include "blocks/constant.h"
+#include "interp/fd_ctrl.h"
+#include "blocks/mux.h"
+#include "monitors/phase_checker.h"
+#include "blocks/reg.h"
+#include "blocks/shift_add_network.h"
+#include "blocks/shifter.h"
+
+namespace shading {
+
+template <unsigned M>
+class fd_eval : public sc_core::sc_module {
+    static_assert(M >= interp::m_min && M <= interp::m_max, "interval of 2^M pixels, M in 2..6");
+    static constexpr unsigned WC = interp::coef_fmt.width;  // 32
+    static constexpr unsigned WF = interp::fd_fmt.width;    // 56
+    static constexpr int S = interp::fd_fmt.frac - interp::coef_fmt.frac;  // 18: Q.16 -> Q.34
+    static constexpr int SM = static_cast<int>(M);
+    using coef_t = sc_dt::sc_uint<WC>;
+    using fd_t = sc_dt::sc_uint<WF>;
+
+public:
+    using len_t = typename fd_ctrl<M>::len_t;
+
+    sc_core::sc_in<bool> clk{"clk"};
+    sc_core::sc_in<bool> start{"start"};
+    sc_core::sc_in<len_t> len{"len"};
+    sc_core::sc_in<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
+    sc_core::sc_out<coef_t> i_px{"i_px"};
+    sc_core::sc_out<bool> valid{"valid"}, last{"last"};
+
+    // Nets.
+    sc_core::sc_signal<fd_t> init_p{"init_p"}, init_d1{"init_d1"}, init_d2{"init_d2"}, init_d3{"init_d3"};
+    sc_core::sc_signal<fd_t> p_value{"p_value"}, d1_value{"d1_value"}, d2_value{"d2_value"}, d3_value{"d3_value"};
+    sc_core::sc_signal<fd_t> p_next{"p_next"}, d1_next{"d1_next"}, d2_next{"d2_next"};
+    sc_core::sc_signal<fd_t> p_sum{"p_sum"}, d1_sum{"d1_sum"}, d2_sum{"d2_sum"}, d3_keep{"d3_keep"};
+    sc_core::sc_signal<sc_dt::sc_uint<2>> fd_sel{"fd_sel"};
+    sc_core::sc_signal<len_t> pixel{"pixel"};
+    sc_core::sc_signal<bool> carry0{"carry0"};
+
+    // Set-up: shifts and adds of the Q16.16 coefficients onto Q22.34 (inputs: 0 = A, 1 = B, 2 = C).
+    shifter<WC, WF, true> setup_p{"setup_p", S};  // D: Q16.16 -> Q22.34
+    shift_add_network<WC, WF, true> setup_d1{"setup_d1", 3,
+        {{0, S - 3 * SM, false}, {1, S - 2 * SM, false}, {2, S - SM, false}}};          // A/N^3 + B/N^2 + C/N
+    shift_add_network<WC, WF, true> setup_d2{"setup_d2", 2,
+        {{0, S - 3 * SM + 2, false}, {0, S - 3 * SM + 1, false}, {1, S - 2 * SM + 1, false}}};  // (4A + 2A)/N^3 + 2B/N^2
+    shift_add_network<WC, WF, true> setup_d3{"setup_d3", 1,
+        {{0, S - 3 * SM + 2, false}, {0, S - 3 * SM + 1, false}}};                      // (4A + 2A)/N^3
+
+    mux<WF, 3> mx_p{"mx_p"}, mx_d1{"mx_d1"}, mx_d2{"mx_d2"}, mx_d3{"mx_d3"};
+    reg<WF> rg_p{"rg_p"}, rg_d1{"rg_d1"}, rg_d2{"rg_d2"}, rg_d3{"rg_d3"};
+    adder<WF, WF, WF, true, true> add_p{"add_p"};    // Q22.34 + Q22.34 -> Q22.34
+    adder<WF, WF, WF, true, true> add_d1{"add_d1"};  // Q22.34 + Q22.34 -> Q22.34
+    adder<WF, WF, WF, true, true> add_d2{"add_d2"};  // Q22.34 + Q22.34 -> Q22.34
+    shifter<WF, WC, true> out_align{"out_align", -S};  // Q22.34 -> Q16.16, 18 low wires dropped (floor)
+    constant<bool> k_carry0{"k_carry0", false};
+    fd_ctrl<M> ctrl{"ctrl"};
+    // Assertion monitor (not hardware); requirements set in the constructor from the blocks'
+    // delays: see setup_to_rg() and rg_to_output().
+    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
+                            "high: A..D -> set-up network -> MX (load) and fd_sel -> MX -> register "
+                            "inputs before the falling edge; low: RG_P clock-to-output -> i_px before "
+                            "the rising edge"};
+
+    explicit fd_eval(const sc_core::sc_module_name& name) : sc_module(name) {
+        setup_p.x(d); setup_p.y(init_p);
+        setup_d1.in[0](a); setup_d1.in[1](b); setup_d1.in[2](c); setup_d1.y(init_d1);
+        setup_d2.in[0](a); setup_d2.in[1](b); setup_d2.y(init_d2);
+        setup_d3.in[0](a); setup_d3.y(init_d3);
+
+        k_carry0.y(carry0);
+        add_p.a(p_value); add_p.b(d1_value); add_p.cin(carry0); add_p.s(p_sum);
+        add_d1.a(d1_value); add_d1.b(d2_value); add_d1.cin(carry0); add_d1.s(d1_sum);
+        add_d2.a(d2_value); add_d2.b(d3_value); add_d2.cin(carry0); add_d2.s(d2_sum);
+
+        wire_mux(mx_p, p_value, init_p, p_sum, p_next);
+        wire_mux(mx_d1, d1_value, init_d1, d1_sum, d1_next);
+        wire_mux(mx_d2, d2_value, init_d2, d2_sum, d2_next);
+        wire_mux(mx_d3, d3_value, init_d3, d3_value, d3_keep);  // D3 is constant while stepping
+
+        rg_p.ctl(clk); rg_p.d(p_next); rg_p.q(p_value);
+        rg_d1.ctl(clk); rg_d1.d(d1_next); rg_d1.q(d1_value);
+        rg_d2.ctl(clk); rg_d2.d(d2_next); rg_d2.q(d2_value);
+        rg_d3.ctl(clk); rg_d3.d(d3_keep); rg_d3.q(d3_value);
+
+        out_align.x(p_value); out_align.y(i_px);
+        ctrl.clk(clk); ctrl.start(start); ctrl.len(len);
+        ctrl.fd_sel(fd_sel); ctrl.pixel(pixel); ctrl.valid(valid); ctrl.last(last);
+        chk_clock.clk(clk);
+        chk_clock.set_min_high(setup_to_rg());
+        // The recurrence RG -> ADD -> MX -> RG is launched and captured by falling edges: it may
+        // use both phases, so the low phase only has to make up what the high phase lacks.
+        const auto loop = std::max({rg_p.clk_to_q(), rg_d1.clk_to_q(), rg_d2.clk_to_q()}) +
+                          std::max({add_p.delay(), add_d1.delay(), add_d2.delay()}) +
+                          std::max({mx_p.delay(), mx_d1.delay(), mx_d2.delay()});
+        const auto rest = loop > setup_to_rg() ? loop - setup_to_rg() : sc_core::SC_ZERO_TIME;
+        chk_clock.set_min_low(std::max(rg_to_output(), rest));
+    }
+
+    // Slowest path launched by the rising edge into a register: the controller selects LOAD, and
+    // A..D may settle as late as that accepting edge (fd_ctrl: stable from it to the falling edge), so
+    // the set-up networks and the multiplexer must settle within the high phase. fd_sel -> MX
+    // alone (HOLD/STEP) is part of it.
+    sc_core::sc_time setup_to_rg() const {
+        return std::max({setup_d1.delay() + mx_d1.delay(), setup_d2.delay() + mx_d2.delay(),
+                         setup_d3.delay() + mx_d3.delay(), mx_p.delay()});  // setup_p is wiring
+    }
+    // RG_P's new value reaches i_px (out_align is wiring) before the rising edge where valid says
+    // the pixel is on the output.
+    sc_core::sc_time rg_to_output() const { return rg_p.clk_to_q(); }
+    // Shortest clock phases this unit works with (checked by chk_clock).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
+
+private:
+    void wire_mux(mux<WF, 3>& m, sc_core::sc_signal<fd_t>& hold, sc_core::sc_signal<fd_t>& load,
+                  sc_core::sc_signal<fd_t>& step, sc_core::sc_signal<fd_t>& out) {
+        m.in[fd_ctrl<M>::sel_hold](hold);
+        m.in[fd_ctrl<M>::sel_load](load);
+        m.in[fd_ctrl<M>::sel_step](step);
+        m.sel(fd_sel);
+        m.y(out);
+    }
+};
+
+}  // namespace shading

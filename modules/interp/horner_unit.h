@@ -1,0 +1,114 @@
+// Iterative Horner unit of seed 004, Fig. 4 (SPEC 5): I(t) = ((A t + B) t + C) t + D with one
+// register RG, multiplexers MX1 and MX2, one multiplier MUL, adder Sm and key block BK:
+//   MUL = MX1 * t,  MX1 in {A, RG};  Sm = MX2 + BK(RG),  MX2 in {0, MUL, B, C, D};  RG <- Sm.
+// The controller (horner_ctrl.h) runs one micro-step per clock: 6 clocks per cubic pixel,
+// 4 per quadratic one, back to back. RG is reg.h driven by the clock (latches on the falling
+// edge); while idle the controller selects MX2 = 0 with BK passing, so RG recirculates (a
+// load-enable built from the existing MX2 and BK instead of a gated clock).
+// Formats (src/interp_formats.h): A..D, RG, MX1, MX2, BK, Sm Q16.16 signed; t Q1.8 unsigned;
+// MUL Q16.16 x Q1.8 -> Q17.24, floor to Q16.16. This class only instantiates and wires.
+#pragma once
+
+#include <systemc>
+
+#include "formats/interp_formats.h"
+#include "blocks/adder.h"
+#include "blocks/constant.h"
+#include "interp/horner_ctrl.h"
+#include "blocks/key_block.h"
+#include "blocks/mul.h"
+#include "blocks/mux.h"
+#include "monitors/phase_checker.h"
+#include "blocks/reg.h"
+
+namespace shading {
+
+namespace horner_detail {
+// MUL of Fig. 4 (a type alias, so the instance can carry the figure's name `mul`).
+using mul_block = mul<interp::coef_fmt.width, interp::t_fmt.width, interp::coef_fmt.width,
+                      interp::horner_mul_drop, true, false>;
+}  // namespace horner_detail
+
+class horner_unit : public sc_core::sc_module {
+    static constexpr unsigned WC = interp::coef_fmt.width;  // 32
+    static constexpr unsigned WT = interp::t_fmt.width;     // 9
+    using coef_t = sc_dt::sc_uint<WC>;
+    using t_t = sc_dt::sc_uint<WT>;
+
+public:
+    sc_core::sc_in<bool> clk{"clk"};
+    sc_core::sc_in<bool> start{"start"};
+    sc_core::sc_in<bool> deg2{"deg2"};
+    sc_core::sc_in<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
+    sc_core::sc_in<t_t> t{"t"};
+    sc_core::sc_out<coef_t> i_t{"i_t"};
+    sc_core::sc_out<bool> done{"done"}, busy{"busy"};
+
+    // Nets, by what they carry.
+    sc_core::sc_signal<coef_t> rg_value{"rg_value"};        // RG: the partial Horner sum
+    sc_core::sc_signal<coef_t> mx1_operand{"mx1_operand"};  // A or RG
+    sc_core::sc_signal<coef_t> mul_product{"mul_product"};  // MX1 * t
+    sc_core::sc_signal<coef_t> mx2_operand{"mx2_operand"};  // 0, MUL, B, C or D
+    sc_core::sc_signal<coef_t> bk_operand{"bk_operand"};    // RG or 0
+    sc_core::sc_signal<coef_t> sm_sum{"sm_sum"};            // next RG
+    sc_core::sc_signal<coef_t> zero_word{"zero_word"};
+    sc_core::sc_signal<bool> carry0{"carry0"};
+    sc_core::sc_signal<sc_dt::sc_uint<1>> mx1_sel{"mx1_sel"};
+    sc_core::sc_signal<sc_dt::sc_uint<3>> mx2_sel{"mx2_sel"};
+    sc_core::sc_signal<bool> bk_pass{"bk_pass"};
+    sc_core::sc_signal<sc_dt::sc_uint<3>> step{"step"};
+
+    // Blocks of Fig. 4 (names from the figure) and the controller.
+    reg<WC> rg{"rg"};
+    mux<WC, 2> mx1{"mx1"};
+    horner_detail::mul_block mul{"mul"};  // Q16.16 x Q1.8 -> Q17.24, floor to Q16.16
+    mux<WC, 5> mx2{"mx2"};
+    key_block<WC> bk{"bk"};
+    adder<WC, WC, WC, true, true> sm{"sm"};  // Q16.16 + Q16.16 -> Q16.16, wraps
+    constant<coef_t> k_zero{"k_zero", coef_t(0)};
+    constant<bool> k_carry0{"k_carry0", false};
+    horner_ctrl ctrl{"ctrl"};
+    // Assertion monitor (not hardware). High phase: the selects and the inputs A..D, t (driven
+    // after the accepting rising edge, as the handshake allows) must reach RG before it latches.
+    // Low phase: RG's new value must be on i_t at the rising edge where done is read. The loop
+    // RG -> MX1 -> MUL -> MX2 -> Sm -> RG takes clk_to_q + select_to_rg = min_low + min_high, so
+    // the two phase checks cover it.
+    phase_checker chk_clock{"chk_clock", select_to_rg(), rg.clk_to_q(),
+                            "high: selects, A, t -> MX1 -> MUL -> MX2 -> Sm -> RG input before the "
+                            "falling edge; low: RG clock-to-output -> i_t before the rising edge"};
+
+    SC_HAS_PROCESS(horner_unit);
+    explicit horner_unit(const sc_core::sc_module_name& name) : sc_module(name) {
+        rg.ctl(clk); rg.d(sm_sum); rg.q(rg_value);
+        mx1.in[horner_ctrl::mx1_a](a); mx1.in[horner_ctrl::mx1_rg](rg_value);
+        mx1.sel(mx1_sel); mx1.y(mx1_operand);
+        mul.a(mx1_operand); mul.b(t); mul.p(mul_product);
+        k_zero.y(zero_word);
+        mx2.in[horner_ctrl::mx2_zero](zero_word); mx2.in[horner_ctrl::mx2_mul](mul_product);
+        mx2.in[horner_ctrl::mx2_b](b); mx2.in[horner_ctrl::mx2_c](c); mx2.in[horner_ctrl::mx2_d](d);
+        mx2.sel(mx2_sel); mx2.y(mx2_operand);
+        bk.x(rg_value); bk.pass(bk_pass); bk.y(bk_operand);
+        k_carry0.y(carry0);
+        sm.a(mx2_operand); sm.b(bk_operand); sm.cin(carry0); sm.s(sm_sum);
+        ctrl.clk(clk); ctrl.start(start); ctrl.deg2(deg2); ctrl.t(t);
+        ctrl.mx1_sel(mx1_sel); ctrl.mx2_sel(mx2_sel); ctrl.bk_pass(bk_pass); ctrl.step(step);
+        ctrl.done(done); ctrl.busy(busy);
+        chk_clock.clk(clk);
+        SC_METHOD(wire_out);  // RG's output is the unit's output: a zero-delay wire
+        sensitive << rg_value;
+    }
+
+    // Slowest path into RG within a step: the selects change on the rising edge, RG latches on
+    // the falling edge half a period later.
+    sc_core::sc_time select_to_rg() const {
+        return mx1.delay() + mul.delay() + mx2.delay() + sm.delay();
+    }
+    // Shortest clock phases this unit works with (checked by chk_clock).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
+
+private:
+    void wire_out() { i_t.write(rg_value.read()); }
+};
+
+}  // namespace shading

@@ -1,0 +1,100 @@
+// Raster-line interpolator of seed 004 (SPEC 1.5): per interval of N = 2^M pixels the exact
+// intensities I1..I4 go in, the cubic coefficient unit forms A..D with shifts and adds, and the
+// forward-difference evaluator emits one pixel per clock. A device top: it only instantiates and
+// wires coef_unit_cubic<SET, DIV> -> fd_eval<M> and the ready gate; no arithmetic here.
+//
+// Handshake and timing (decisions; seed 004 leaves them open, SPEC 6). Clock period T; the source
+// changes i1..i4, len and start only just after rising edges.
+// - start is a level, "interval pending": I1..I4 and len (1..N pixels; the last interval of a line
+//   may be shorter) are on the inputs. It is accepted at a rising edge where start = 1 and
+//   ready = 1 (ready = NOT valid OR last: the evaluator is idle or on its last pixel); the source
+//   may present the next interval right after that edge.
+// - Samples: coef.rg_i1..4 latch the inputs at every falling edge (no enable: they are the
+//   pipeline register between the source and the evaluator). The samples on the inputs at the
+//   accepting edge E have been there since a rising edge before it, so they were latched at
+//   E - T/2; A..D settle within that low phase and stay until rg_i change after E + T/2, the falling
+//   edge where the evaluator's registers load their set-up values (rg_i's clock-to-output is the
+//   hold margin: the set-up inputs move only after that edge).
+// - Latency: samples presented just after edge E0 to an idle unit are accepted at E0 + T; pixel 0 is
+//   on i_px with valid = 1 at E0 + 2T, pixel k at E0 + (k + 2) T (k + 1 clocks after acceptance).
+// - Throughput: the next interval's samples are latched at E + T/2 while the current interval's
+//   pixels go out, and it is accepted at the edge of the current last pixel: one pixel per clock,
+//   no bubble between intervals. A line of W pixels: W + 1 clocks from its first samples to its
+//   last pixel.
+// Formats (src/interp_formats.h): I1..I4 Q8.8 unsigned; A..D Q16.16 signed; pixels Q16.16 signed.
+#pragma once
+
+#include <algorithm>
+#include <systemc>
+
+#include "formats/interp_formats.h"
+#include "interp/coef_unit_cubic.h"
+#include "interp/fd_eval.h"
+#include "blocks/interval_ready.h"
+
+namespace shading {
+
+template <unsigned M, interp::sample_set SET, interp::div3_mode DIV>
+class interp_line_unit : public sc_core::sc_module {
+    using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
+    using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
+
+public:
+    using len_t = typename fd_eval<M>::len_t;
+    static constexpr unsigned n_pixels = 1u << M;
+
+    sc_core::sc_in<bool> clk{"clk"};
+    sc_core::sc_in<bool> start{"start"};                       // interval pending
+    sc_core::sc_in<len_t> len{"len"};                          // pixels of this interval, 1..N
+    sc_core::sc_in<sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};  // Q8.8 samples
+    sc_core::sc_out<coef_t> i_px{"i_px"};                      // Q16.16 pixel
+    sc_core::sc_out<bool> valid{"valid"}, last{"last"};        // pixel on i_px; last of its interval
+    sc_core::sc_out<bool> ready{"ready"};                      // start is taken at the next rising edge
+
+    // Nets between the units: the coefficients, Q16.16 signed.
+    sc_core::sc_signal<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
+
+    coef_unit_cubic<SET, DIV> coef{"coef"};  // I1..I4 (Q8.8) -> A..D (Q16.16), latency 1 clock
+    fd_eval<M> fd{"fd"};                     // A..D (Q16.16) -> one Q16.16 pixel per clock
+    interval_ready rdy{"rdy"};               // NOT valid OR last
+
+    explicit interp_line_unit(const sc_core::sc_module_name& name) : sc_module(name) {
+        coef.clk(clk);
+        coef.i1(i1); coef.i2(i2); coef.i3(i3); coef.i4(i4);
+        coef.a(a); coef.b(b); coef.c(c); coef.d(d);
+        fd.clk(clk); fd.start(start); fd.len(len);
+        fd.a(a); fd.b(b); fd.c(c); fd.d(d);
+        fd.i_px(i_px); fd.valid(valid); fd.last(last);
+        rdy.valid(valid); rdy.last(last); rdy.ready(ready);
+    }
+
+    // The path that crosses the units: launched by the falling edge that latches the samples
+    // (rg_i clock-to-output -> network -> /3 -> A..D) and captured by the next falling edge in the
+    // evaluator's registers (-> set-up network -> MX), per coefficient and its consumers. It spans
+    // the low phase and then the high phase, so no phase holds it alone: coef's chk_clock holds its
+    // first part in the low phase (A..D before the rising edge) and fd's chk_clock the rest in the
+    // high phase (set-up from A..D settling as late as the accepting edge). Those two checks cover
+    // it (sample_to_load() <= min_low() + min_high(), tested), so the top needs no checker of its
+    // own; with a long enough period the path fits even when the low phase alone is short.
+    sc_core::sc_time sample_to_load() const {
+        const auto q = std::max({coef.rg_i1.clk_to_q(), coef.rg_i2.clk_to_q(), coef.rg_i3.clk_to_q(),
+                                 coef.rg_i4.clk_to_q()});
+        const auto at_a = q + coef.net_a.delay() + coef.div3_a.delay();
+        const auto at_b = q + coef.net_b.delay();  // align_b: wiring
+        const auto at_c = q + coef.net_c.delay() + coef.div3_c.delay();
+        const auto at_d = q;                       // D = I1 through align_d: wiring
+        const auto via_d1 = fd.setup_d1.delay() + fd.mx_d1.delay();  // A, B, C
+        const auto via_d2 = fd.setup_d2.delay() + fd.mx_d2.delay();  // A, B
+        const auto via_d3 = fd.setup_d3.delay() + fd.mx_d3.delay();  // A
+        const auto via_p = fd.mx_p.delay();                          // D (setup_p: wiring)
+        return std::max({at_a + std::max({via_d1, via_d2, via_d3}), at_b + std::max(via_d1, via_d2),
+                         at_c + via_d1, at_d + via_p});
+    }
+    // Shortest clock phases the joined unit works with: each unit's own requirement (their
+    // chk_clock monitors check them; see sample_to_load() for the path between them).
+    sc_core::sc_time min_high() const { return std::max(coef.min_high(), fd.min_high()); }
+    sc_core::sc_time min_low() const { return std::max(coef.min_low(), fd.min_low()); }
+    unsigned phase_violations() const { return coef.chk_clock.violations() + fd.chk_clock.violations(); }
+};
+
+}  // namespace shading

@@ -1,0 +1,62 @@
+// Number formats of seed 004's interpolation hardware (SPEC sections 1.5 and 5): the coefficient
+// units, the iterative Horner unit and the forward-difference evaluator. One table, used by the
+// golden models (src/interp_golden.*), the modules' template widths and the README.
+// Notation: Qi.f = i integer bits (sign included when signed), f fraction bits.
+#pragma once
+
+#include <cstdint>
+
+#include "formats/fixed_point.h"
+
+namespace shading::interp {
+
+// SPEC 1.5: case 1 samples at t = 0, 1/4, 1/2, 1 (the seed's preferred case); case 2 at
+// t = 0, 1/2, 3/4, 1.
+enum class sample_set { case1, case2 };
+// x/3 as seed 004's shift-and-add x*(1/2 - 1/8 - 1/32 - 1/128) = x * 43/128 (Fig. 2), or exact
+// (floor onto Q.16) so the two can be compared.
+enum class div3_mode { shift_add, exact };
+
+// I1..I4: exact intensities at the sample points, unsigned Q8.8: the 8-bit colour range 0..255
+// with 8 fraction bits, so a shading unit's rounding is not the interpolation's error floor.
+inline constexpr qfmt sample_fmt{16, false, 8};
+
+// Output of a coefficient unit's shift-and-add network (before any division by 3): a signed sum
+// of shifted samples, Q16.8. Every weight is an integer, so the sum is exact. The largest
+// magnitude of any network is 8*(3+6)*Imax = 72*Imax (case 1, 8*(-3I1+8I2-6I3+I4) with I2 = I4 = 0)
+// < 72*256 = 18432 < 2^15: 16 integer bits incl. sign never wrap.
+inline constexpr qfmt sum_fmt{24, true, 8};
+
+// A, B, C, D (and a, b, c): signed Q16.16, one format for every coefficient so the Horner unit and
+// the forward-difference set-up read them all alike.
+// Bounds (|I| < 256): case 1 |A| <= 24 Imax, |B| <= 34 Imax, |C| <= 11 Imax; case 2 |A| <= 24 Imax,
+// |B| <= 38 Imax, |C| <= 15 Imax; quadratic |a| <= 4 Imax, |b| <= 4 Imax: all < 9728 < 2^15.
+// 16 fraction bits hold x/3 by the seed's shift-and-add exactly: a Q.8 operand times
+// 1/2 - 1/8 - 1/32 - 1/128 has at most 8 + 7 = 15 fraction bits.
+inline constexpr qfmt coef_fmt{32, true, 16};
+inline constexpr unsigned div3_shift = coef_fmt.frac - sum_fmt.frac;  // 8: Q.8 -> Q.16
+
+// t: unsigned Q1.8, t = k / 2^m exactly for m <= 8; 1.0 = 256. Codes above 256 (t > 1) are
+// extrapolation: reported (shading/input) and evaluated as given, with the wraps below.
+inline constexpr qfmt t_fmt{9, false, 8};
+inline constexpr uint64_t t_one = 1ull << t_fmt.frac;
+
+// Horner MUL = MX1 * t: Q16.16 signed x Q1.8 unsigned -> Q17.24 exact, 8 low wires dropped
+// (floor) and the top wire dropped -> Q16.16. With t <= 1, |MX1 * t| <= |MX1|: never wraps.
+inline constexpr unsigned horner_mul_drop = t_fmt.frac;
+// Horner RG, MX1, MX2, BK and Sm: all coef_fmt. With in-range inputs every partial sum is
+// bounded by |A| + |B| + |C| + |D| <= (24 + 38 + 15 + 1) * 256 < 2^15: Sm never wraps.
+inline constexpr qfmt horner_fmt = coef_fmt;
+
+// Interval length: N = 2^m pixels, t = k / N for pixel k = 0..N-1. Sample points t = 1/4, 1/2,
+// 3/4 fall on pixel centres for m >= 2. The forward-difference evaluator supports m <= 6.
+inline constexpr unsigned m_min = 2;
+inline constexpr unsigned m_max = 6;
+
+// Forward differences: P, D1, D2, D3 registers, signed Q22.34 on 56 wires. 34 = 16 + 3*m_max
+// fraction bits make the set-up (A/N^3, B/N^2, C/N, shifts of Q16.16 codes) exact for every
+// m <= m_max, so the recurrence accumulates no error at all. 22 integer bits: |D2| <= 6|A| + 2|B|
+// <= 220 * 256 < 2^16, and P stays within |A|+|B|+|C|+|D| < 2^15 for k <= N (t <= 1).
+inline constexpr qfmt fd_fmt{56, true, 34};
+
+}  // namespace shading::interp

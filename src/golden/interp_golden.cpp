@@ -1,0 +1,132 @@
+#include "golden/interp_golden.h"
+
+namespace shading::interp {
+
+namespace {
+
+int64_t floor_div(int64_t a, int64_t b) {  // b > 0
+    const int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+// Value of a coef_fmt bus.
+int64_t coef_value(uint64_t bits) { return code_value(bits, coef_fmt); }
+uint64_t coef_bits(int64_t v) { return wrap_bits(v, coef_fmt.width); }
+
+// Horner MUL: Q16.16 x Q1.8 -> Q17.24, 8 low wires dropped (floor), kept on the coef_fmt bus.
+uint64_t horner_mul(uint64_t x_bits, uint64_t t_code) {
+    const __int128 p = static_cast<__int128>(coef_value(x_bits)) * static_cast<__int128>(t_code);
+    return coef_bits(floor_shift(p, horner_mul_drop));
+}
+// Horner Sm: Q16.16 + Q16.16 -> Q16.16, two's-complement wrap.
+uint64_t horner_add(uint64_t a_bits, uint64_t b_bits) {
+    return coef_bits(coef_value(a_bits) + coef_value(b_bits));
+}
+
+// A term v * 2^sh of the forward-difference set-up on a `frac`-bit bus: shifted up exactly, or
+// shifted down with its low wires dropped (floor).
+int64_t aligned(int64_t v, int sh) {
+    return sh >= 0 ? static_cast<int64_t>(static_cast<uint64_t>(v) << sh) : floor_shift(v, static_cast<unsigned>(-sh));
+}
+int64_t fd_wrap(int64_t v) { return code_value(wrap_bits(v, fd_fmt.width), fd_fmt); }
+
+}  // namespace
+
+int64_t golden_div3(int64_t x_q8, div3_mode mode) {
+    if (mode == div3_mode::exact) return floor_div(x_q8 * (1 << div3_shift), 3);
+    // x/2 - x/8 - x/32 - x/128 aligned to Q.16: x<<7 - x<<5 - x<<3 - x<<1 = 86 x (exact).
+    return x_q8 * 128 - x_q8 * 32 - x_q8 * 8 - x_q8 * 2;
+}
+
+cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& in, sample_set set, div3_mode mode) {
+    const int64_t i1 = static_cast<int64_t>(in[0] & sample_fmt.mask());
+    const int64_t i2 = static_cast<int64_t>(in[1] & sample_fmt.mask());
+    const int64_t i3 = static_cast<int64_t>(in[2] & sample_fmt.mask());
+    const int64_t i4 = static_cast<int64_t>(in[3] & sample_fmt.mask());
+    int64_t a8 = 0, b = 0, c3 = 0;  // 8*(-S_A), B, -S_C: Q.8 codes
+    if (set == sample_set::case1) {
+        a8 = -24 * i1 + 64 * i2 - 48 * i3 + 8 * i4;  // A = -8(3I1 - 8I2 + 6I3 - I4)/3
+        b = 14 * i1 - 32 * i2 + 20 * i3 - 2 * i4;    // B = 2(7I1 - 16I2 + 10I3 - I4)
+        c3 = -21 * i1 + 32 * i2 - 12 * i3 + i4;      // C = -(21I1 - 32I2 + 12I3 - I4)/3
+    } else {
+        a8 = -8 * i1 + 48 * i2 - 64 * i3 + 24 * i4;  // A = -8(I1 - 6I2 + 8I3 - 3I4)/3
+        b = 6 * i1 - 28 * i2 + 32 * i3 - 10 * i4;    // B = 2(3I1 - 14I2 + 16I3 - 5I4)
+        c3 = -13 * i1 + 36 * i2 - 32 * i3 + 9 * i4;  // C = -(13I1 - 36I2 + 32I3 - 9I4)/3
+    }
+    cubic_coefs k;
+    k.a = golden_div3(a8, mode);
+    k.b = b * (1 << div3_shift);
+    k.c = golden_div3(c3, mode);
+    k.d = i1 * (1 << div3_shift);
+    return k;
+}
+
+cubic_coefs golden_quad_coefs(const std::array<uint64_t, 3>& in) {
+    const int64_t i1 = static_cast<int64_t>(in[0] & sample_fmt.mask());
+    const int64_t i2 = static_cast<int64_t>(in[1] & sample_fmt.mask());
+    const int64_t i3 = static_cast<int64_t>(in[2] & sample_fmt.mask());
+    cubic_coefs k;
+    k.a = (2 * i1 - 4 * i2 + 2 * i3) * (1 << div3_shift);
+    k.b = (-3 * i1 + 4 * i2 - i3) * (1 << div3_shift);
+    k.c = i1 * (1 << div3_shift);
+    return k;
+}
+
+std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code, bool degree2) {
+    const uint64_t t = t_code & t_fmt.mask();
+    std::vector<uint64_t> rg;
+    rg.push_back(coef_bits(k.b));                                   // 1: RG <- B
+    rg.push_back(horner_add(horner_mul(coef_bits(k.a), t), rg.back()));  // 2: A t + B
+    rg.push_back(horner_mul(rg.back(), t));                         // 3: (A t + B) t
+    rg.push_back(horner_add(coef_bits(k.c), rg.back()));            // 4: + C
+    if (degree2) return rg;
+    rg.push_back(horner_mul(rg.back(), t));                         // 5: * t
+    rg.push_back(horner_add(coef_bits(k.d), rg.back()));            // 6: + D
+    return rg;
+}
+
+fd_setup golden_fd_setup(const cubic_coefs& k, unsigned m, int frac) {
+    const int s = frac - coef_fmt.frac;  // alignment of a Q.16 code onto the FD bus
+    const int sm = static_cast<int>(m);
+    fd_setup r;
+    r.p = aligned(k.d, s);
+    // D3 = 6 A / N^3 = (4A + 2A) / N^3; D2 = 6 A / N^3 + 2 B / N^2; D1 = A/N^3 + B/N^2 + C/N.
+    r.d3 = fd_wrap(aligned(k.a, s - 3 * sm + 2) + aligned(k.a, s - 3 * sm + 1));
+    r.d2 = fd_wrap(aligned(k.a, s - 3 * sm + 2) + aligned(k.a, s - 3 * sm + 1) + aligned(k.b, s - 2 * sm + 1));
+    r.d1 = fd_wrap(aligned(k.a, s - 3 * sm) + aligned(k.b, s - 2 * sm) + aligned(k.c, s - sm));
+    return r;
+}
+
+std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac) {
+    fd_setup r = golden_fd_setup(k, m, frac);
+    const unsigned drop = static_cast<unsigned>(frac - coef_fmt.frac);
+    std::vector<uint64_t> out;
+    for (unsigned i = 0; i < len; ++i) {
+        out.push_back(coef_bits(floor_shift(r.p, drop)));
+        r.p = fd_wrap(r.p + r.d1);
+        r.d1 = fd_wrap(r.d1 + r.d2);
+        r.d2 = fd_wrap(r.d2 + r.d3);
+    }
+    return out;
+}
+
+std::vector<uint64_t> golden_interp_line(const std::vector<interval_samples>& intervals, unsigned m,
+                                         sample_set set, div3_mode mode) {
+    const unsigned n = 1u << m;
+    std::vector<uint64_t> out;
+    for (const auto& iv : intervals) {
+        const unsigned len = (iv.len == 0 || iv.len > n) ? n : iv.len;
+        const auto px = golden_fd(golden_cubic_coefs(iv.i, set, mode), m, len);
+        out.insert(out.end(), px.begin(), px.end());
+    }
+    return out;
+}
+
+double fd_error_bound(unsigned k, unsigned m, int frac) {
+    if (frac >= coef_fmt.frac + 3 * static_cast<int>(m)) return 0.0;
+    const double kk = k;
+    const double c2 = kk * (kk - 1) / 2, c3 = kk * (kk - 1) * (kk - 2) / 6;
+    return (3 * kk + 3 * c2 + 2 * c3) / static_cast<double>(1ull << frac);
+}
+
+}  // namespace shading::interp

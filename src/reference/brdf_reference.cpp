@@ -1,0 +1,32 @@
+#include "reference/brdf_reference.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shading::ref {
+
+double cos_pow(double c, double n) { return std::pow(c, n); }
+
+double a_exact(double n) {
+    if (n <= 1.0) return 0.0;  // n = 1: cos^1 is the line itself
+    const double t = std::sqrt((n - 1.0) / n);
+    return (std::pow(t, n - 1.0) - 1.0) / (t - 1.0);
+}
+
+double a_patent_formula(double n) { return 0.786 * n + 0.5; }
+
+double quadratic(double c, double a) { return c + a * (c * c - c); }
+
+double schlick(double c, double n) { return c / (n - n * c + c); }
+
+double cos_k_gamma(double c, double n, double k) {
+    const double kg = k * std::acos(std::clamp(c, -1.0, 1.0));
+    if (kg >= M_PI / 2) return 0.0;
+    return std::pow(std::cos(kg), n / k);
+}
+
+double real_datapath_out(double a, double c, double ksi) {
+    return std::clamp(quadratic(c, a), 0.0, 1.0) * ksi;
+}
+
+}  // namespace shading::ref

@@ -1,0 +1,161 @@
+// UA 22802 device (SystemC) against its golden model, bit for bit, through the shared specular
+// bench (testbenches/specular/specular_tb.h). One elaboration per test (each runs in its own
+// process under gtest_discover_tests).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <memory>
+#include <random>
+#include <set>
+#include <string>
+
+#include "common/report_log.h"
+#include "common/vcd_names.h"
+#include "common/sim_guard.h"
+#include "specular/specular_tb.h"
+#include "core/trace.h"
+#include "ua22802/ua22802.h"
+#include "golden/ua22802_golden.h"
+#include "ua60553/ua60553.h"
+
+using namespace shading;
+using namespace shading::tb;
+using sc_core::SC_MS;
+using sc_core::sc_time;
+
+namespace {
+specular_checker::golden_fn golden(overflow_mode mode) {
+    return [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        return golden_ua22802(n, c, k, mode);
+    };
+}
+std::vector<uint32_t> all_cos_codes() {
+    std::vector<uint32_t> v;
+    for (uint32_t c = 0; c <= spec::cos_one; ++c) v.push_back(c);
+    return v;
+}
+std::vector<uint32_t> random_codes(std::mt19937& rng, std::size_t k, uint32_t hi) {
+    std::uniform_int_distribution<uint32_t> d(0, hi);
+    std::vector<uint32_t> v{0, spec::cos_one};
+    while (v.size() < k) v.push_back(d(rng));
+    return v;
+}
+}  // namespace
+
+TEST(UA22802, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
+    const std::vector<unsigned> ns{1, 2, 3, 512, 1000};
+    std::vector<surface> s;
+    for (unsigned n : ns) s.push_back({n, {255, 170, 3}, all_cos_codes()});
+    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
+    ASSERT_TRUE(run_to_completion(bench, sc_time(1000, SC_MS)));
+    EXPECT_EQ(bench.checker.samples(), ns.size() * (spec::cos_one + 1));
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    for (unsigned n : ns) {
+        const auto& st = bench.checker.stats().at(n);
+        EXPECT_GT(st.rel_err_points, 0u);
+        // Seed 001: <= 4 % above 0.56. n = 1 and n = 2 are exact in the model: only the output's
+        // Q9.8 floor remains (1/256 of 255*0.56 is 2.7e-5 relative).
+        EXPECT_LT(st.max_rel_err_056, n <= 2 ? 1e-4 : 0.04) << "n = " << n;
+    }
+    // The ROM word on net a_coef is the last surface's a(1000).
+    EXPECT_EQ(bench.dut.a_coef.read().to_uint64(), golden_a_rom(1000));
+}
+
+TEST(UA22802, EveryAddressIncludingOutOfRangeN) {
+    // n = 0 and n = 1001..1023 are reported (shading/input) and read their documented words.
+    report_log::get().expect(msg::input);
+    const unsigned before = report_log::get().count(msg::input);
+    std::mt19937 rng(22802);
+    std::vector<surface> s;
+    for (unsigned n = 0; n < 1024; ++n) s.push_back({n, {255, 17, 96}, random_codes(rng, 12, spec::cos_one)});
+    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
+    ASSERT_TRUE(run_to_completion(bench, sc_time(1000, SC_MS)));
+    EXPECT_EQ(bench.checker.samples(), 1024u * 12u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::input) - before, 1u + 23u) << "n = 0 and 1001..1023";
+    EXPECT_EQ(bench.dut.chk_in16_n.violations(), 24u);
+}
+
+TEST(UA22802, WrapModeAndCosAboveOneMatchGolden) {
+    // Wrap mode: q < 0 for a > 1 below (a-1)/a is passed on as two's-complement bits; cos codes
+    // above 0x8000 are reported and pass through the datapath unchanged.
+    report_log::get().expect(msg::input);
+    const unsigned before = report_log::get().count(msg::input);
+    std::mt19937 rng(60553);
+    std::vector<surface> s;
+    for (unsigned n : {2u, 7u, 100u, 1000u}) s.push_back({n, {255, 255, 255}, random_codes(rng, 3000, 0xffff)});
+    std::size_t above = 0;
+    for (const auto& sf : s)
+        for (uint32_t c : sf.cos_codes) above += c > spec::cos_one;
+    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::wrap),
+                                         overflow_mode::wrap);
+    ASSERT_TRUE(run_to_completion(bench, sc_time(1000, SC_MS)));
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::input) - before, above);
+}
+
+TEST(UA22802, SameTimingAsUa60553AndShortStrobesAreReported) {
+    // Both devices in one elaboration: the RG2 path (per pixel) and the RG1 path (per surface)
+    // are the same, so the same strobe timing serves both.
+    report_log::get().expect(msg::timing);
+    report_log::get().expect(msg::mismatch);  // outputs sampled before they settle
+    const unsigned before = report_log::get().count(msg::timing);
+    device_ua60553 ref60553("ref60553");
+    std::vector<surface> s{{300, {200, 100, 50}, {0x7000, 0x7800, 0x8000}}};
+    strobe_timing t;
+    t.t_low = sc_time(8, sc_core::SC_NS);  // RG2 -> outputs takes 0.2 + 3 + 1 + 3 + 1 + 3 = 11.2 ns
+    specular_bench<device_ua22802> bench("tb", s, t, golden(overflow_mode::saturate));
+    EXPECT_EQ(bench.dut.chk_timing.path(0), ref60553.chk_timing.path(0));
+    EXPECT_EQ(bench.dut.chk_timing.path(1), ref60553.chk_timing.path(1));
+    EXPECT_EQ(bench.dut.chk_timing.path(1), sc_time(11.2, sc_core::SC_NS));
+    // ref60553 is not wired into a bench; its unbound ports would stop elaboration, so bind them.
+    sc_core::sc_signal<bool> b[6];
+    sc_core::sc_signal<n_t> n;
+    sc_core::sc_signal<cos_t> c;
+    sc_core::sc_signal<ksi_t> k[3];
+    sc_core::sc_signal<out_t> o[3];
+    ref60553.ctl15(b[0]); ref60553.ctl17(b[1]); ref60553.ctl20(b[2]); ref60553.ctl22(b[3]);
+    ref60553.ctl24(b[4]); ref60553.out29_valid(b[5]); ref60553.in16_n(n); ref60553.in18_cos(c);
+    ref60553.in19_ksi_r(k[0]); ref60553.in21_ksi_g(k[1]); ref60553.in23_ksi_b(k[2]);
+    ref60553.out25_r(o[0]); ref60553.out26_g(o[1]); ref60553.out27_b(o[2]);
+    ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
+    EXPECT_EQ(bench.dut.chk_timing.violations(), 3u) << "every pixel's strobe is too short";
+    EXPECT_EQ(report_log::get().count(msg::timing) - before, 3u);
+    EXPECT_GE(bench.checker.mismatches(), 1u) << "unsettled outputs differ from the golden model";
+}
+
+TEST(UA22802, CheckerCatchesAWrongGoldenModel) {
+    // Negative test: the UA 60553 golden (patent a = 0.789 n + 0.5) differs from the ROM device.
+    report_log::get().expect(msg::mismatch);
+    std::vector<surface> s{{10, {255, 255, 255}, {0x7000, 0x7800, 0x7c00}}};
+    specular_bench<device_ua22802> bench(
+        "tb", s, strobe_timing{},
+        [](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+            return golden_ua60553(n, c, k, overflow_mode::saturate);
+        });
+    ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
+    EXPECT_EQ(bench.checker.mismatches(), 3u);
+    EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
+}
+
+TEST(UA22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
+    // traces/ua22802.gtkw is hand-written: every signal it lists must exist in the VCD the bench
+    // writes (scope path + name + [msb:0]), or GTKWave silently drops it.
+    const std::string vcd_base = ::testing::TempDir() + "ua22802_names";
+    std::vector<surface> s{{5, {1, 2, 3}, {0x7000}}};
+    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
+    {
+        auto tf = std::make_unique<vcd_file>(vcd_base);
+        tf->trace(bench);
+        ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
+    }
+    const auto traced = vcd_declared(vcd_base + ".vcd");
+    ASSERT_GT(traced.size(), 20u);
+    const auto shown = gtkw_listed(source_path("traces/ua22802.gtkw"));
+    std::size_t listed = 0;
+    for (const auto& line : shown) {
+        ++listed;
+        EXPECT_TRUE(traced.count(line)) << line << " is not in the VCD";
+    }
+    EXPECT_EQ(listed, 27u);
+}
