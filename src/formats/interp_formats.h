@@ -16,6 +16,13 @@ enum class sample_set { case1, case2 };
 // x/3 as seed 004's shift-and-add x*(1/2 - 1/8 - 1/32 - 1/128) = x * 43/128 (Fig. 2), or exact
 // (floor onto Q.16) so the two can be compared.
 enum class div3_mode { shift_add, exact };
+// Where the /3 of A and C is applied. whole_sum: on the whole weighted sum, A = (-24I1 + 64I2 -
+// 48I3 + 8I4)/3 (this model's default). partial_sum: as seed 004 prints it, on the part whose
+// weights are not multiples of 3 only, the rest added as integers: case 1 A = 8(8I2 + I4)/3 -
+// 8(I1 + 2I3), C = (32I2 + I4)/3 - 7I1 - 4I3; case 2 (solved system; the seed's Fig. 2 text is
+// silent, its printed subscripts swap I3 and I4) A = 8(2I2 + I4) - 8(I1 + 8I3)/3,
+// C = 3(4I2 + I4) - (13I1 + 32I3)/3.
+enum class div3_grouping { whole_sum, partial_sum };
 
 // I1..I4: exact intensities at the sample points, unsigned Q8.8: the 8-bit colour range 0..255
 // with 8 fraction bits, so a shading unit's rounding is not the interpolation's error floor.
@@ -26,6 +33,8 @@ inline constexpr qfmt sample_fmt{16, false, 8};
 // magnitude of any network is 8*(3+6)*Imax = 72*Imax (case 1, 8*(-3I1+8I2-6I3+I4) with I2 = I4 = 0)
 // < 72*256 = 18432 < 2^15: 16 integer bits incl. sign never wrap.
 inline constexpr qfmt sum_fmt{24, true, 8};
+// The partial-sum grouping's networks (the divided part and the integer part) are sums of the same
+// kind, each at most 72*Imax (case 1 A's 64I2 + 8I4, case 2 A's 8I1 + 64I3): sum_fmt holds them.
 
 // A, B, C, D (and a, b, c): signed Q16.16, one format for every coefficient so the Horner unit and
 // the forward-difference set-up read them all alike.
@@ -47,6 +56,19 @@ inline constexpr unsigned horner_mul_drop = t_fmt.frac;
 // Horner RG, MX1, MX2, BK and Sm: all coef_fmt. With in-range inputs every partial sum is
 // bounded by |A| + |B| + |C| + |D| <= (24 + 38 + 15 + 1) * 256 < 2^15: Sm never wraps.
 inline constexpr qfmt horner_fmt = coef_fmt;
+
+// Control buses (seed 004 leaves the controllers open): each as wide as the codes it carries.
+constexpr unsigned code_width(unsigned codes) {
+    unsigned w = 1;
+    while ((1u << w) < codes) ++w;
+    return w;
+}
+inline constexpr unsigned horner_mx1_inputs = 2;  // MX1: A, RG
+inline constexpr unsigned horner_mx2_inputs = 5;  // MX2: 0, MUL, B, C, D
+inline constexpr unsigned horner_step_codes = 7;  // step: 0 idle, 1..6 the cubic's micro-steps
+inline constexpr unsigned fd_mx_inputs = 3;       // forward differences' MX: hold, load, step
+// len and pixel of an interval of 2^m pixels: 1..2^m needs m + 1 wires.
+constexpr unsigned len_width(unsigned m) { return m + 1; }
 
 // Interval length: N = 2^m pixels, t = k / N for pixel k = 0..N-1. Sample points t = 1/4, 1/2,
 // 3/4 fall on pixel centres for m >= 2. The forward-difference evaluator supports m <= 6.

@@ -38,7 +38,8 @@ int64_t golden_div3(int64_t x_q8, div3_mode mode) {
     return x_q8 * 128 - x_q8 * 32 - x_q8 * 8 - x_q8 * 2;
 }
 
-cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& in, sample_set set, div3_mode mode) {
+cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& in, sample_set set, div3_mode mode,
+                               div3_grouping grouping) {
     const int64_t i1 = static_cast<int64_t>(in[0] & sample_fmt.mask());
     const int64_t i2 = static_cast<int64_t>(in[1] & sample_fmt.mask());
     const int64_t i3 = static_cast<int64_t>(in[2] & sample_fmt.mask());
@@ -54,10 +55,23 @@ cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& in, sample_set set
         c3 = -13 * i1 + 36 * i2 - 32 * i3 + 9 * i4;  // C = -(13I1 - 36I2 + 32I3 - 9I4)/3
     }
     cubic_coefs k;
-    k.a = golden_div3(a8, mode);
     k.b = b * (1 << div3_shift);
-    k.c = golden_div3(c3, mode);
     k.d = i1 * (1 << div3_shift);
+    if (grouping == div3_grouping::whole_sum) {
+        k.a = golden_div3(a8, mode);
+        k.c = golden_div3(c3, mode);
+        return k;
+    }
+    // Seed 004's grouping: only the part whose weights are not multiples of 3 goes through /3, the
+    // integer part is added on the Q.16 bus.
+    const int64_t q16 = int64_t{1} << div3_shift;
+    if (set == sample_set::case1) {
+        k.a = golden_div3(64 * i2 + 8 * i4, mode) - (8 * i1 + 16 * i3) * q16;  // 8(8I2+I4)/3 - 8(I1+2I3)
+        k.c = golden_div3(32 * i2 + i4, mode) - (7 * i1 + 4 * i3) * q16;       // (32I2+I4)/3 - 7I1 - 4I3
+    } else {
+        k.a = (16 * i2 + 8 * i4) * q16 - golden_div3(8 * i1 + 64 * i3, mode);   // 8(2I2+I4) - 8(I1+8I3)/3
+        k.c = (12 * i2 + 3 * i4) * q16 - golden_div3(13 * i1 + 32 * i3, mode);  // 3(4I2+I4) - (13I1+32I3)/3
+    }
     return k;
 }
 
@@ -111,12 +125,12 @@ std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, 
 }
 
 std::vector<uint64_t> golden_interp_line(const std::vector<interval_samples>& intervals, unsigned m,
-                                         sample_set set, div3_mode mode) {
+                                         sample_set set, div3_mode mode, div3_grouping grouping) {
     const unsigned n = 1u << m;
     std::vector<uint64_t> out;
     for (const auto& iv : intervals) {
         const unsigned len = (iv.len == 0 || iv.len > n) ? n : iv.len;
-        const auto px = golden_fd(golden_cubic_coefs(iv.i, set, mode), m, len);
+        const auto px = golden_fd(golden_cubic_coefs(iv.i, set, mode, grouping), m, len);
         out.insert(out.end(), px.begin(), px.end());
     }
     return out;

@@ -20,8 +20,10 @@ struct cubic_coefs {
 // x (a sum_fmt code, Q.8) divided by 3 onto coef_fmt (Q.16).
 int64_t golden_div3(int64_t x_q8, div3_mode mode);
 
-// I1..I4 as sample_fmt codes (Q8.8 unsigned).
-cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& i, sample_set set, div3_mode mode);
+// I1..I4 as sample_fmt codes (Q8.8 unsigned). `grouping`: /3 on the whole weighted sum (the
+// default) or on seed 004's partial sum (coef_unit_cubic_seed.h).
+cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& i, sample_set set, div3_mode mode,
+                               div3_grouping grouping = div3_grouping::whole_sum);
 // Quadratic through t = 0, 1/2, 1: a, b, c returned in the a, b, c fields (d = 0).
 cubic_coefs golden_quad_coefs(const std::array<uint64_t, 3>& i);
 
@@ -50,7 +52,8 @@ struct interval_samples {
     unsigned len = 0;
 };
 std::vector<uint64_t> golden_interp_line(const std::vector<interval_samples>& intervals, unsigned m,
-                                         sample_set set, div3_mode mode);
+                                         sample_set set, div3_mode mode,
+                                         div3_grouping grouping = div3_grouping::whole_sum);
 
 // Worst-case accumulated error after k steps of the recurrence when each set-up difference is
 // floored (D1, D2 sums of 3 floored terms, D3 of 2): (3k + 3 C(k,2) + 2 C(k,3)) * 2^-frac,

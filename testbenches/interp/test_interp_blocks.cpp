@@ -6,7 +6,9 @@
 #include <systemc>
 
 #include "common/report_log.h"
+#include "blocks/adder.h"
 #include "blocks/div3_shift_add.h"
+#include "blocks/inverter_bank.h"
 #include "blocks/key_block.h"
 #include "blocks/mux.h"
 #include "blocks/shift_add_network.h"
@@ -78,4 +80,30 @@ TEST(InterpBlocks, ShiftAddNetworkAndSeedDivisionBy3) {
     sc_start(20, SC_NS);
     EXPECT_EQ(y.read(), sc_dt::sc_uint<24>(70 - 300 + (1 << 24)));  // -230, two's complement
     EXPECT_EQ(q.read(), sc_dt::sc_uint<32>(static_cast<uint32_t>(-22016)));  // -0.3359375 = -86*256/65536
+}
+
+// The seed-grouping unit's subtractor (coef_unit_cubic_seed.h): an inverter bank and an adder with
+// carry-in 1, minuend + ~subtrahend + 1, on Q16.16 buses. Hand-worked: case 1 A for a flat line of
+// 1.0, 72 * 43/128 = 24.1875 (the /3 of the divided part, 1585152 LSB) minus 24 (1572864) = 0.1875
+// (12288); and 1 - 2 = -1 wraps to two's complement.
+TEST(InterpBlocks, SubtractorFromInverterBankAndAdderWithCarryIn) {
+    bus<32> minuend("minuend"), subtrahend("subtrahend"), inverted("inverted"), diff("diff");
+    bus<24> divided("divided");
+    sc_core::sc_signal<bool> carry1("carry1");
+    div3_shift_add<24, 32, 8> div3("div3");  // Q16.8 -> Q16.16
+    inverter_bank<32> inv("inv");
+    adder<32, 32, 32, true, true> sub("sub");
+    div3.x(divided); div3.y(minuend);
+    inv.x(subtrahend); inv.y(inverted);
+    sub.a(minuend); sub.b(inverted); sub.cin(carry1); sub.s(diff);
+    carry1.write(true);
+    divided.write(72 * 256);          // 72.0, Q16.8
+    subtrahend.write(24u * 65536u);   // 24.0, Q16.16
+    sc_start(20, SC_NS);
+    EXPECT_EQ(minuend.read(), 1585152u);
+    EXPECT_EQ(diff.read(), 12288u);
+    divided.write(0);
+    subtrahend.write(65536u);         // 0 - 1.0
+    sc_start(20, SC_NS);
+    EXPECT_EQ(diff.read(), sc_dt::sc_uint<32>(static_cast<uint32_t>(-65536)));
 }

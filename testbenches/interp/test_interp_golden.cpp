@@ -101,6 +101,68 @@ TEST(InterpCoefGolden, WithinDocumentedBoundOfTheRealSolution) {
     EXPECT_LE(worst_rel, 0.0079);  // seed 004's claim
 }
 
+// Seed 004's grouping of the /3 (div3_grouping::partial_sum) against the real solution. With the
+// shift-and-add, x * 43/128 = x/3 + x/384, so each coefficient is off by exactly its divided part
+// over 384 (in Q.8 levels): case 1 A by (64I2 + 8I4)/384, C by (32I2 + I4)/384; case 2, where
+// the quotient is subtracted, A by -(8I1 + 64I3)/384, C by -(13I1 + 32I3)/384. The whole-sum
+// grouping is off by the whole sum over 384 (the 129/128 above).
+TEST(InterpCoefGolden, SeedGroupingShiftAddOffByTheDividedPartOver384) {
+    std::mt19937 rng(16);
+    for (int n = 0; n < 2000; ++n) {
+        const auto s = random_samples(rng);
+        const double i1 = q8(s[0]), i2 = q8(s[1]), i3 = q8(s[2]), i4 = q8(s[3]);
+        const auto r1 = ref::cubic_coefs({i1, i2, i3, i4}, sample_set::case1);
+        const auto g1 = golden_cubic_coefs(s, sample_set::case1, div3_mode::shift_add, div3_grouping::partial_sum);
+        EXPECT_NEAR(g1.a * lsb - r1.a, (64 * i2 + 8 * i4) / 384.0, 1e-9);
+        EXPECT_NEAR(g1.c * lsb - r1.c, (32 * i2 + i4) / 384.0, 1e-9);
+        const auto r2 = ref::cubic_coefs({i1, i2, i3, i4}, sample_set::case2);
+        const auto g2 = golden_cubic_coefs(s, sample_set::case2, div3_mode::shift_add, div3_grouping::partial_sum);
+        EXPECT_NEAR(g2.a * lsb - r2.a, -(8 * i1 + 64 * i3) / 384.0, 1e-9);
+        EXPECT_NEAR(g2.c * lsb - r2.c, -(13 * i1 + 32 * i3) / 384.0, 1e-9);
+        for (auto set : {sample_set::case1, sample_set::case2}) {  // B and D do not depend on the grouping
+            const auto w = golden_cubic_coefs(s, set, div3_mode::shift_add);
+            const auto p = golden_cubic_coefs(s, set, div3_mode::shift_add, div3_grouping::partial_sum);
+            EXPECT_EQ(p.b, w.b);
+            EXPECT_EQ(p.d, w.d);
+        }
+    }
+}
+
+// A flat line, every sample 1.0: the real cubic is 0 t^3 + 0 t^2 + 0 t + 1, and so is the whole-sum
+// shift-and-add (its sum is 0). The seed's grouping divides 72 (A) and 33 (C) levels and subtracts
+// 24 and 11: case 1 A = 72 * 43/128 - 24 = 0.1875 (12288 LSB), C = 33 * 43/128 - 11 = 0.0859375
+// (5632); case 2 A = 24 - 72 * 43/128 = -0.1875, C = 15 - 45 * 43/128 = -0.1171875 (-7680).
+TEST(InterpCoefGolden, SeedGroupingHandWorkedFlatLine) {
+    const std::array<uint64_t, 4> flat{256, 256, 256, 256};
+    for (auto set : {sample_set::case1, sample_set::case2})
+        EXPECT_EQ(golden_cubic_coefs(flat, set, div3_mode::shift_add), (cubic_coefs{0, 0, 0, 65536}));
+    EXPECT_EQ(golden_cubic_coefs(flat, sample_set::case1, div3_mode::shift_add, div3_grouping::partial_sum),
+              (cubic_coefs{12288, 0, 5632, 65536}));
+    EXPECT_EQ(golden_cubic_coefs(flat, sample_set::case2, div3_mode::shift_add, div3_grouping::partial_sum),
+              (cubic_coefs{-12288, 0, -7680, 65536}));
+}
+
+// With the exact divider the grouping costs nothing: in case 1 the integer part Y enters as
+// 256 Y - floor(256 X / 3) = floor(256 (X - 3Y) / 3), bit for bit the whole-sum result; in case 2
+// the quotient is subtracted, Y - floor(X/3) rounds up where the whole sum floors: +1 LSB at most.
+TEST(InterpCoefGolden, SeedGroupingExactDividerIsTheWholeSumWithinOneLsb) {
+    std::mt19937 rng(17);
+    unsigned case2_up = 0;
+    for (int n = 0; n < 5000; ++n) {
+        const auto s = random_samples(rng);
+        EXPECT_EQ(golden_cubic_coefs(s, sample_set::case1, div3_mode::exact, div3_grouping::partial_sum),
+                  golden_cubic_coefs(s, sample_set::case1, div3_mode::exact));
+        const auto p = golden_cubic_coefs(s, sample_set::case2, div3_mode::exact, div3_grouping::partial_sum);
+        const auto w = golden_cubic_coefs(s, sample_set::case2, div3_mode::exact);
+        for (auto diff : {p.a - w.a, p.c - w.c}) {
+            EXPECT_GE(diff, 0);
+            EXPECT_LE(diff, 1);
+            case2_up += diff == 1 ? 1u : 0u;
+        }
+    }
+    EXPECT_GT(case2_up, 0u) << "case 2 rounds up where the quotient is not exact";
+}
+
 TEST(InterpCoefGolden, Div3ShiftAddAgainstOneThird) {
     for (int64_t x : {int64_t{3}, int64_t{-3}, int64_t{300}, int64_t{-18432 * 256}, int64_t{18432 * 256}}) {
         EXPECT_EQ(golden_div3(x, div3_mode::shift_add), 86 * x);  // x * 43/128 on Q.16 from Q.8
