@@ -1,9 +1,11 @@
 # Helpers that add this project's programs.
 #
-# shading_add_bench(<name> SOURCES <files...> [LIBS <targets...>])
-#   A testbench program with its own sc_main, in build/bin/. It returns the number of errors and
-#   warnings SystemC reported, so a caller (scripts/run.sh) sees a failure.
-#
+# shading_add_bench(<name> SOURCES <files...> [LIBS <targets...>] [RANDOM <args>...])
+#   A testbench program with its own sc_main (testbenches/common/bench_runner.h), in build/bin/.
+#   It exits 0 only with zero mismatches and zero unexpected SystemC reports. Registers ctest
+#   entries: bench.<name>.default (the default run, no VCD), bench.<name>.random[.<i>] (a short
+#   random differential run; one per RANDOM argument string, e.g. "--mode wrap") and
+#   bench.<name>.inject (a mismatch forced with --inject-mismatch must make it exit 1).
 # shading_add_gtest(<name> SOURCES <files...> [LIBS <targets...>] [TIMEOUT <s>])
 #   A GoogleTest suite whose main() runs the tests inside sc_elab_and_sim (testbenches/common).
 #   gtest_discover_tests registers every test as its own ctest entry, so each test that
@@ -11,10 +13,34 @@
 #   `ctest --test-dir build -R <Suite.Test>` or `build/bin/<name> --gtest_filter=<Suite.Test>`.
 #   SHADING_TRACE=<dir> makes the simulating tests write their VCDs there.
 function(shading_add_bench name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;RANDOM" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE shading_modules shading_golden shading_tb_common CLI11::CLI11 ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  set(tests bench.${name}.default bench.${name}.inject)
+  add_test(NAME bench.${name}.default COMMAND ${name} --no-vcd WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  # Exit status exactly 1 (a crash would also be non-zero, and must not pass).
+  add_test(NAME bench.${name}.inject
+           COMMAND sh -c "\"$0\" --no-vcd --inject-mismatch 3; test $? -eq 1" $<TARGET_FILE:${name}>
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  if(NOT ARG_RANDOM)
+    set(ARG_RANDOM " ")
+  endif()
+  set(i 0)
+  foreach(args IN LISTS ARG_RANDOM)
+    separate_arguments(extra UNIX_COMMAND "${args}")
+    set(test bench.${name}.random)
+    list(LENGTH ARG_RANDOM n)
+    if(n GREATER 1)
+      set(test bench.${name}.random.${i})
+    endif()
+    add_test(NAME ${test} COMMAND ${name} --random 3000 --seed 1 ${extra} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    list(APPEND tests ${test})
+    math(EXPR i "${i} + 1")
+  endforeach()
+  # No summary rows from tests; SystemC's banner off.
+  set_tests_properties(${tests} PROPERTIES TIMEOUT 120
+                       ENVIRONMENT "SHADING_SUMMARY=;SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
 endfunction()
 
 function(shading_add_gtest name)

@@ -2,58 +2,57 @@
 // sample sets) through the five coefficient units (case 1 / case 2 x shift-and-add / exact
 // division by 3, quadratic), one interval per clock, checks each against its golden model, and
 // writes the relative error that the shift-and-add /3 causes in A and C (CSV).
-// Returns mismatches + unexpected SystemC reports.
+// Options common to every bench: bench_runner.h.
 //
 //   interp_coef_tb                      VCD traces/interp_coef.vcd, view traces/interp_coef.gtkw
-//   interp_coef_tb --csv out/interp_div3.csv --random 2000 --no-vcd
-#include <CLI/CLI.hpp>
+//   interp_coef_tb --csv out/interp_div3.csv --extra-sets 2000 --no-vcd
+//   interp_coef_tb --random 1000000 --seed 7   random sample sets only, against the golden models
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <random>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "common/bench_runner.h"
+#include "interp/interp_coef_bench.h"
 #include "interp/interp_line.h"
-#include "interp/interp_tb.h"
-#include "core/trace.h"
 
 using namespace shading;
 using namespace shading::tb;
 
 int sc_main(int argc, char* argv[]) {
-    CLI::App app{"Seed 004 coefficient units: raster-line samples against the golden models"};
-    std::string vcd_path = "traces/interp_coef", csv_path;
-    std::string summary_path = std::getenv("SHADING_SUMMARY") ? std::getenv("SHADING_SUMMARY") : "";
-    bool no_vcd = false;
-    unsigned width = 200, m = 5, n_random = 200;
-    app.add_option("--vcd", vcd_path, "VCD path without the .vcd extension");
-    app.add_flag("--no-vcd", no_vcd, "do not write a VCD");
-    app.add_option("--csv", csv_path, "write per-interval A and C (real, shift-and-add, exact) here");
-    app.add_option("--width", width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
-    app.add_option("--m", m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, 8u));
-    app.add_option("--random", n_random, "random sample sets streamed after the line")->check(CLI::Range(0u, 1000000u));
-    app.add_option("--summary", summary_path, "append TSV summary rows here (default: $SHADING_SUMMARY)");
-    CLI11_PARSE(app, argc, argv);
-    report_log::install();
+    bench_runner run("interp_coef", "Seed 004 coefficient units: raster-line samples against the golden models",
+                     "traces/interp_coef");
+    std::string csv_path;
+    unsigned width = 200, m = 5, n_extra = 200;
+    run.app.add_option("--csv", csv_path, "write per-interval A and C (real, shift-and-add, exact) here");
+    run.app.add_option("--width", width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
+    run.app.add_option("--m", m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, 8u));
+    run.app.add_option("--extra-sets", n_extra, "random sample sets streamed after the line (fixed seed 2024)")
+        ->check(CLI::Range(0u, 1000000u));
+    if (auto rc = run.parse(argc, argv)) return *rc;
+
+    if (run.random()) {
+        coef_bench bench("tb", random_coef_inputs(run.random_count(), run.seed()));
+        bench.checker.keep_samples(false);
+        bench.checker.inject_mismatch(run.inject());
+        run.simulate(bench, sc_core::sc_max_time());
+        for (std::size_t u = 0; u < 5; ++u)
+            std::cout << "  " << variant_name(all_variants[u]) << ": mismatches " << bench.checker.mismatches(u) << '\n';
+        run.report_random("random", bench.checker.checked(), bench.checker.mismatches(), "sample sets");
+        return run.finish(bench.checker.checked(), bench.checker.mismatches());
+    }
 
     const auto line = make_line(width, m);
     std::vector<coef_inputs> sets;
     for (const auto& iv : line.intervals) sets.push_back({iv.c1, iv.c2, iv.q});
     std::mt19937 rng(2024);
     std::uniform_int_distribution<uint64_t> u(0, interp::sample_fmt.mask());
-    for (unsigned i = 0; i < n_random; ++i)
+    for (unsigned i = 0; i < n_extra; ++i)
         sets.push_back({{u(rng), u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}});
 
     coef_bench bench("tb", sets);
-    std::unique_ptr<vcd_file> vcd;
-    if (!no_vcd) {
-        vcd = std::make_unique<vcd_file>(vcd_path);
-        vcd->trace(bench);
-    }
-    const bool finished = run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_SEC));
-    vcd.reset();
+    bench.checker.inject_mismatch(run.inject());
+    run.simulate(bench);
 
     // Relative error of A and C against the real-valued formulas of the same sample codes.
     const double lsb = interp::coef_fmt.lsb();
@@ -91,17 +90,15 @@ int sc_main(int argc, char* argv[]) {
 
     const double cpp = 1.0 / static_cast<double>(line.n());  // one interval's coefficients per clock
     std::cout << "interp_coef: " << samples.size() << " sample sets (" << line.intervals.size()
-              << " line intervals + " << n_random << " random), one set per clock\n";
+              << " line intervals + " << n_extra << " random), one set per clock\n";
     for (std::size_t u = 0; u < 5; ++u) {
         const std::string name = variant_name(all_variants[u]);
         const std::string note = u < 4 ? "max |rel err| of A and C vs real (seed: /3 shift-add <= 0.79%)"
                                        : "max |abs err| of a,b,c vs real (exact: shifts and adds)";
         std::cout << "  " << name << ": mismatches " << bench.checker.mismatches(u) << ", " << note << " = "
                   << max_err[u] << '\n';
-        append_summary(summary_path, "interp_coef", name, samples.size(), bench.checker.mismatches(u), max_err[u],
-                       u < 4, cpp, note);
+        run.summary({run.bench(), name, samples.size(), bench.checker.mismatches(u),
+                     u < 4 ? fmt_percent(max_err[u], 4) : fmt_levels(max_err[u]), fmt_number(cpp), note});
     }
-    const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (finished ? 0 : 1);
-    if (!finished) std::cerr << "interp_coef: the simulation did not finish\n";
-    return static_cast<int>(errors);
+    return run.finish(samples.size(), bench.checker.mismatches());
 }

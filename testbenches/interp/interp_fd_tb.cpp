@@ -2,21 +2,19 @@
 // every variant (quadratics as cubics with A = 0), one pixel per clock, checks every pixel
 // against the golden model and against the Horner unit's golden result at the same t (documented
 // bound 0..2 LSB of Q16.16), measures the error against the exact intensity; writes a CSV.
-// Returns mismatches + out-of-bound pixels + unexpected SystemC reports.
+// Fails on a mismatch, a pixel outside the bound, or an unexpected report. Options common to every
+// bench: bench_runner.h.
 //
 //   interp_fd_tb                        VCD traces/interp_fd.vcd, view traces/interp_fd.gtkw
 //   interp_fd_tb --m 6 --csv out/interp_fd.csv
-#include <CLI/CLI.hpp>
+//   interp_fd_tb --random 1000000 --seed 7 --m 6   random intervals of 1..2^m pixels
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "common/bench_runner.h"
+#include "interp/interp_fd_bench.h"
 #include "interp/interp_line.h"
-#include "interp/interp_tb.h"
-#include "core/trace.h"
 
 using namespace shading;
 using namespace shading::tb;
@@ -24,13 +22,24 @@ using namespace shading::tb;
 namespace {
 
 struct options {
-    std::string vcd_path = "traces/interp_fd", csv_path, summary_path;
-    bool no_vcd = false;
+    std::string csv_path;
     unsigned width = 200, m = 5;
 };
 
 template <unsigned M>
-int run(const options& o) {
+int run_m(bench_runner& run, const options& o) {
+    if (run.random()) {
+        fd_bench<M> bench("tb", random_fd_intervals<M>(run.random_count(), run.seed()));
+        bench.checker.keep_samples(false);
+        bench.checker.inject_mismatch(run.inject());
+        run.simulate(bench, sc_core::sc_max_time());
+        std::cout << "interp_fd (m = " << M << "): FD - Horner in [" << bench.checker.min_vs_horner() << ", "
+                  << bench.checker.max_vs_horner() << "] LSB (bound [0, 2]), clocks per pixel "
+                  << bench.checker.cycles_per_pixel() << '\n';
+        run.report_random("random_m" + std::to_string(M), bench.checker.checked(), bench.checker.mismatches());
+        return run.finish(bench.checker.checked(), bench.checker.mismatches(),
+                          bench.checker.within_horner_bound() ? 0 : 1);
+    }
     const auto line = make_line(o.width, M);
     std::vector<fd_interval> ivs;
     std::vector<variant> iv_variant;
@@ -41,13 +50,8 @@ int run(const options& o) {
             iv_variant.push_back(v);
         }
     fd_bench<M> bench("tb", ivs);
-    std::unique_ptr<vcd_file> vcd;
-    if (!o.no_vcd) {
-        vcd = std::make_unique<vcd_file>(o.vcd_path);
-        vcd->trace(bench);
-    }
-    const bool finished = run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_SEC));
-    vcd.reset();
+    bench.checker.inject_mismatch(run.inject());
+    run.simulate(bench);
 
     std::ofstream csv;
     if (!o.csv_path.empty()) {
@@ -55,7 +59,7 @@ int run(const options& o) {
         csv << "unit,variant,pixel,t,exact,value,error\n";
     }
     const auto& s = bench.checker.samples();
-    const bool in_bound = bench.checker.min_vs_horner() >= 0 && bench.checker.max_vs_horner() <= 2;
+    const bool in_bound = bench.checker.within_horner_bound();
     std::cout << "interp_fd: " << s.size() << " pixels, intervals of " << line.n() << "; FD - Horner in ["
               << bench.checker.min_vs_horner() << ", " << bench.checker.max_vs_horner()
               << "] LSB of Q16.16 (documented bound [0, 2])\n";
@@ -79,34 +83,28 @@ int run(const options& o) {
         const double cpp = n ? (last - first) / interp_period() / static_cast<double>(n) : 0.0;
         std::cout << "  " << variant_name(v) << ": " << n << " pixels, mismatches " << bad
                   << ", max |I - exact| = " << max_err << ", clocks per pixel " << cpp << '\n';
-        append_summary(o.summary_path, "interp_fd", variant_name(v) + "_m" + std::to_string(M), n, bad, max_err, false, cpp,
-                       in_bound ? "max |I_hw - exact|; FD-Horner within [0,2] LSB" : "FD-Horner OUT OF BOUND");
+        run.summary({run.bench(), variant_name(v) + "_m" + std::to_string(M), n, bad, fmt_levels(max_err),
+                     fmt_number(cpp),
+                     in_bound ? "max |I_hw - exact|; FD-Horner within [0,2] LSB" : "FD-Horner OUT OF BOUND"});
     }
-    const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (finished ? 0 : 1) +
-                               (in_bound ? 0 : 1);
-    if (!finished) std::cerr << "interp_fd: the simulation did not finish\n";
-    return static_cast<int>(errors);
+    return run.finish(s.size(), bench.checker.mismatches(), in_bound ? 0 : 1);
 }
 
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    CLI::App app{"Forward-difference evaluator: one raster line, every variant, against the golden models"};
+    bench_runner run("interp_fd", "Forward-difference evaluator: one raster line, every variant, against the golden models",
+                     "traces/interp_fd");
     options o;
-    o.summary_path = std::getenv("SHADING_SUMMARY") ? std::getenv("SHADING_SUMMARY") : "";
-    app.add_option("--vcd", o.vcd_path, "VCD path without the .vcd extension");
-    app.add_flag("--no-vcd", o.no_vcd, "do not write a VCD");
-    app.add_option("--csv", o.csv_path, "per-pixel CSV: unit,variant,pixel,t,exact,value,error");
-    app.add_option("--width", o.width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
-    app.add_option("--m", o.m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, interp::m_max));
-    app.add_option("--summary", o.summary_path, "append TSV summary rows here (default: $SHADING_SUMMARY)");
-    CLI11_PARSE(app, argc, argv);
-    report_log::install();
+    run.app.add_option("--csv", o.csv_path, "per-pixel CSV: unit,variant,pixel,t,exact,value,error");
+    run.app.add_option("--width", o.width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
+    run.app.add_option("--m", o.m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, interp::m_max));
+    if (auto rc = run.parse(argc, argv)) return *rc;
     switch (o.m) {
-        case 2: return run<2>(o);
-        case 3: return run<3>(o);
-        case 4: return run<4>(o);
-        case 5: return run<5>(o);
-        default: return run<6>(o);
+        case 2: return run_m<2>(run, o);
+        case 3: return run_m<3>(run, o);
+        case 4: return run_m<4>(run, o);
+        case 5: return run_m<5>(run, o);
+        default: return run_m<6>(run, o);
     }
 }

@@ -2,39 +2,45 @@
 // pixel, with the coefficients of every variant (case 1 / case 2 cubic with shift-and-add or
 // exact /3, quadratic), back to back through the iterative Horner unit of seed 004, Fig. 4.
 // Checks every micro-step against the golden model, measures clocks per pixel and the error
-// against the exact intensity; writes a per-pixel CSV. Returns mismatches + unexpected reports.
+// against the exact intensity; writes a per-pixel CSV. Options common to every bench:
+// bench_runner.h.
 //
 //   interp_horner_tb                    VCD traces/interp_horner.vcd, view traces/interp_horner.gtkw
 //   interp_horner_tb --csv out/interp_horner.csv
-#include <CLI/CLI.hpp>
+//   interp_horner_tb --random 100000 --seed 7 [--gap 2]
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "common/bench_runner.h"
+#include "interp/interp_horner_bench.h"
 #include "interp/interp_line.h"
-#include "interp/interp_tb.h"
-#include "core/trace.h"
 
 using namespace shading;
 using namespace shading::tb;
 
 int sc_main(int argc, char* argv[]) {
-    CLI::App app{"Seed 004 iterative Horner unit: one raster line, every variant, against the golden model"};
-    std::string vcd_path = "traces/interp_horner", csv_path;
-    std::string summary_path = std::getenv("SHADING_SUMMARY") ? std::getenv("SHADING_SUMMARY") : "";
-    bool no_vcd = false;
-    unsigned width = 200, m = 5;
-    app.add_option("--vcd", vcd_path, "VCD path without the .vcd extension");
-    app.add_flag("--no-vcd", no_vcd, "do not write a VCD");
-    app.add_option("--csv", csv_path, "per-pixel CSV: unit,variant,pixel,t,exact,value,error");
-    app.add_option("--width", width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
-    app.add_option("--m", m, "interval of 2^m pixels, t = k/2^m")->check(CLI::Range(interp::m_min, 8u));
-    app.add_option("--summary", summary_path, "append TSV summary rows here (default: $SHADING_SUMMARY)");
-    CLI11_PARSE(app, argc, argv);
-    report_log::install();
+    bench_runner run("interp_horner",
+                     "Seed 004 iterative Horner unit: one raster line, every variant, against the golden model",
+                     "traces/interp_horner");
+    std::string csv_path;
+    unsigned width = 200, m = 5, gap = 0;
+    run.app.add_option("--csv", csv_path, "per-pixel CSV: unit,variant,pixel,t,exact,value,error");
+    run.app.add_option("--width", width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
+    run.app.add_option("--m", m, "interval of 2^m pixels, t = k/2^m")->check(CLI::Range(interp::m_min, 8u));
+    run.app.add_option("--gap", gap, "idle clocks after each result (default 0: back to back)")
+        ->check(CLI::Range(0u, 100u));
+    if (auto rc = run.parse(argc, argv)) return *rc;
+
+    if (run.random()) {
+        horner_bench bench("tb", random_horner_requests(run.random_count(), run.seed()), gap);
+        bench.checker.keep_samples(false);
+        bench.checker.inject_mismatch(run.inject());
+        run.simulate(bench, sc_core::sc_max_time());
+        std::cout << "interp_horner: clocks per result " << bench.checker.cycles_per_result() << '\n';
+        run.report_random("random", bench.checker.checked(), bench.checker.mismatches());
+        return run.finish(bench.checker.checked(), bench.checker.mismatches());
+    }
 
     const auto line = make_line(width, m);
     struct tag {
@@ -52,14 +58,9 @@ int sc_main(int argc, char* argv[]) {
             }
         }
 
-    horner_bench bench("tb", reqs);
-    std::unique_ptr<vcd_file> vcd;
-    if (!no_vcd) {
-        vcd = std::make_unique<vcd_file>(vcd_path);
-        vcd->trace(bench);
-    }
-    const bool finished = run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_SEC));
-    vcd.reset();
+    horner_bench bench("tb", reqs, gap);
+    bench.checker.inject_mismatch(run.inject());
+    run.simulate(bench);
 
     std::ofstream csv;
     if (!csv_path.empty()) {
@@ -89,11 +90,9 @@ int sc_main(int argc, char* argv[]) {
         const double cpp = n ? (last - first) / interp_period() / static_cast<double>(n) : 0.0;
         std::cout << "  " << variant_name(v) << ": " << n << " pixels, mismatches " << bad
                   << ", max |I - exact| = " << max_err << ", clocks per pixel " << cpp << '\n';
-        append_summary(summary_path, "interp_horner", variant_name(v), n, bad, max_err, false, cpp,
-                       "max |I_hw - exact intensity| (0..255); back-to-back");
+        run.summary({run.bench(), variant_name(v), n, bad, fmt_levels(max_err), fmt_number(cpp),
+                     gap == 0 ? "max |I_hw - exact intensity| (0..255); back-to-back"
+                              : "max |I_hw - exact intensity| (0..255); gap " + std::to_string(gap)});
     }
-    const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (finished ? 0 : 1) +
-                               (s.size() == reqs.size() ? 0 : 1);
-    if (!finished) std::cerr << "interp_horner: the simulation did not finish\n";
-    return static_cast<int>(errors);
+    return run.finish(s.size(), bench.checker.mismatches(), s.size() == reqs.size() ? 0 : 1);
 }

@@ -1,5 +1,5 @@
-// Testbench parts for the raster-line interpolator (modules/interp_line_unit.h), in the three-part
-// style of interp_tb.h, reused by interp_line_tb and test_interp_line:
+// Testbench parts for the raster-line interpolator (modules/interp/interp_line_unit.h), in the
+// three-part style of interp_bench_common.h, reused by interp_line_tb and test_interp_line:
 //   line_stimulus - presents each interval's samples I1..I4 and len with start = 1 just after a
 //                   rising edge, and the next interval right after the edge that accepts it
 //                   (start = 1 and ready = 1); or, with gap > 0, `gap` clocks after the edge where
@@ -18,9 +18,10 @@
 #include <vector>
 
 #include "golden/interp_golden.h"
-#include "interp_line.h"
+#include "interp/fd_ctrl.h"
+#include "interp/interp_bench_common.h"
+#include "interp/interp_line.h"
 #include "interp/interp_line_unit.h"
-#include "interp_tb.h"
 
 namespace shading::tb {
 
@@ -30,6 +31,20 @@ inline std::vector<interp::interval_samples> line_intervals(const line_scenario&
     for (const auto& iv : line.intervals)
         v.push_back({set == interp::sample_set::case1 ? iv.c1 : iv.c2, iv.len});
     return v;
+}
+
+// The random mode's stream: `pixels` pixels in intervals of random length 1..2^M, each with random
+// samples I1..I4 over the whole sample bus; item i from (seed, i).
+template <unsigned M>
+item_source<interp::interval_samples> random_line_intervals(std::size_t pixels, uint64_t seed) {
+    const random_runs runs(pixels, 1u << M, seed);
+    return item_source<interp::interval_samples>(runs.count(), [seed, runs](std::size_t i) {
+        split_rng r(seed, i);
+        interp::interval_samples iv;
+        iv.i = random_samples<4>(r);
+        iv.len = static_cast<unsigned>(runs.length(i));
+        return iv;
+    });
 }
 
 struct line_sample {
@@ -52,7 +67,7 @@ public:
     sc_core::sc_out<sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};
 
     SC_HAS_PROCESS(line_stimulus);
-    line_stimulus(const sc_core::sc_module_name& name, std::vector<interp::interval_samples> ivs, unsigned gap = 0)
+    line_stimulus(const sc_core::sc_module_name& name, item_source<interp::interval_samples> ivs, unsigned gap = 0)
         : sc_module(name), ivs_(std::move(ivs)), gap_(gap) {
         SC_THREAD(run);
     }
@@ -91,7 +106,7 @@ private:
         finished_ = true;
         sc_core::sc_stop();
     }
-    std::vector<interp::interval_samples> ivs_;
+    item_source<interp::interval_samples> ivs_;
     unsigned gap_;
     std::vector<sc_core::sc_time> presented_;
     bool finished_ = false;
@@ -147,7 +162,7 @@ private:
 
 // Golden chain per accepted interval: its len pixels (interp::golden_interp_line of that interval).
 template <unsigned M>
-class line_checker {
+class line_checker : public checker_log<line_sample> {
 public:
     static constexpr unsigned n_pixels = 1u << M;
     using golden_fn = std::function<std::vector<uint64_t>(const interp::interval_samples&)>;
@@ -158,31 +173,36 @@ public:
           }) {}
 
     void check(const line_sample& s) {
-        samples_.push_back(s);
-        const auto g = golden_(s.iv);
-        const bool in_range = s.k < g.size();
-        const bool last_ok = s.last == (s.k + 1 == g.size());
-        if (in_range && g[s.k] == s.out && last_ok) return;
-        samples_.back().matched = false;
-        ++mismatches_;
-        std::ostringstream os;
-        os << "line unit at " << s.valid << " interval " << s.interval << " pixel " << s.k << ": device 0x"
-           << std::hex << s.out << (s.last ? " last" : "") << " golden 0x" << (in_range ? g[s.k] : 0) << std::dec
-           << (s.k + 1 == g.size() ? " last" : "") << " (of " << g.size() << " pixels)";
-        report_mismatch(mismatches_, 10, os.str());
+        line_sample r = s;
+        if (s.interval != golden_interval_ || g_.empty()) {  // one golden run per interval
+            g_ = golden_(s.iv);
+            golden_interval_ = s.interval;
+        }
+        const bool in_range = s.k < g_.size();
+        uint64_t g = in_range ? g_[s.k] : 0;
+        if (begin(s.accepted, s.valid)) g ^= 1;
+        const bool last_ok = s.last == (s.k + 1 == g_.size());
+        if (!in_range || g != s.out || !last_ok) {
+            r.matched = false;
+            ++mismatches_;
+            std::ostringstream os;
+            os << "line unit at " << s.valid << " interval " << s.interval << " pixel " << s.k << ": device 0x"
+               << std::hex << s.out << (s.last ? " last" : "") << " golden 0x" << g << std::dec
+               << (s.k + 1 == g_.size() ? " last" : "") << " (of " << g_.size() << " pixels)";
+            report_mismatch(mismatches_, 10, os.str());
+        }
+        record(r);
     }
-    std::size_t mismatches() const { return mismatches_; }
-    const std::vector<line_sample>& samples() const { return samples_; }
     std::vector<uint64_t> pixels() const {
         std::vector<uint64_t> v;
-        for (const auto& s : samples_) v.push_back(s.out);
+        for (const auto& s : samples()) v.push_back(s.out);
         return v;
     }
 
 private:
     golden_fn golden_;
-    std::size_t mismatches_ = 0;
-    std::vector<line_sample> samples_;
+    std::vector<uint64_t> g_;
+    std::size_t golden_interval_ = 0;
 };
 
 template <unsigned M, interp::sample_set SET, interp::div3_mode DIV>
@@ -200,7 +220,7 @@ public:
     line_stimulus<M> stim;
     line_monitor<M> mon;
 
-    line_bench(const sc_core::sc_module_name& name, std::vector<interp::interval_samples> ivs, unsigned gap = 0,
+    line_bench(const sc_core::sc_module_name& name, item_source<interp::interval_samples> ivs, unsigned gap = 0,
                typename line_checker<M>::golden_fn golden = nullptr, const interp_clock& ck = {})
         : sc_module(name), clk("clk", ck.period(), ck.duty()), checker(SET, DIV, std::move(golden)),
           stim("stim", std::move(ivs), gap), mon("mon", [this](const line_sample& s) { checker.check(s); }),

@@ -8,7 +8,7 @@
 #include "common/vcd_names.h"
 #include "common/sim_guard.h"
 #include "interp/interp_line.h"
-#include "interp/interp_tb.h"
+#include "interp/interp_coef_bench.h"
 #include "core/trace.h"
 
 using namespace shading;

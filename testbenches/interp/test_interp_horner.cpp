@@ -7,7 +7,7 @@
 #include "common/report_log.h"
 #include "common/vcd_names.h"
 #include "common/sim_guard.h"
-#include "interp/interp_tb.h"
+#include "interp/interp_horner_bench.h"
 #include "core/trace.h"
 
 using namespace shading;

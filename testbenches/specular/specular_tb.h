@@ -1,12 +1,13 @@
 // Testbench parts for the specular-colour devices (UA 60553 and its prototype UA 22802), in three
 // pieces reused by the testbench programs and the GoogleTest suites:
 //   specular_stimulus - drives the pins as in UA 60553, Fig. 3: per surface, n and k_s*I through
-//                       their strobes; then per pixel, cos on in18, ctl17 falls (latch) and rises
-//                       (validate);
+//                       their strobes (all four, or the ones a random reload picks); then per
+//                       pixel, cos on in18, ctl17 falls (latch) and rises (validate);
 //   specular_monitor  - watches the pins like a logic analyser: records what each register
 //                       latched at its falling edge and samples out25..27 at every rising edge of
 //                       out29 that follows a latch;
 //   specular_checker  - compares every sample with the golden model and with cos^n.
+// random_surfaces() makes the random differential mode's stream (bench_runner.h, --random).
 #pragma once
 
 #include <array>
@@ -23,6 +24,7 @@
 #include "golden/specular_golden.h"
 #include "formats/ua60553_formats.h"
 #include "core/report_ids.h"
+#include "common/bench_source.h"
 
 namespace shading::tb {
 
@@ -32,10 +34,35 @@ using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
 using out_t = sc_dt::sc_uint<spec::out_fmt.width>;
 
 struct surface {
-    unsigned n;
-    std::array<unsigned, 3> ksi;      // k_s*I for R, G, B
+    unsigned n = 0;
+    std::array<unsigned, 3> ksi{};    // k_s*I for R, G, B
     std::vector<uint32_t> cos_codes;  // streamed on in18, one per ctl17 period
+    // Which of RG1 (n), RG3, RG4, RG5 (k_s*I R, G, B) this surface loads; the others keep the
+    // previous surface's value (a random reload between pixels).
+    std::array<bool, 4> reload{true, true, true, true};
 };
+
+// The random differential stream: `pixels` random cos codes (0..1.0) in surfaces of 1..16
+// pixels; between two surfaces a random non-empty subset of n (1..1000) and the three k_s*I
+// (0..255) is reloaded through its strobe (the first surface loads all four). Item i depends
+// only on (seed, i), so the stream is generated as the stimulus reads it.
+inline item_source<surface> random_surfaces(std::size_t pixels, uint64_t seed) {
+    const random_runs runs(pixels, 16, seed);
+    return item_source<surface>(runs.count(), [=](std::size_t i) {
+        split_rng r(seed, i);
+        surface s;
+        s.n = static_cast<unsigned>(r.range(1, 1000));
+        for (auto& k : s.ksi) k = static_cast<unsigned>(r.range(0, 255));
+        if (i > 0) {
+            do {
+                for (auto& b : s.reload) b = r.coin();
+            } while (!(s.reload[0] || s.reload[1] || s.reload[2] || s.reload[3]));
+        }
+        for (std::size_t p = 0; p < runs.length(i); ++p)
+            s.cos_codes.push_back(static_cast<uint32_t>(r.range(0, spec::cos_one)));
+        return s;
+    });
+}
 
 // Strobe timing of Fig. 3. A pixel takes t_high + t_low: cos changes in the middle of the high
 // phase, ctl17 falls (latch), stays low for t_low (the settling phase T), rises (outputs valid).
@@ -62,19 +89,20 @@ public:
     sc_core::sc_out<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
 
     SC_HAS_PROCESS(specular_stimulus);
-    specular_stimulus(const sc_core::sc_module_name& name, std::vector<surface> surfaces, strobe_timing t)
+    specular_stimulus(const sc_core::sc_module_name& name, item_source<surface> surfaces, strobe_timing t)
         : sc_module(name), surfaces_(std::move(surfaces)), t_(t) {
+        if (const auto* list = surfaces_.list())
+            for (const auto& s : *list) pixels_ += s.cos_codes.size();
         SC_THREAD(run);
     }
 
     bool finished() const { return finished_; }
-    std::size_t pixels() const {
-        std::size_t p = 0;
-        for (const auto& s : surfaces_) p += s.cos_codes.size();
-        return p;
-    }
+    // Pixels of the stream (of a generated stream: the pixels streamed so far).
+    std::size_t pixels() const { return surfaces_.list() ? pixels_ : streamed_; }
     // Simulated time the whole stream takes (for watchdogs): 4 loads per surface, then pixels.
+    // A generated stream's length is not known in advance: run it until it stops.
     sc_core::sc_time duration() const {
+        if (!surfaces_.list()) return sc_core::sc_max_time();
         return t_.t_high + t_.load_pulse * (8.0 * static_cast<double>(surfaces_.size())) +
                (t_.t_low + t_.t_high) * static_cast<double>(pixels());
     }
@@ -92,11 +120,13 @@ private:
     void run() {
         ctl17.write(true);  // idle high: the first falling edge latches the first pixel
         wait(t_.t_high);
-        for (const auto& s : surfaces_) {
-            load(ctl15, in16_n, s.n);
-            load(ctl20, in19_ksi_r, s.ksi[0]);
-            load(ctl22, in21_ksi_g, s.ksi[1]);
-            load(ctl24, in23_ksi_b, s.ksi[2]);
+        for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+            const surface& s = surfaces_[i];
+            if (s.reload[0]) load(ctl15, in16_n, s.n);
+            if (s.reload[1]) load(ctl20, in19_ksi_r, s.ksi[0]);
+            if (s.reload[2]) load(ctl22, in21_ksi_g, s.ksi[1]);
+            if (s.reload[3]) load(ctl24, in23_ksi_b, s.ksi[2]);
+            streamed_ += s.cos_codes.size();
             for (uint32_t c : s.cos_codes) {
                 wait(t_.t_high / 2 - t_.cos_lead);
                 in18_cos.write(c);
@@ -111,8 +141,9 @@ private:
         sc_core::sc_stop();
     }
 
-    std::vector<surface> surfaces_;
+    item_source<surface> surfaces_;
     strobe_timing t_;
+    std::size_t pixels_ = 0, streamed_ = 0;
     bool finished_ = false;
 };
 
@@ -178,10 +209,14 @@ public:
     explicit specular_checker(golden_fn golden, std::size_t max_reports = 10)
         : golden_(std::move(golden)), max_reports_(max_reports) {}
 
+    // For the tests of the verdict: the golden value of sample k (0-based) is corrupted.
+    void inject_mismatch(std::size_t k) { inject_ = k; }
+
     void check(const pixel_sample& s) {
         auto& st = stats_[s.n];
         ++st.samples;
-        const auto g = golden_(s.n, s.cos, s.ksi);
+        auto g = golden_(s.n, s.cos, s.ksi);
+        if (checked_++ == inject_) g.out[0] ^= 1;
         if (g.out != s.out) {
             ++st.mismatches;
             ++mismatches_;
@@ -218,7 +253,7 @@ private:
     golden_fn golden_;
     std::size_t max_reports_;
     std::map<uint64_t, specular_stats> stats_;
-    std::size_t mismatches_ = 0;
+    std::size_t mismatches_ = 0, checked_ = 0, inject_ = SIZE_MAX;
 };
 
 // A bench that owns the pins' signals, the device, the stimulus, the monitor and the checker.
@@ -239,7 +274,7 @@ public:
     specular_monitor mon;
 
     template <typename... DeviceArgs>
-    specular_bench(const sc_core::sc_module_name& name, std::vector<surface> surfaces, strobe_timing t,
+    specular_bench(const sc_core::sc_module_name& name, item_source<surface> surfaces, strobe_timing t,
                    specular_checker::golden_fn golden, DeviceArgs&&... device_args)
         : sc_module(name),
           checker(std::move(golden)),

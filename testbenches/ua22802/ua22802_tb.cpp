@@ -1,46 +1,27 @@
-// UA 22802 testbench program: streams surfaces (n, k_s*I) and pixels (cos) through the device as
-// in UA 60553, Fig. 3, compares every output with the golden model and with cos^n, writes a VCD
-// (open with traces/ua22802.gtkw) and appends one summary row per n to $SHADING_SUMMARY.
-// Returns mismatches + unexpected SystemC reports.
-#include <CLI/CLI.hpp>
-
+// UA 22802 testbench program: streams surfaces (n, k_s*I) and pixels (cos) through the ROM
+// prototype as in UA 60553, Fig. 3, compares every output with the golden model and with cos^n,
+// writes a VCD (open with traces/ua22802.gtkw) and appends one summary row per n to the summary.
+// Options common to every bench: bench_runner.h.
+//
+//   ua22802_tb                         8 exponents x 48 pixels, VCD in traces/ua22802.vcd
+//   ua22802_tb --random 100000 --seed 7 --mode wrap
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <iomanip>
-#include <iostream>
-#include <memory>
-#include <systemc>
+#include <string>
+#include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "specular/specular_tb.h"
-#include "core/trace.h"
-#include "ua22802/ua22802.h"
+#include "common/bench_runner.h"
 #include "golden/ua22802_golden.h"
+#include "specular/specular_tb.h"
+#include "ua22802/ua22802.h"
 
 using namespace shading;
 using namespace shading::tb;
 
-int sc_main(int argc, char* argv[]) {
-    CLI::App app{"UA 22802 (ROM prototype) testbench"};
-    std::string vcd = "traces/ua22802";
-    bool no_vcd = false, wrap = false;
-    unsigned pixels = 48;
-    std::vector<unsigned> ns{1, 2, 3, 8, 32, 128, 512, 1000};
-    app.add_option("--vcd", vcd, "VCD path without the .vcd suffix");
-    app.add_flag("--no-vcd", no_vcd, "do not write a VCD");
-    app.add_option("--pixels", pixels, "pixels per surface (half over [0,1], half where cos^n >= 0.56)")
-        ->check(CLI::Range(2u, 100000u));
-    app.add_option("--n", ns, "specular exponents, one surface each")->check(CLI::Range(0u, 1023u));
-    app.add_flag("--wrap", wrap, "ADD11 wraps instead of saturating");
-    CLI11_PARSE(app, argc, argv);
+namespace {
 
-    report_log::install();
-    report_log::get().expect(msg::input);  // n = 0 or n > 1000 on the command line: documented
-    const overflow_mode mode = wrap ? overflow_mode::wrap : overflow_mode::saturate;
-
+// Per n: half the pixels over cos in [0, 1], half where cos^n >= 0.56 (the seed's error bound).
+std::vector<surface> surfaces_for(const std::vector<unsigned>& ns, unsigned pixels) {
     std::vector<surface> surfaces;
     for (unsigned n : ns) {
         surface s{n, {255, 160, 48}, {}};
@@ -54,40 +35,47 @@ int sc_main(int argc, char* argv[]) {
         }
         surfaces.push_back(std::move(s));
     }
+    return surfaces;
+}
 
+}  // namespace
+
+int sc_main(int argc, char* argv[]) {
+    bench_runner run("ua22802", "UA 22802 (ROM prototype): Fig. 3 replay against the golden model", "traces/ua22802",
+                     true);
+    unsigned pixels = 48;
+    std::vector<unsigned> ns{1, 2, 3, 8, 32, 128, 512, 1000};
+    run.app.add_option("--pixels", pixels, "pixels per surface (half over [0,1], half where cos^n >= 0.56)")
+        ->check(CLI::Range(2u, 100000u));
+    run.app.add_option("--n", ns, "specular exponents, one surface each")->check(CLI::Range(0u, 1023u));
+    if (auto rc = run.parse(argc, argv)) return *rc;
+    report_log::get().expect(msg::input);  // n = 0 or n > 1000 on the command line: documented
+
+    const overflow_mode mode = run.mode();
     specular_bench<device_ua22802> bench(
-        "tb", surfaces, strobe_timing{},
+        "tb", run.random() ? random_surfaces(run.random_count(), run.seed()) : surfaces_for(ns, pixels),
+        strobe_timing{},
         [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) { return golden_ua22802(n, c, k, mode); },
         mode);
-    std::unique_ptr<vcd_file> tf;
-    if (!no_vcd) {
-        tf = std::make_unique<vcd_file>(vcd);
-        tf->trace(bench);
-    }
+    bench.checker.inject_mismatch(run.inject());
+    std::printf("UA 22802 ROM: %llu words x %d bits (Q%d.%d unsigned) = %llu bits = %llu bytes\n",
+                static_cast<unsigned long long>(bench.dut.rom.words), static_cast<int>(ua22802::a_fmt.width),
+                ua22802::a_fmt.int_bits(), ua22802::a_fmt.frac, static_cast<unsigned long long>(bench.dut.rom.bits),
+                static_cast<unsigned long long>(bench.dut.rom.bits / 8));
+    run.simulate(bench, run.random() ? sc_core::sc_max_time() : sc_core::sc_time(1, sc_core::SC_SEC));
 
-    std::cout << "UA 22802 ROM: " << bench.dut.rom.words << " words x " << ua22802::a_fmt.width
-              << " bits (Q" << ua22802::a_fmt.int_bits() << "." << ua22802::a_fmt.frac
-              << " unsigned) = " << bench.dut.rom.bits << " bits = " << bench.dut.rom.bits / 8
-              << " bytes\n";
-    const bool done = run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_SEC));
-    tf.reset();
-    if (!done) std::cerr << "ua22802_tb: stimulus did not finish\n";
-
-    const char* sum_path = std::getenv("SHADING_SUMMARY");
-    std::ofstream sum;
-    if (sum_path != nullptr && *sum_path != '\0') sum.open(sum_path, std::ios::app);
-    std::printf("%6s %8s %10s %14s\n", "n", "samples", "mismatches", "max_rel_err");
-    for (const auto& [n, st] : bench.checker.stats()) {
-        std::printf("%6llu %8zu %10zu %14.6f\n", static_cast<unsigned long long>(n), st.samples,
-                    st.mismatches, st.max_rel_err_056);
-        if (sum.is_open())
-            sum << "ua22802\tn=" << n << '\t' << st.samples << '\t' << st.mismatches << '\t'
-                << std::fixed << std::setprecision(2) << 100.0 * st.max_rel_err_056
-                << "%\t1 strobe\tmax rel err vs cos^n where cos^n >= 0.56; ROM "
-                << bench.dut.rom.bits << " bits\n";
+    if (run.random()) {
+        run.report_random("random_" + run.mode_name(), bench.checker.samples(), bench.checker.mismatches());
+    } else {
+        std::printf("%6s %8s %10s %14s\n", "n", "samples", "mismatches", "max_rel_err");
+        for (const auto& [n, st] : bench.checker.stats()) {
+            std::printf("%6llu %8zu %10zu %14.6f\n", static_cast<unsigned long long>(n), st.samples, st.mismatches,
+                        st.max_rel_err_056);
+            run.summary({run.bench(), "n=" + std::to_string(n) + (mode == overflow_mode::wrap ? "_wrap" : ""),
+                         st.samples, st.mismatches, fmt_percent(st.max_rel_err_056, 2), "1 strobe",
+                         "max rel err vs cos^n where cos^n >= 0.56; ROM " + std::to_string(bench.dut.rom.bits) +
+                             " bits"});
+        }
     }
-    const std::size_t errors = bench.checker.mismatches() + report_log::get().unexpected() + (done ? 0 : 1);
-    std::cout << "ua22802_tb: " << bench.checker.samples() << " samples, " << bench.checker.mismatches()
-              << " mismatches, " << report_log::get().unexpected() << " unexpected reports\n";
-    return static_cast<int>(errors);
+    return run.finish(bench.checker.samples(), bench.checker.mismatches());
 }
