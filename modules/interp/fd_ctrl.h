@@ -12,6 +12,7 @@
 #include <systemc>
 
 #include "core/report_ids.h"
+#include "formats/interp_formats.h"
 
 namespace shading {
 
@@ -20,12 +21,14 @@ class fd_ctrl : public sc_core::sc_module {
 public:
     static constexpr unsigned n_pixels = 1u << M;
     static constexpr unsigned sel_hold = 0, sel_load = 1, sel_step = 2;
-    using len_t = sc_dt::sc_uint<M + 1>;
+    static_assert(sel_step < interp::fd_mx_inputs, "select codes");
+    using len_t = sc_dt::sc_uint<interp::len_width(M)>;
+    using select = sc_dt::sc_uint<interp::code_width(interp::fd_mx_inputs)>;
 
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> start{"start"};
     sc_core::sc_in<len_t> len{"len"};
-    sc_core::sc_out<sc_dt::sc_uint<2>> fd_sel{"fd_sel"};
+    sc_core::sc_out<select> fd_sel{"fd_sel"};
     sc_core::sc_out<len_t> pixel{"pixel"};  // index k of the pixel on its way out
     sc_core::sc_out<bool> valid{"valid"}, last{"last"};
 

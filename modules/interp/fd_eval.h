@@ -52,7 +52,7 @@ public:
     sc_core::sc_signal<fd_t> p_value{"p_value"}, d1_value{"d1_value"}, d2_value{"d2_value"}, d3_value{"d3_value"};
     sc_core::sc_signal<fd_t> p_next{"p_next"}, d1_next{"d1_next"}, d2_next{"d2_next"};
     sc_core::sc_signal<fd_t> p_sum{"p_sum"}, d1_sum{"d1_sum"}, d2_sum{"d2_sum"}, d3_keep{"d3_keep"};
-    sc_core::sc_signal<sc_dt::sc_uint<2>> fd_sel{"fd_sel"};
+    sc_core::sc_signal<typename fd_ctrl<M>::select> fd_sel{"fd_sel"};
     sc_core::sc_signal<len_t> pixel{"pixel"};
     sc_core::sc_signal<bool> carry0{"carry0"};
 
@@ -65,7 +65,7 @@ public:
     shift_add_network<WC, WF, true> setup_d3{"setup_d3", 1,
         {{0, S - 3 * SM + 2, false}, {0, S - 3 * SM + 1, false}}};                      // (4A + 2A)/N^3
 
-    mux<WF, 3> mx_p{"mx_p"}, mx_d1{"mx_d1"}, mx_d2{"mx_d2"}, mx_d3{"mx_d3"};
+    mux<WF, interp::fd_mx_inputs> mx_p{"mx_p"}, mx_d1{"mx_d1"}, mx_d2{"mx_d2"}, mx_d3{"mx_d3"};
     reg<WF> rg_p{"rg_p"}, rg_d1{"rg_d1"}, rg_d2{"rg_d2"}, rg_d3{"rg_d3"};
     adder<WF, WF, WF, true, true> add_p{"add_p"};    // Q22.34 + Q22.34 -> Q22.34
     adder<WF, WF, WF, true, true> add_d1{"add_d1"};  // Q22.34 + Q22.34 -> Q22.34
@@ -131,7 +131,7 @@ public:
     const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 
 private:
-    void wire_mux(mux<WF, 3>& m, sc_core::sc_signal<fd_t>& hold, sc_core::sc_signal<fd_t>& load,
+    void wire_mux(mux<WF, interp::fd_mx_inputs>& m, sc_core::sc_signal<fd_t>& hold, sc_core::sc_signal<fd_t>& load,
                   sc_core::sc_signal<fd_t>& step, sc_core::sc_signal<fd_t>& out) {
         m.in[fd_ctrl<M>::sel_hold](hold);
         m.in[fd_ctrl<M>::sel_load](load);

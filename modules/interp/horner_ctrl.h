@@ -33,16 +33,20 @@ class horner_ctrl : public sc_core::sc_module {
 public:
     static constexpr unsigned mx2_zero = 0, mx2_mul = 1, mx2_b = 2, mx2_c = 3, mx2_d = 4;
     static constexpr unsigned mx1_a = 0, mx1_rg = 1;
+    static_assert(mx2_d < interp::horner_mx2_inputs && mx1_rg < interp::horner_mx1_inputs, "select codes");
     using t_t = sc_dt::sc_uint<interp::t_fmt.width>;
+    using mx1_select = sc_dt::sc_uint<interp::code_width(interp::horner_mx1_inputs)>;
+    using mx2_select = sc_dt::sc_uint<interp::code_width(interp::horner_mx2_inputs)>;
+    using step_code = sc_dt::sc_uint<interp::code_width(interp::horner_step_codes)>;
 
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> start{"start"};
     sc_core::sc_in<bool> deg2{"deg2"};
     sc_core::sc_in<t_t> t{"t"};  // read only by the range assertion (not hardware)
-    sc_core::sc_out<sc_dt::sc_uint<1>> mx1_sel{"mx1_sel"};
-    sc_core::sc_out<sc_dt::sc_uint<3>> mx2_sel{"mx2_sel"};
+    sc_core::sc_out<mx1_select> mx1_sel{"mx1_sel"};
+    sc_core::sc_out<mx2_select> mx2_sel{"mx2_sel"};
     sc_core::sc_out<bool> bk_pass{"bk_pass"};
-    sc_core::sc_out<sc_dt::sc_uint<3>> step{"step"};  // 0 idle, 1..6: the micro-step running
+    sc_core::sc_out<step_code> step{"step"};  // 0 idle, 1..6: the micro-step running
     sc_core::sc_out<bool> done{"done"}, busy{"busy"};
 
     SC_HAS_PROCESS(horner_ctrl);

@@ -53,16 +53,16 @@ public:
     sc_core::sc_signal<coef_t> sm_sum{"sm_sum"};            // next RG
     sc_core::sc_signal<coef_t> zero_word{"zero_word"};
     sc_core::sc_signal<bool> carry0{"carry0"};
-    sc_core::sc_signal<sc_dt::sc_uint<1>> mx1_sel{"mx1_sel"};
-    sc_core::sc_signal<sc_dt::sc_uint<3>> mx2_sel{"mx2_sel"};
+    sc_core::sc_signal<horner_ctrl::mx1_select> mx1_sel{"mx1_sel"};
+    sc_core::sc_signal<horner_ctrl::mx2_select> mx2_sel{"mx2_sel"};
     sc_core::sc_signal<bool> bk_pass{"bk_pass"};
-    sc_core::sc_signal<sc_dt::sc_uint<3>> step{"step"};
+    sc_core::sc_signal<horner_ctrl::step_code> step{"step"};
 
     // Blocks of Fig. 4 (names from the figure) and the controller.
     reg<WC> rg{"rg"};
-    mux<WC, 2> mx1{"mx1"};
+    mux<WC, interp::horner_mx1_inputs> mx1{"mx1"};
     horner_detail::mul_block mul{"mul"};  // Q16.16 x Q1.8 -> Q17.24, floor to Q16.16
-    mux<WC, 5> mx2{"mx2"};
+    mux<WC, interp::horner_mx2_inputs> mx2{"mx2"};
     key_block<WC> bk{"bk"};
     adder<WC, WC, WC, true, true> sm{"sm"};  // Q16.16 + Q16.16 -> Q16.16, wraps
     constant<coef_t> k_zero{"k_zero", coef_t(0)};
