@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <systemc>
@@ -54,9 +55,13 @@ private:
 };
 
 // Tracing on demand: when SHADING_TRACE names a directory, returns a VCD there called `name`.
+// The directory is created if missing (README: SHADING_TRACE=/tmp/vcd); if that fails, SystemC's
+// own error for the unopenable file says which path.
 inline std::unique_ptr<vcd_file> vcd_from_env(const std::string& name) {
     const char* dir = std::getenv("SHADING_TRACE");
     if (dir == nullptr || *dir == '\0') return nullptr;
+    std::error_code ignored;
+    std::filesystem::create_directories(dir, ignored);
     return std::make_unique<vcd_file>(std::string(dir) + "/" + name);
 }
 

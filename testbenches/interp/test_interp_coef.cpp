@@ -34,8 +34,6 @@ std::vector<coef_inputs> random_sets(std::size_t n, unsigned seed) {
 
 TEST(InterpCoefUnits, BitExactAgainstGoldenRandomAndCorners) {
     coef_bench bench("tb", random_sets(400, 11));
-    auto vcd = vcd_from_env("test_interp_coef_bitexact");
-    if (vcd) vcd->trace(bench);
     EXPECT_TRUE(tb::run_to_completion(bench, sc_core::sc_time(1, sc_core::SC_MS)));
     EXPECT_EQ(bench.checker.samples().size(), 400u);
     for (std::size_t u = 0; u < 5; ++u) EXPECT_EQ(bench.checker.mismatches(u), 0u) << "unit " << u;
@@ -110,6 +108,20 @@ TEST(InterpCoefUnits, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     const auto shown = gtkw_listed(source_path("traces/interp_coef.gtkw"));
     EXPECT_GE(shown.size(), 10u);
     for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+
+    // What a user sees at first sight (vcd_names.h, view_problems): the view names its dump file,
+    // opens with the marker inside the window and off every edge, and shows each bus as a number
+    // in its format from src/formats/interp_formats.h (counters and selects: integers).
+    using interp::coef_fmt, interp::sample_fmt, interp::sum_fmt;
+    view_formats f;
+    for (const char* s : {"tb.c1_i", "tb.c2_i", "tb.dut_c1_sa.held_i"})
+        for (int i = 1; i <= 4; ++i) f[s + std::to_string(i)] = sample_fmt;
+    for (int i = 1; i <= 3; ++i) f["tb.q_i" + std::to_string(i)] = sample_fmt;
+    for (const char* s : {"a8_sum", "b_sum", "c3_sum"}) f[std::string("tb.dut_c1_sa.") + s] = sum_fmt;
+    for (const char* u : {"c1sa_", "c1ex_", "c2sa_", "c2ex_", "quad_"})
+        for (const char* k : {"a", "b", "c", "d"}) f[std::string("tb.") + u + k] = coef_fmt;
+    const auto problems = view_problems(source_path("traces/interp_coef.gtkw"), base + ".vcd", "interp_coef", f);
+    EXPECT_TRUE(problems.empty()) << joined(problems);
 }
 
 // Clock phases (chk_clock). The samples go straight into the registers, so the high phase needs

@@ -35,8 +35,6 @@ std::vector<horner_request> every_t(std::size_t intervals, unsigned m, bool deg2
 
 TEST(InterpHorner, CubicBitExactEveryTOfAnInterval) {
     horner_bench bench("tb", every_t(12, 5, false, 21));
-    auto vcd = vcd_from_env("test_interp_horner_cubic");
-    if (vcd) vcd->trace(bench);
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
     EXPECT_EQ(bench.checker.samples().size(), 12u * 33u);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
@@ -55,8 +53,6 @@ TEST(InterpHorner, Degree2BitExactEveryTOfAnInterval) {
 // accepted the request. Throughput back to back: one pixel per 6 / 4 clocks.
 TEST(InterpHorner, LatencyAndThroughputCubic) {
     horner_bench bench("tb", every_t(2, 4, false, 23));
-    auto vcd = vcd_from_env("test_interp_horner_latency");
-    if (vcd) vcd->trace(bench);
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
     const auto& s = bench.checker.samples();
     ASSERT_EQ(s.size(), 34u);
@@ -138,6 +134,19 @@ TEST(InterpHorner, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     const auto shown = gtkw_listed(source_path("traces/interp_horner.gtkw"));
     EXPECT_GE(shown.size(), 10u);
     for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+
+    // What a user sees at first sight (vcd_names.h, view_problems): the view names its dump file,
+    // opens with the marker inside the window and off every edge, and shows each bus as a number
+    // in its format from src/formats/interp_formats.h (counters and selects: integers).
+    using interp::coef_fmt, interp::sample_fmt, interp::sum_fmt;
+    view_formats f;
+    for (const char* s : {"tb.a", "tb.b", "tb.c", "tb.d", "tb.i_t", "tb.dut.mx1_operand", "tb.dut.mul_product",
+                          "tb.dut.mx2_operand", "tb.dut.bk_operand", "tb.dut.sm_sum", "tb.dut.rg_value"})
+        f[s] = interp::horner_fmt;
+    f["tb.t"] = interp::t_fmt;
+    f["tb.dut.step"] = f["tb.dut.mx2_sel"] = qfmt{3, false, 0};
+    const auto problems = view_problems(source_path("traces/interp_horner.gtkw"), base + ".vcd", "interp_horner", f);
+    EXPECT_TRUE(problems.empty()) << joined(problems);
 }
 
 // Clock phases (chk_clock). High: the selects switch at the rising edge and RG latches at the
