@@ -10,11 +10,12 @@
 
 #include "formats/fixed_point.h"
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned WA, unsigned WB, unsigned WS, bool ASIGNED = false, bool BSIGNED = false>
-class adder : public sc_core::sc_module {
+class adder : public sc_core::sc_module, public timed_block {
     static_assert(WA < 63 && WB < 63 && WS <= 64, "widths");
 
 public:
@@ -33,7 +34,7 @@ public:
         sensitive << a << b << cin;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
     overflow_mode mode() const { return mode_; }
 
 private:

@@ -10,11 +10,12 @@
 
 #include "formats/fixed_point.h"
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned WIN, unsigned WOUT, unsigned K, unsigned ALIGN>
-class const_div : public sc_core::sc_module {
+class const_div : public sc_core::sc_module, public timed_block {
     static_assert(K >= 1 && WIN + ALIGN < 63 && WOUT <= 64, "widths");
 
 public:
@@ -29,7 +30,7 @@ public:
         sensitive << x;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
 
 private:
     void compute() {

@@ -5,10 +5,12 @@
 
 #include <systemc>
 
+#include "core/timed_block.h"
+
 namespace shading {
 
 template <typename T>
-class constant : public sc_core::sc_module {
+class constant : public sc_core::sc_module, public timed_block {
 public:
     sc_core::sc_out<T> y{"y"};
 
@@ -18,6 +20,8 @@ public:
     }
 
     const T& value() const { return value_; }
+    // Tied wires: no propagation delay.
+    const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
 
 private:
     void drive() { y.write(value_); }

@@ -7,11 +7,12 @@
 #include <systemc>
 
 #include "blocks/shift_add_network.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned WIN, unsigned WOUT, int ALIGN>
-class div3_shift_add : public sc_core::sc_module {
+class div3_shift_add : public sc_core::sc_module, public timed_block {
 public:
     sc_core::sc_in<sc_dt::sc_uint<WIN>> x{"x"};
     sc_core::sc_out<sc_dt::sc_uint<WOUT>> y{"y"};
@@ -28,7 +29,7 @@ public:
         net.y(y);
     }
 
-    const sc_core::sc_time& delay() const { return net.delay(); }  // slowest x -> y path
+    const sc_core::sc_time& delay() const override { return net.delay(); }  // slowest x -> y path
 };
 
 }  // namespace shading

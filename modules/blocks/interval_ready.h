@@ -9,10 +9,11 @@
 #include <systemc>
 
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
-class interval_ready : public sc_core::sc_module {
+class interval_ready : public sc_core::sc_module, public timed_block {
 public:
     sc_core::sc_in<bool> valid{"valid"}, last{"last"};
     sc_core::sc_out<bool> ready{"ready"};
@@ -25,7 +26,7 @@ public:
         sensitive << valid << last;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
 
 private:
     void compute() { drv_.drive(!valid.read() || last.read()); }

@@ -7,11 +7,12 @@
 #include <systemc>
 
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned WIN, unsigned WOUT = WIN, unsigned ALIGN = 0>
-class inverter_bank : public sc_core::sc_module {
+class inverter_bank : public sc_core::sc_module, public timed_block {
     static_assert(WIN + ALIGN <= WOUT && WOUT <= 64, "the aligned input must fit the output bus");
 
 public:
@@ -26,7 +27,7 @@ public:
         sensitive << x;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
 
 private:
     void compute() { drv_.drive(sc_dt::sc_uint<WOUT>(~(x.read().to_uint64() << ALIGN))); }

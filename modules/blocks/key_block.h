@@ -5,11 +5,12 @@
 #include <systemc>
 
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned W>
-class key_block : public sc_core::sc_module {
+class key_block : public sc_core::sc_module, public timed_block {
     static_assert(W >= 1 && W <= 64, "width");
 
 public:
@@ -27,7 +28,7 @@ public:
         sensitive << x << pass;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
 
 private:
     void compute() { drv_.drive(pass.read() ? x.read() : word(0)); }

@@ -8,12 +8,13 @@
 #include <systemc>
 
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned WA, unsigned WB, unsigned WP, unsigned DROP = 0, bool ASIGNED = false,
           bool BSIGNED = false>
-class mul : public sc_core::sc_module {
+class mul : public sc_core::sc_module, public timed_block {
     static_assert(WA <= 64 && WB <= 64 && WA + WB <= 126 && WP <= 64, "operand widths");
     static_assert(DROP + WP <= WA + WB + 1, "output wires beyond the product");
 
@@ -30,7 +31,7 @@ public:
         sensitive << a << b;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
 
     static __int128 operand(uint64_t bits, unsigned w, bool is_signed) {
         if (is_signed && ((bits >> (w - 1)) & 1u))

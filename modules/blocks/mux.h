@@ -5,6 +5,7 @@
 #include <systemc>
 
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
@@ -16,7 +17,7 @@ constexpr unsigned select_width(unsigned n) {
 }
 
 template <unsigned W, unsigned N>
-class mux : public sc_core::sc_module {
+class mux : public sc_core::sc_module, public timed_block {
     static_assert(N >= 2 && W <= 64, "a multiplexer selects among two or more buses of <= 64 wires");
 
 public:
@@ -36,7 +37,7 @@ public:
         for (auto& i : in) sensitive << i;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
 
 private:
     void compute() {

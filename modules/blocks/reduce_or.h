@@ -6,11 +6,12 @@
 #include <systemc>
 
 #include "core/comb_delay.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned W, unsigned LO = 0>
-class reduce_or : public sc_core::sc_module {
+class reduce_or : public sc_core::sc_module, public timed_block {
     static_assert(LO < W && W <= 64, "at least one wire in the gate");
 
 public:
@@ -26,7 +27,7 @@ public:
         sensitive << x;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
 
 private:
     void compute() { drv_.drive((x.read().to_uint64() >> LO) != 0); }

@@ -9,11 +9,12 @@
 
 #include "core/comb_delay.h"
 #include "core/report_ids.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned W>
-class reg : public sc_core::sc_module {
+class reg : public sc_core::sc_module, public timed_block {
 public:
     using word = sc_dt::sc_uint<W>;
     sc_core::sc_in<bool> ctl{"ctl"};
@@ -35,6 +36,11 @@ public:
 
     const sc_core::sc_time& clk_to_q() const { return drv_.delay(); }
     const sc_core::sc_time& setup() const { return setup_; }
+    // timed_block: a path starts at q (clock-to-q) and ends at d.
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
+    const sc_core::sc_port_base* clock_port() const override { return &ctl; }
+    const sc_core::sc_port_base* data_port() const override { return &d; }
+    const sc_core::sc_time& setup_time() const override { return setup_; }
     unsigned violations() const { return violations_; }
 
 private:

@@ -13,6 +13,7 @@
 
 #include "core/comb_delay.h"
 #include "core/report_ids.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
@@ -23,7 +24,7 @@ inline const sc_core::sc_time rom_access{4000, sc_core::SC_PS};
 }  // namespace delay_default
 
 template <unsigned AW, unsigned DW>
-class rom : public sc_core::sc_module {
+class rom : public sc_core::sc_module, public timed_block {
     static_assert(AW >= 1 && AW <= 20 && DW >= 1 && DW <= 64, "address and data widths");
 
 public:
@@ -52,7 +53,7 @@ public:
         sensitive << addr;
     }
 
-    const sc_core::sc_time& delay() const { return drv_.delay(); }
+    const sc_core::sc_time& delay() const override { return drv_.delay(); }
     uint64_t word(uint64_t a) const { return a < content_.size() ? content_[a] : blank_; }
 
 private:

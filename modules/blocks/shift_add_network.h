@@ -20,6 +20,7 @@
 #include "blocks/constant.h"
 #include "blocks/inverter_bank.h"
 #include "core/report_ids.h"
+#include "core/timed_block.h"
 #include "blocks/shifter.h"
 
 namespace shading {
@@ -31,7 +32,7 @@ struct sa_term {
 };
 
 template <unsigned WIN, unsigned W, bool IN_SIGNED = false>
-class shift_add_network : public sc_core::sc_module {
+class shift_add_network : public sc_core::sc_module, public timed_block {
 public:
     using in_word = sc_dt::sc_uint<WIN>;
     using word = sc_dt::sc_uint<W>;
@@ -100,7 +101,7 @@ public:
     const std::vector<sa_term>& terms() const { return terms_; }
     // Slowest input-to-y path, summed from the adders' and the inverter bank's own delays while
     // the tree was wired (callers need it for their clock-phase requirements).
-    const sc_core::sc_time& delay() const { return delay_; }
+    const sc_core::sc_time& delay() const override { return delay_; }
 
 private:
     // Balanced tree over the given terms; returns the net carrying their sum. `arrival` becomes

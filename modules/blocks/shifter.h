@@ -9,11 +9,12 @@
 #include <systemc>
 
 #include "formats/fixed_point.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned WIN, unsigned WOUT, bool IN_SIGNED = false>
-class shifter : public sc_core::sc_module {
+class shifter : public sc_core::sc_module, public timed_block {
     static_assert(WIN <= 64 && WOUT <= 64, "widths");
 
 public:
@@ -27,6 +28,7 @@ public:
     }
 
     int shift() const { return shift_; }
+    const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }  // wiring
 
 private:
     void compute() {

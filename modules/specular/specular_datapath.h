@@ -15,6 +15,7 @@
 #include "blocks/mul.h"
 #include "monitors/range_checker.h"
 #include "blocks/reg.h"
+#include "blocks/wire.h"
 #include "monitors/timing_checker.h"
 
 namespace shading {
@@ -65,6 +66,7 @@ public:
     mul<WA, 32, 27, spec::mul10_drop(FA), false, true> mul10;         // a x Q2.30s -> Q12.15s floor
     adder<27, 16, 16, true, false> add11;                             // Q12.15s + Q1.15 -> Q1.15
     mul<16, 8, 17, spec::out_drop> mul12, mul13, mul14;               // Q1.15 x 8.0 -> Q9.8 floor
+    wire<bool> out29;
 
     // Assertion monitors (not hardware): input ranges and strobe timing.
     range_checker<WN> chk_in16_n;
@@ -82,6 +84,7 @@ public:
           mul10("mul10", t.multiplier),
           add11("add11", mode, spec::brdf_sat_lo, spec::brdf_sat_hi, t.adder),
           mul12("mul12", t.multiplier), mul13("mul13", t.multiplier), mul14("mul14", t.multiplier),
+          out29("out29"),
           chk_in16_n("chk_in16_n", n_lo, n_hi, n_result),
           chk_in18_cos("chk_in18_cos", 0, spec::cos_one,
                        mode == overflow_mode::saturate
@@ -110,27 +113,12 @@ public:
         sc_core::sc_in<bool>* strobes[] = {&ctl15, &ctl17, &ctl20, &ctl22, &ctl24};
         for (std::size_t i = 0; i < 5; ++i) chk_timing.ctl[i](*strobes[i]);
         chk_timing.valid(ctl17);
-        chk_timing.set_path(1, rg2_to_outputs());
-        chk_timing.set_path(2, rg3.clk_to_q() + mul12.delay());
-        chk_timing.set_path(3, rg4.clk_to_q() + mul13.delay());
-        chk_timing.set_path(4, rg5.clk_to_q() + mul14.delay());
-
-        // UA 60553, Fig. 3: output 29 is the write strobe of RG2 itself. SystemC cannot bind one
-        // net to an input and an output pin, so this zero-delay process is that wire.
-        SC_METHOD(wire_out29);
-        sensitive << ctl17;
+        // UA 60553, Fig. 3: output 29 is the write strobe of RG2 itself.
+        out29.x(ctl17); out29.y(out29_valid);
     }
 
-    // RG2 -> (MUL7 | INV8) -> ADD9 -> MUL10 -> ADD11 -> MUL12..14: the critical path of Fig. 3.
-    sc_core::sc_time rg2_to_outputs() const {
-        return rg2.clk_to_q() + std::max(mul7.delay(), inv8.delay()) + add9.delay() +
-               mul10.delay() + add11.delay() + mul12.delay();
-    }
-    // From a change of `a` to the outputs, for the derived device's RG1 path.
-    sc_core::sc_time a_to_outputs() const { return mul10.delay() + add11.delay() + mul12.delay(); }
-
-private:
-    void wire_out29() { out29_valid.write(ctl17.read()); }
+    // RG2's path to the outputs, the critical path of Fig. 3, derived from the elaborated design.
+    const sc_core::sc_time& rg2_to_outputs() const { return chk_timing.path(1); }
 };
 
 }  // namespace shading

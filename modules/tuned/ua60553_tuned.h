@@ -59,8 +59,6 @@ public:
         add15.a(mul6_n_x_k); add15.b(node32_k); add15.cin(node30_carry0); add15.s(add15_a_linear);
         or_n.x(rg1_n); or_n.y(or_n_ge2);
         key_a.x(add15_a_linear); key_a.pass(or_n_ge2); key_a.y(a_coef);
-        chk_timing.set_path(0, rg1.clk_to_q() + std::max(mul6.delay() + add15.delay(), or_n.delay()) +
-                                   key_a.delay() + a_to_outputs());
     }
 };
 

@@ -28,7 +28,6 @@ public:
           rom("rom", std::vector<uint64_t>(ua22802::a_rom_content.begin(), ua22802::a_rom_content.end()),
               rom_access) {
         rom.addr(rg1_n); rom.data(a_coef);
-        chk_timing.set_path(0, rg1.clk_to_q() + rom.delay() + a_to_outputs());
     }
 };
 

@@ -100,8 +100,13 @@ INSTANTIATE_TEST_SUITE_P(Mode, UA60553Random, ::testing::Values(overflow_mode::s
 // RG2 -> MUL7 -> ADD9 -> MUL10 -> ADD11 -> MUL12. With the default delays that is
 // 0.2 + 3 + 1 + 3 + 1 + 3 = 11.2 ns (hand sum).
 TEST(UA60553Timing, CriticalPathIsTheHandSumOfTheDefaultDelays) {
-    device_ua60553 dut("dut");
+    std::vector<surface> s{{10, {255, 255, 255}, {0x7000}}};
+    bench_t bench("tb", s, strobe_timing{}, golden_for(overflow_mode::saturate));
+    sc_core::sc_start(sc_core::SC_ZERO_TIME);  // the paths are derived at end of elaboration
+    const auto& dut = bench.dut;
     EXPECT_EQ(dut.rg2_to_outputs(), sc_time(11200, SC_PS));
+    EXPECT_EQ(dut.chk_timing.critical_path(1).to_string(),
+              "rg2 -> mul7 -> add9 -> mul10 -> add11 -> mul12 = 11.2 ns");
     EXPECT_EQ(dut.chk_timing.path(0), sc_time(11200, SC_PS));  // RG1 -> MUL6 -> ADD15 -> MUL10 ...
     EXPECT_EQ(dut.chk_timing.path(2), sc_time(3200, SC_PS));   // RG3 -> MUL12
 }

@@ -1,0 +1,22 @@
+// The timing interface every hardware block in modules/blocks implements, so core/timing_graph.h
+// can derive a top's paths from its elaborated port bindings instead of hand-written sums.
+// A combinational block: delay() from any input to any output (0 for wiring and constants).
+// A register: delay() is clock-to-output; clock_port() and data_port() name its strobe and data
+// inputs, where combinational paths end (the register is where a path starts again).
+#pragma once
+
+#include <systemc>
+
+namespace shading {
+
+class timed_block {
+public:
+    virtual ~timed_block() = default;
+    virtual const sc_core::sc_time& delay() const = 0;
+    virtual const sc_core::sc_port_base* clock_port() const { return nullptr; }
+    virtual const sc_core::sc_port_base* data_port() const { return nullptr; }
+    virtual const sc_core::sc_time& setup_time() const { return sc_core::SC_ZERO_TIME; }
+    bool is_register() const { return clock_port() != nullptr; }
+};
+
+}  // namespace shading
