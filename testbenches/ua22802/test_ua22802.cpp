@@ -3,6 +3,8 @@
 // process under gtest_discover_tests).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <random>
@@ -137,6 +139,27 @@ TEST(UA22802, CheckerCatchesAWrongGoldenModel) {
     ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
     EXPECT_EQ(bench.checker.mismatches(), 3u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
+}
+
+TEST(UA22802Trace, MissingTraceFolderIsCreatedAndTheTestsVcdWritten) {
+    // SHADING_TRACE names a folder that does not exist yet (README: SHADING_TRACE=/tmp/vcd): the run
+    // creates it and writes <folder>/<Suite.Test>.vcd with the device's nets (SystemC's E701 for an
+    // unopenable file used to abort the test).
+    const std::string root = ::testing::TempDir() + "shading_trace_missing_folder";
+    const std::string dir = root + "/vcd";
+    std::filesystem::remove_all(root);
+    ASSERT_FALSE(std::filesystem::exists(root));
+    ASSERT_EQ(setenv("SHADING_TRACE", dir.c_str(), 1), 0);
+    std::vector<surface> s{{5, {1, 2, 3}, {0x7000, 0x7100}}};
+    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
+    ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
+    const std::string vcd = dir + "/UA22802Trace.MissingTraceFolderIsCreatedAndTheTestsVcdWritten.vcd";
+    ASSERT_TRUE(std::filesystem::exists(vcd)) << vcd;
+    const auto content = vcd_read(vcd);
+    EXPECT_EQ(content.width.count("SystemC.tb.dut.rg2_cos[15:0]"), 1u);
+    EXPECT_EQ(content.width.count("SystemC.tb.out25_r[16:0]"), 1u);
+    EXPECT_GT(content.end, 0) << "no value changes were written";
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
 }
 
 TEST(UA22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
