@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -114,6 +115,10 @@ public:
     const std::string& mode_name() const { return mode_name_; }
     overflow_mode mode() const { return mode_name_ == "wrap" ? overflow_mode::wrap : overflow_mode::saturate; }
     bool vcd() const { return !no_vcd_; }
+    // A default stem chosen after parsing (e.g. by a device choice); --vcd still wins.
+    void default_vcd(const std::string& stem) {
+        if (app.count("--vcd") == 0) vcd_ = stem;
+    }
     const std::string& vcd_stem() const { return vcd_; }
 
     // Traces the whole bench into the VCD (unless --no-vcd), runs the simulation up to `limit`
@@ -122,6 +127,8 @@ public:
     bool simulate(Bench& bench, const sc_core::sc_time& limit = sc_core::sc_time(1, sc_core::SC_SEC)) {
         std::unique_ptr<vcd_file> vcd;
         if (!no_vcd_) {
+            const auto dir = std::filesystem::path(vcd_).parent_path();
+            if (!dir.empty()) std::filesystem::create_directories(dir);  // traces/ in a fresh tree
             vcd = std::make_unique<vcd_file>(vcd_);
             vcd->trace(bench);
         }

@@ -100,6 +100,7 @@ int sc_main(int argc, char* argv[]) {
     run.app.add_option("--t-low-ns", o.t_low_ns, "ctl17 low phase = settling time T (Fig. 3)")->check(CLI::PositiveNumber);
     run.app.add_option("--t-high-ns", o.t_high_ns, "ctl17 high phase")->check(CLI::PositiveNumber);
     if (auto rc = run.parse(argc, argv)) return *rc;
+    if (o.generator != "patent") run.default_vcd("traces/ua60553_" + o.generator);
 
     const overflow_mode mode = run.mode();
     if (o.generator == "patent")
