@@ -33,4 +33,13 @@ uint32_t cos_code(double c) {
     return static_cast<uint32_t>(scaled);
 }
 
+uint32_t ksi_code(double ks_times_i) {
+    const double full = static_cast<double>(spec::ksi_fmt.mask());  // 255
+    return static_cast<uint32_t>(std::round(std::clamp(ks_times_i, 0.0, 1.0) * full));
+}
+
+double device_out_value(uint64_t out_code) {
+    return static_cast<double>(out_code & spec::out_fmt.mask()) / static_cast<double>(1u << spec::out_fmt.frac);
+}
+
 }  // namespace shading::scene

@@ -1,0 +1,50 @@
+// 8-bit RGB images: PNG output (libpng), conversion from the references' real images, a heat map
+// for error images, and a side-by-side sheet.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene/shade.h"
+
+namespace shading::scene {
+
+struct rgb_image {
+    unsigned width = 0, height = 0;
+    std::vector<uint8_t> data;  // R, G, B per pixel, rows from the top
+    rgb_image() = default;
+    rgb_image(unsigned w, unsigned h, uint8_t fill = 0)
+        : width(w), height(h), data(static_cast<std::size_t>(w) * h * 3, fill) {}
+    uint8_t* at(unsigned x, unsigned y) { return &data[(static_cast<std::size_t>(y) * width + x) * 3]; }
+    const uint8_t* at(unsigned x, unsigned y) const { return &data[(static_cast<std::size_t>(y) * width + x) * 3]; }
+};
+
+class image_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Writes an 8-bit RGB PNG. Throws image_error naming the file if it cannot be written; a partly
+// written file is removed.
+void save_png(const rgb_image& img, const std::string& path);
+
+// Rounds to nearest (values are already clamped to [0, 255]).
+rgb_image to_rgb8(const shaded_image& s);
+
+// Per pixel, the largest absolute channel difference |a - b| (8-bit units). Same sizes required.
+std::vector<double> abs_error(const shaded_image& a, const shaded_image& b);
+
+// A heat map of `values` (width * height, row-major): 0 black, then blue, red, yellow, white at
+// `full_scale` and above. Pixels where `mask` (if given) is 0 are drawn dark grey.
+rgb_image heat_map(const std::vector<double>& values, unsigned width, unsigned height, double full_scale,
+                   const std::vector<uint8_t>* mask = nullptr);
+
+// Images side by side on a dark background with `gap` pixels between them; each image gets its
+// label (if any) printed above it in a 5x7 pixel font (A-Z, 0-9 and . , : - + = / ( ) % _ and
+// space; lower case printed as upper case; other characters as '?').
+rgb_image side_by_side(const std::vector<rgb_image>& images, const std::vector<std::string>& labels = {},
+                       unsigned gap = 8);
+
+}  // namespace shading::scene

@@ -1,0 +1,70 @@
+// The two per-pixel references, double precision, every operation counted (counted.h):
+//  (a) Phong with exact cos^n, Blinn's N.H: what users compare against;
+//  (b) the same, with the specular term from a specular device's bit-accurate golden model
+//      (UA 60553 with the patent's or a tuned generator, or the UA 22802 ROM prototype).
+// So the device's BRDF error is (b) against (a), and an interpolating pipeline's error is measured
+// against (b). Both shade with
+//   I_c = 255 * (ambient_c + sum over lights with N.L > 0 of I_l,c * (k_d,c * N.L + k_s,c * S))
+// where S = max(N.H, 0)^n for (a) and the device's output for (b); images are clamped to [0, 255].
+// The specular term is gated by N.L > 0 (no highlight on a surface the light does not reach).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "formats/fixed_point.h"
+#include "scene/raster.h"
+
+namespace shading::scene {
+
+enum class specular_device { patent, minimax, rom_matched, ua22802 };
+const char* device_name(specular_device d);
+// "patent", "minimax", "rom_matched", "ua22802"; throws scene_error otherwise.
+specular_device parse_device(const std::string& name);
+std::vector<std::string> device_names();
+
+struct device_config {
+    specular_device device = specular_device::patent;
+    overflow_mode mode = overflow_mode::saturate;
+};
+
+// The device's out25..27 codes (Q9.8) for exponent n, the Q1.15 cos code and the 8-bit k_s*I codes.
+std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, uint32_t cos_code,
+                                        const std::array<uint64_t, 3>& ksi);
+
+// x^n for an integer n >= 1 by left-to-right binary exponentiation: floor(log2 n) squarings and
+// popcount(n) - 1 further multiplications, all counted; exact to double rounding.
+cnum pow_int(cnum x, unsigned n);
+
+// One pixel, given its geometry. Values in 8-bit units, not yet clamped.
+rgb shade_phong(const pixel_geometry& g, const material& m, const std::vector<light>& lights);
+rgb shade_device(const pixel_geometry& g, const material& m, const std::vector<light>& lights,
+                 const device_config& dev);
+
+// An image of reals in 8-bit units (clamped to [0, 255], not rounded); empty pixels are 0.
+struct shaded_image {
+    unsigned width = 0, height = 0;
+    std::vector<rgb> value;
+    std::vector<uint8_t> covered;
+};
+
+// Operation counts over a frame: geometry (barycentrics, normal, V, L, H) and shading (dots, cos^n,
+// colour), summed over the covered pixels. The rasteriser's coverage and depth test, shared by every
+// path, and per-frame constants (k_d*I, the device's codes, a directional L) are not counted.
+struct render_stats {
+    op_counts geometry, shading;
+    std::size_t pixels = 0;
+    double seconds = 0.0;
+    op_counts total() const {
+        op_counts t = geometry;
+        t += shading;
+        return t;
+    }
+};
+
+shaded_image render_phong(const rasterised& r, render_stats* stats = nullptr);
+shaded_image render_device(const rasterised& r, const device_config& dev, render_stats* stats = nullptr);
+
+}  // namespace shading::scene

@@ -1,0 +1,132 @@
+// Renders a scene's two per-pixel references to PNG: Phong with exact cos^n, and per-pixel shading
+// through a specular device's bit-accurate golden model; prints the counted operations per pixel,
+// the device image's error against Phong and the time taken.
+//   build/bin/render_reference --scene head --size 256 --device minimax --out out/scene
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "scene/image.h"
+#include "scene/raster.h"
+#include "scene/shade.h"
+
+using namespace shading;
+using namespace shading::scene;
+
+namespace {
+void print_counts(const char* what, const render_stats& st) {
+    const double n = static_cast<double>(st.pixels);
+    auto row = [n](const char* part, const op_counts& c) {
+        std::printf("  %-9s mul %6.2f  div %5.2f  sqrt %5.2f  add %6.2f  cmp %5.2f  long (mul+div+sqrt) %6.2f\n",
+                    part, c.mul / n, c.div / n, c.sqrt / n, c.add / n, c.cmp / n, c.long_ops() / n);
+    };
+    std::printf("%s: %zu pixels shaded in %.3f s (%.2f us/pixel); operations per pixel:\n", what, st.pixels,
+                st.seconds, 1e6 * st.seconds / n);
+    row("geometry", st.geometry);
+    row("shading", st.shading);
+    row("total", st.total());
+}
+}  // namespace
+
+int main(int argc, char* argv[]) {
+    CLI::App app{"Per-pixel reference renders (Phong, and shading through a specular device's golden model) to PNG"};
+    std::string scene_arg = "head", out_dir = "out/scene", device_arg = "minimax", mode_arg = "saturate";
+    std::string data_dir = SHADING_SOURCE_DIR;
+    unsigned size = 256;
+    int n_override = 0;
+    double err_scale = 8.0, depth_step_arg = 0.02;
+    app.add_option("--scene", scene_arg, "built-in scene (sphere, torus, head) or a path to an OBJ file");
+    app.add_option("--size", size, "image width and height in pixels")->check(CLI::Range(1u, 8192u));
+    app.add_option("--device", device_arg, "specular device: patent, minimax, rom_matched, ua22802");
+    app.add_option("--mode", mode_arg, "overflow mode of the device's ADD11: saturate or wrap");
+    app.add_option("--n", n_override, "override the material's exponent n (1..1000)");
+    app.add_option("--error-scale", err_scale, "8-bit error shown as white in the heat map")->check(CLI::PositiveNumber);
+    app.add_option("--depth-step", depth_step_arg, "depth jump (world units) that splits a raster line")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--out", out_dir, "output folder");
+    app.add_option("--data-dir", data_dir, "repository root holding data/head/ (for the built-in head)");
+    CLI11_PARSE(app, argc, argv);
+
+    try {
+        if (mode_arg != "saturate" && mode_arg != "wrap") throw scene_error("unknown --mode '" + mode_arg + "'");
+        const device_config dev{parse_device(device_arg),
+                                mode_arg == "wrap" ? overflow_mode::wrap : overflow_mode::saturate};
+        // A name that is no file and does not end in .obj is taken as a built-in scene's name (so an
+        // unknown one is reported as such, with the list of names).
+        const bool looks_like_obj = scene_arg.size() > 4 && scene_arg.substr(scene_arg.size() - 4) == ".obj";
+        const bool builtin = !looks_like_obj && !std::filesystem::is_regular_file(scene_arg);
+        world s = builtin ? builtin_scene(scene_arg, data_dir, size, size) : obj_scene(scene_arg, size, size);
+        if (n_override != 0) {
+            if (n_override < 1 || n_override > 1000) throw scene_error("--n must be in 1..1000");
+            for (auto& o : s.objects) o.mat.n = static_cast<unsigned>(n_override);
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        const rasterised r = rasterise(s);
+        const double t_raster = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+        render_stats sp, sd;
+        const shaded_image phong = render_phong(r, &sp);
+        const shaded_image device = render_device(r, dev, &sd);
+
+        // NMSE of the device image against Phong over the covered pixels and channels.
+        double num = 0.0, den = 0.0, worst = 0.0;
+        for (std::size_t i = 0; i < phong.value.size(); ++i) {
+            if (!phong.covered[i]) continue;
+            for (int c = 0; c < 3; ++c) {
+                const double d = device.value[i][c] - phong.value[i][c];
+                num += d * d;
+                den += phong.value[i][c] * phong.value[i][c];
+                worst = std::max(worst, std::abs(d));
+            }
+        }
+        const auto err = abs_error(device, phong);
+
+        // The places where the visible surface jumps along each line, drawn over a dimmed Phong image:
+        // depth steps and object changes red, coverage edges green (on the first covered pixel).
+        rgb_image edges = to_rgb8(phong);
+        for (auto& v : edges.data) v = static_cast<uint8_t>(v / 3);
+        std::size_t n_steps = 0, n_cover = 0;
+        for (unsigned y = 0; y < r.height; ++y)
+            for (const discontinuity& d : line_discontinuities(r, y, depth_step_arg)) {
+                const bool step = d.kinds & (depth_step | object_change);
+                (step ? n_steps : n_cover) += 1;
+                const unsigned x = (d.kinds & coverage_end) && !step ? d.x - 1 : std::min(d.x, r.width - 1);
+                uint8_t* p = edges.at(x, y);
+                p[0] = step ? 255 : 0;
+                p[1] = step ? 40 : 200;
+                p[2] = step ? 40 : 0;
+            }
+
+        std::filesystem::create_directories(out_dir);
+        const std::string dname = device_name(dev.device);
+        const rgb_image a = to_rgb8(phong), b = to_rgb8(device);
+        const rgb_image h = heat_map(err, err.empty() ? 0 : phong.width, phong.height, err_scale, &phong.covered);
+        save_png(a, out_dir + "/phong.png");
+        save_png(b, out_dir + "/device_" + dname + ".png");
+        save_png(h, out_dir + "/error_" + dname + ".png");
+        save_png(edges, out_dir + "/discontinuities.png");
+        char label[64];
+        std::snprintf(label, sizeof label, "ERROR X%.0f (WHITE = %.0f)", 255.0 / err_scale, err_scale);
+        save_png(side_by_side({a, b, h}, {"PHONG, EXACT COS^N", "DEVICE " + dname + " (" + mode_arg + ")", label}),
+                 out_dir + "/sheet_" + dname + ".png");
+
+        std::printf("scene %s, %ux%u, %zu triangles set up, %zu pixels covered; rasterised in %.3f s\n",
+                    s.name.c_str(), r.width, r.height, r.setups.size(), r.covered_pixels(), t_raster);
+        std::printf("material n = %u; device %s, %s\n", s.objects.front().mat.n, dname.c_str(), mode_arg.c_str());
+        print_counts("Phong reference", sp);
+        print_counts("device reference", sd);
+        std::printf("discontinuities along the lines: %zu depth steps (> %g) or object changes, %zu coverage edges\n",
+                    n_steps, depth_step_arg, n_cover);
+        std::printf("device vs Phong: NMSE %.3e, largest error %.2f (8-bit levels)\n", den > 0 ? num / den : 0.0, worst);
+        std::printf("wrote %s/{phong,device_%s,error_%s,sheet_%s,discontinuities}.png\n", out_dir.c_str(), dname.c_str(), dname.c_str(),
+                    dname.c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "render_reference: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
