@@ -78,7 +78,8 @@ struct pixel_geometry {
     cvec3 p, n, v;       // position, unit normal, unit vector to the eye
     std::vector<cvec3> l, h;  // per light: unit L, unit Blinn half vector H = (L + V)/|L + V|
 };
-// Precondition: r.covered(x, y).
+// Precondition: r.covered(x, y). `ops` may be nullptr: the same values, uncounted (e.g. for a
+// pipeline that reads N.L and N.H at its sample points: dot(g.n, g.l[i]), dot(g.n, g.h[i])).
 pixel_geometry geometry_at(const rasterised& r, unsigned x, unsigned y, op_counts* ops);
 
 }  // namespace shading::scene

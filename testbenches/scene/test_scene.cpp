@@ -422,3 +422,16 @@ TEST(SceneImage, HeatMapEnds) {
     for (int c = 0; c < 3; ++c) EXPECT_EQ(h.at(1, 0)[c], 255);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(h.at(2, 0)[c], 255);
 }
+
+// Uncounted geometry (ops = nullptr) gives the same values as counted geometry.
+TEST(SceneRaster, UncountedGeometrySameValues) {
+    const world s = builtin_scene("sphere", SHADING_SOURCE_DIR, 32, 32);
+    const rasterised r = rasterise(s);
+    ASSERT_TRUE(r.covered(16, 16));
+    op_counts ops;
+    const pixel_geometry a = geometry_at(r, 16, 16, &ops);
+    const pixel_geometry b = geometry_at(r, 16, 16, nullptr);
+    EXPECT_GT(ops.long_ops(), 0u);
+    EXPECT_EQ(dot(a.n, a.h[0]).value(), dot(b.n, b.h[0]).value());
+    EXPECT_EQ(dot(a.n, a.l[0]).value(), dot(b.n, b.l[0]).value());
+}
