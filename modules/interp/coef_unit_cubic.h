@@ -7,18 +7,19 @@
 // constant divider (div3_mode::exact). This class only instantiates and wires.
 #pragma once
 
-#include <algorithm>
 #include <systemc>
 #include <type_traits>
 #include <vector>
 
-#include "formats/interp_formats.h"
 #include "blocks/const_div.h"
 #include "blocks/div3_shift_add.h"
-#include "monitors/phase_checker.h"
 #include "blocks/reg.h"
 #include "blocks/shift_add_network.h"
 #include "blocks/shifter.h"
+#include "core/timing_graph.h"
+#include "formats/interp_formats.h"
+#include "interp/interp_delays.h"
+#include "monitors/phase_checker.h"
 
 namespace shading {
 
@@ -69,7 +70,7 @@ public:
     sc_core::sc_signal<sum_t> a8_sum{"a8_sum"}, b_sum{"b_sum"}, c3_sum{"c3_sum"};
 
     // Blocks.
-    reg<WI> rg_i1{"rg_i1"}, rg_i2{"rg_i2"}, rg_i3{"rg_i3"}, rg_i4{"rg_i4"};
+    reg<WI> rg_i1, rg_i2, rg_i3, rg_i4;
     shift_add_network<WI, WS> net_a;  // Q8.8 -> Q16.8: 8 * (-S_A)
     shift_add_network<WI, WS> net_b;  // Q8.8 -> Q16.8: B
     shift_add_network<WI, WS> net_c;  // Q8.8 -> Q16.8: -S_C
@@ -77,13 +78,14 @@ public:
     div3_t div3_c{"div3_c"};          // Q16.8 / 3 -> Q16.16
     shifter<WS, WC, true> align_b{"align_b", interp::div3_shift};    // Q16.8 -> Q16.16, wiring
     shifter<WI, WC, false> align_d{"align_d", interp::div3_shift};   // Q8.8 -> Q16.16, wiring
-    // Assertion monitor (not hardware); requirements set in the constructor: see rg_to_outputs().
-    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
-                            "high: I1..I4 straight into rg_i1..4 (their setup time); low: rg_i clock-to-"
-                            "output -> shift-and-add networks -> /3 -> A..D before the rising edge"};
+    // Assertion monitor (not hardware). High: I1..I4 straight into rg_i1..4 (their setup time);
+    // low: rg_i clock-to-output -> networks -> /3 -> A..D before the rising edge. Derived from the
+    // elaborated blocks at end_of_elaboration.
+    phase_checker chk_clock{"chk_clock"};
 
-    explicit coef_unit_cubic(const sc_core::sc_module_name& name)
+    explicit coef_unit_cubic(const sc_core::sc_module_name& name, const interp_delays& t = {})
         : sc_module(name),
+          rg_i1("rg_i1", t.reg), rg_i2("rg_i2", t.reg), rg_i3("rg_i3", t.reg), rg_i4("rg_i4", t.reg),
           net_a("net_a", 4, SET == interp::sample_set::case1 ? coef_terms::a8_case1 : coef_terms::a8_case2),
           net_b("net_b", 4, SET == interp::sample_set::case1 ? coef_terms::b_case1 : coef_terms::b_case2),
           net_c("net_c", 4, SET == interp::sample_set::case1 ? coef_terms::c3_case1 : coef_terms::c3_case2) {
@@ -102,17 +104,10 @@ public:
         align_b.x(b_sum); align_b.y(b);
         align_d.x(held_i1); align_d.y(d);
         chk_clock.clk(clk);
-        chk_clock.set_min_high(std::max({rg_i1.setup(), rg_i2.setup(), rg_i3.setup(), rg_i4.setup()}));
-        chk_clock.set_min_low(rg_to_outputs());
     }
 
-    // Slowest path from the falling edge that latches the samples to A..D, which the next rising
-    // edge samples (the aligners are wiring; D = I1 needs only the clock-to-output).
-    sc_core::sc_time rg_to_outputs() const {
-        const auto q = std::max({rg_i1.clk_to_q(), rg_i2.clk_to_q(), rg_i3.clk_to_q(), rg_i4.clk_to_q()});
-        return q + std::max({net_a.delay() + div3_a.delay(), net_b.delay(), net_c.delay() + div3_c.delay()});
-    }
-    // Shortest clock phases this unit works with (checked by chk_clock).
+    void end_of_elaboration() override { chk_clock.derive(timing_graph(*this)); }
+    // Shortest clock phases this unit works with (checked by chk_clock; after elaboration).
     const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
     const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 };

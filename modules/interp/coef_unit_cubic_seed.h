@@ -11,7 +11,6 @@
 // falling edge, A..D valid at the next rising edge. This class only instantiates and wires.
 #pragma once
 
-#include <algorithm>
 #include <systemc>
 #include <type_traits>
 #include <vector>
@@ -24,8 +23,10 @@
 #include "blocks/reg.h"
 #include "blocks/shift_add_network.h"
 #include "blocks/shifter.h"
+#include "core/timing_graph.h"
 #include "formats/interp_formats.h"
 #include "interp/coef_unit_cubic.h"
+#include "interp/interp_delays.h"
 #include "monitors/phase_checker.h"
 
 namespace shading {
@@ -73,7 +74,7 @@ public:
     sc_core::sc_signal<bool> carry1{"carry1"};
 
     // Blocks.
-    reg<WI> rg_i1{"rg_i1"}, rg_i2{"rg_i2"}, rg_i3{"rg_i3"}, rg_i4{"rg_i4"};
+    reg<WI> rg_i1, rg_i2, rg_i3, rg_i4;
     shift_add_network<WI, WS> net_a_div, net_a_int;  // Q8.8 -> Q16.8
     shift_add_network<WI, WS> net_b;                 // Q8.8 -> Q16.8: B
     shift_add_network<WI, WS> net_c_div, net_c_int;  // Q8.8 -> Q16.8
@@ -83,23 +84,25 @@ public:
     shifter<WS, WC, true> align_c_int{"align_c_int", interp::div3_shift};  // Q16.8 -> Q16.16, wiring
     shifter<WS, WC, true> align_b{"align_b", interp::div3_shift};          // Q16.8 -> Q16.16, wiring
     shifter<WI, WC, false> align_d{"align_d", interp::div3_shift};         // Q8.8 -> Q16.16, wiring
-    inverter_bank<WC> inv_a{"inv_a"}, inv_c{"inv_c"};    // ~subtrahend (case 1: the integer part)
-    adder<WC, WC, WC, true, true> sub_a{"sub_a"};         // minuend + ~subtrahend + 1, Q16.16
-    adder<WC, WC, WC, true, true> sub_c{"sub_c"};
+    inverter_bank<WC> inv_a, inv_c;         // ~subtrahend (case 1: the integer part)
+    adder<WC, WC, WC, true, true> sub_a;    // minuend + ~subtrahend + 1, Q16.16
+    adder<WC, WC, WC, true, true> sub_c;
     constant<bool> k_carry1{"k_carry1", true};
-    // Assertion monitor (not hardware); requirements set in the constructor: see rg_to_outputs().
-    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
-                            "high: I1..I4 straight into rg_i1..4 (their setup time); low: rg_i clock-to-"
-                            "output -> shift-and-add networks -> /3 -> subtractors -> A..D before the "
-                            "rising edge"};
+    // Assertion monitor (not hardware). High: I1..I4 straight into rg_i1..4 (their setup time);
+    // low: rg_i clock-to-output -> networks -> /3 -> subtractors -> A..D before the rising edge.
+    // Derived from the elaborated blocks at end_of_elaboration.
+    phase_checker chk_clock{"chk_clock"};
 
-    explicit coef_unit_cubic_seed(const sc_core::sc_module_name& name)
+    explicit coef_unit_cubic_seed(const sc_core::sc_module_name& name, const interp_delays& t = {})
         : sc_module(name),
+          rg_i1("rg_i1", t.reg), rg_i2("rg_i2", t.reg), rg_i3("rg_i3", t.reg), rg_i4("rg_i4", t.reg),
           net_a_div("net_a_div", 4, case1 ? coef_terms::a_div_case1 : coef_terms::a_div_case2),
           net_a_int("net_a_int", 4, case1 ? coef_terms::a_int_case1 : coef_terms::a_int_case2),
           net_b("net_b", 4, case1 ? coef_terms::b_case1 : coef_terms::b_case2),
           net_c_div("net_c_div", 4, case1 ? coef_terms::c_div_case1 : coef_terms::c_div_case2),
-          net_c_int("net_c_int", 4, case1 ? coef_terms::c_int_case1 : coef_terms::c_int_case2) {
+          net_c_int("net_c_int", 4, case1 ? coef_terms::c_int_case1 : coef_terms::c_int_case2),
+          inv_a("inv_a", t.inverter), inv_c("inv_c", t.inverter),
+          sub_a("sub_a", overflow_mode::wrap, 0, 0, t.adder), sub_c("sub_c", overflow_mode::wrap, 0, 0, t.adder) {
         rg_i1.ctl(clk); rg_i1.d(i1); rg_i1.q(held_i1);
         rg_i2.ctl(clk); rg_i2.d(i2); rg_i2.q(held_i2);
         rg_i3.ctl(clk); rg_i3.d(i3); rg_i3.q(held_i3);
@@ -121,18 +124,10 @@ public:
         align_b.x(b_sum); align_b.y(b);
         align_d.x(held_i1); align_d.y(d);
         chk_clock.clk(clk);
-        chk_clock.set_min_high(std::max({rg_i1.setup(), rg_i2.setup(), rg_i3.setup(), rg_i4.setup()}));
-        chk_clock.set_min_low(rg_to_outputs());
     }
 
-    // Slowest path from the falling edge that latches the samples to A..D, which the next rising
-    // edge samples (the aligners are wiring; D = I1 needs only the clock-to-output).
-    sc_core::sc_time rg_to_outputs() const {
-        const auto q = std::max({rg_i1.clk_to_q(), rg_i2.clk_to_q(), rg_i3.clk_to_q(), rg_i4.clk_to_q()});
-        return q + std::max({coef_path(net_a_div, div3_a, net_a_int, inv_a, sub_a), net_b.delay(),
-                             coef_path(net_c_div, div3_c, net_c_int, inv_c, sub_c)});
-    }
-    // Shortest clock phases this unit works with (checked by chk_clock).
+    void end_of_elaboration() override { chk_clock.derive(timing_graph(*this)); }
+    // Shortest clock phases this unit works with (checked by chk_clock; after elaboration).
     const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
     const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 
@@ -142,14 +137,6 @@ private:
                               sc_core::sc_signal<coef_t>& inverted, sc_core::sc_out<coef_t>& out) {
         inv.x(subtrahend); inv.y(inverted);
         sub.a(minuend); sub.b(inverted); sub.cin(carry1); sub.s(out);
-    }
-    // Quotient branch network -> /3, integer branch network; the subtrahend passes the inverter.
-    sc_core::sc_time coef_path(const shift_add_network<WI, WS>& net_div, const div3_t& div3,
-                               const shift_add_network<WI, WS>& net_int, const inverter_bank<WC>& inv,
-                               const adder<WC, WC, WC, true, true>& sub) const {
-        const auto quotient = net_div.delay() + div3.delay() + (case1 ? sc_core::SC_ZERO_TIME : inv.delay());
-        const auto integer = net_int.delay() + (case1 ? inv.delay() : sc_core::SC_ZERO_TIME);
-        return std::max(quotient, integer) + sub.delay();
     }
 };
 

@@ -5,15 +5,16 @@
 // valid at the next rising edge; Q8.8 in, Q16.16 out (exact). Only instantiates and wires.
 #pragma once
 
-#include <algorithm>
 #include <systemc>
 #include <vector>
 
-#include "formats/interp_formats.h"
-#include "monitors/phase_checker.h"
 #include "blocks/reg.h"
 #include "blocks/shift_add_network.h"
 #include "blocks/shifter.h"
+#include "core/timing_graph.h"
+#include "formats/interp_formats.h"
+#include "interp/interp_delays.h"
+#include "monitors/phase_checker.h"
 
 namespace shading {
 
@@ -38,18 +39,19 @@ public:
     sc_core::sc_signal<sample_t> held_i1{"held_i1"}, held_i2{"held_i2"}, held_i3{"held_i3"};
     sc_core::sc_signal<sum_t> a_sum{"a_sum"}, b_sum{"b_sum"};
 
-    reg<WI> rg_i1{"rg_i1"}, rg_i2{"rg_i2"}, rg_i3{"rg_i3"};
+    reg<WI> rg_i1, rg_i2, rg_i3;
     shift_add_network<WI, WS> net_a{"net_a", 3, coef_terms::a_quad};  // Q8.8 -> Q16.8
     shift_add_network<WI, WS> net_b{"net_b", 3, coef_terms::b_quad};  // Q8.8 -> Q16.8
     shifter<WS, WC, true> align_a{"align_a", interp::div3_shift};     // Q16.8 -> Q16.16
     shifter<WS, WC, true> align_b{"align_b", interp::div3_shift};     // Q16.8 -> Q16.16
     shifter<WI, WC, false> align_c{"align_c", interp::div3_shift};    // Q8.8 -> Q16.16
-    // Assertion monitor (not hardware); requirements set in the constructor: see rg_to_outputs().
-    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
-                            "high: I1..I3 straight into rg_i1..3 (their setup time); low: rg_i clock-to-"
-                            "output -> shift-and-add networks -> a..c before the rising edge"};
+    // Assertion monitor (not hardware). High: I1..I3 straight into rg_i1..3 (their setup time);
+    // low: rg_i clock-to-output -> networks -> a..c before the rising edge. Derived from the
+    // elaborated blocks at end_of_elaboration.
+    phase_checker chk_clock{"chk_clock"};
 
-    explicit coef_unit_quad(const sc_core::sc_module_name& name) : sc_module(name) {
+    explicit coef_unit_quad(const sc_core::sc_module_name& name, const interp_delays& t = {})
+        : sc_module(name), rg_i1("rg_i1", t.reg), rg_i2("rg_i2", t.reg), rg_i3("rg_i3", t.reg) {
         rg_i1.ctl(clk); rg_i1.d(i1); rg_i1.q(held_i1);
         rg_i2.ctl(clk); rg_i2.d(i2); rg_i2.q(held_i2);
         rg_i3.ctl(clk); rg_i3.d(i3); rg_i3.q(held_i3);
@@ -62,17 +64,10 @@ public:
         align_b.x(b_sum); align_b.y(b);
         align_c.x(held_i1); align_c.y(c);
         chk_clock.clk(clk);
-        chk_clock.set_min_high(std::max({rg_i1.setup(), rg_i2.setup(), rg_i3.setup()}));
-        chk_clock.set_min_low(rg_to_outputs());
     }
 
-    // Slowest path from the falling edge that latches the samples to a..c, which the next rising
-    // edge samples (the aligners are wiring).
-    sc_core::sc_time rg_to_outputs() const {
-        return std::max({rg_i1.clk_to_q(), rg_i2.clk_to_q(), rg_i3.clk_to_q()}) +
-               std::max(net_a.delay(), net_b.delay());
-    }
-    // Shortest clock phases this unit works with (checked by chk_clock).
+    void end_of_elaboration() override { chk_clock.derive(timing_graph(*this)); }
+    // Shortest clock phases this unit works with (checked by chk_clock; after elaboration).
     const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
     const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 };

@@ -12,12 +12,15 @@
 #include <systemc>
 
 #include "core/report_ids.h"
+#include "core/timed_block.h"
 #include "formats/interp_formats.h"
 
 namespace shading {
 
 template <unsigned M>
-class fd_ctrl : public sc_core::sc_module {
+// timed_block as a clocked block: its outputs switch at the rising edge (no delay modelled), so the
+// timing graph starts paths there (the evaluator's high phase) and never runs through it.
+class fd_ctrl : public sc_core::sc_module, public timed_block {
 public:
     static constexpr unsigned n_pixels = 1u << M;
     static constexpr unsigned sel_hold = 0, sel_load = 1, sel_step = 2;
@@ -38,6 +41,9 @@ public:
         sensitive << clk.pos();
         dont_initialize();
     }
+
+    const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
+    const sc_core::sc_port_base* clock_port() const override { return &clk; }
 
 private:
     void on_clock() {

@@ -11,19 +11,20 @@
 // This class only instantiates and wires.
 #pragma once
 
-#include <algorithm>
 #include <systemc>
 #include <vector>
 
-#include "formats/interp_formats.h"
 #include "blocks/adder.h"
 #include "blocks/constant.h"
-#include "interp/fd_ctrl.h"
 #include "blocks/mux.h"
-#include "monitors/phase_checker.h"
 #include "blocks/reg.h"
 #include "blocks/shift_add_network.h"
 #include "blocks/shifter.h"
+#include "core/timing_graph.h"
+#include "formats/interp_formats.h"
+#include "interp/fd_ctrl.h"
+#include "interp/interp_delays.h"
+#include "monitors/phase_checker.h"
 
 namespace shading {
 
@@ -65,22 +66,25 @@ public:
     shift_add_network<WC, WF, true> setup_d3{"setup_d3", 1,
         {{0, S - 3 * SM + 2, false}, {0, S - 3 * SM + 1, false}}};                      // (4A + 2A)/N^3
 
-    mux<WF, interp::fd_mx_inputs> mx_p{"mx_p"}, mx_d1{"mx_d1"}, mx_d2{"mx_d2"}, mx_d3{"mx_d3"};
-    reg<WF> rg_p{"rg_p"}, rg_d1{"rg_d1"}, rg_d2{"rg_d2"}, rg_d3{"rg_d3"};
-    adder<WF, WF, WF, true, true> add_p{"add_p"};    // Q22.34 + Q22.34 -> Q22.34
-    adder<WF, WF, WF, true, true> add_d1{"add_d1"};  // Q22.34 + Q22.34 -> Q22.34
-    adder<WF, WF, WF, true, true> add_d2{"add_d2"};  // Q22.34 + Q22.34 -> Q22.34
+    mux<WF, interp::fd_mx_inputs> mx_p, mx_d1, mx_d2, mx_d3;
+    reg<WF> rg_p, rg_d1, rg_d2, rg_d3;
+    adder<WF, WF, WF, true, true> add_p, add_d1, add_d2;  // Q22.34 + Q22.34 -> Q22.34
     shifter<WF, WC, true> out_align{"out_align", -S};  // Q22.34 -> Q16.16, 18 low wires dropped (floor)
     constant<bool> k_carry0{"k_carry0", false};
     fd_ctrl<M> ctrl{"ctrl"};
-    // Assertion monitor (not hardware); requirements set in the constructor from the blocks'
-    // delays: see setup_to_rg() and rg_to_output().
-    phase_checker chk_clock{"chk_clock", sc_core::SC_ZERO_TIME, sc_core::SC_ZERO_TIME,
-                            "high: A..D -> set-up network -> MX (load) and fd_sel -> MX -> register "
-                            "inputs before the falling edge; low: RG_P clock-to-output -> i_px before "
-                            "the rising edge"};
+    // Assertion monitor (not hardware). High: at the accepting rising edge the controller selects
+    // LOAD and A..D may settle as late as that edge (fd_ctrl: stable from it to the falling edge), so
+    // A..D -> set-up network -> MX and fd_sel -> MX must reach the registers before the falling
+    // edge. Low: RG_P's new value on i_px (out_align is wiring) before the rising edge where valid
+    // says the pixel is there; the recurrence RG -> ADD -> MX -> RG, launched and captured by falling
+    // edges, may use both phases. Derived from the elaborated blocks at end_of_elaboration.
+    phase_checker chk_clock{"chk_clock"};
 
-    explicit fd_eval(const sc_core::sc_module_name& name) : sc_module(name) {
+    explicit fd_eval(const sc_core::sc_module_name& name, const interp_delays& t = {})
+        : sc_module(name), mx_p("mx_p", t.mux), mx_d1("mx_d1", t.mux), mx_d2("mx_d2", t.mux),
+          mx_d3("mx_d3", t.mux), rg_p("rg_p", t.reg), rg_d1("rg_d1", t.reg), rg_d2("rg_d2", t.reg),
+          rg_d3("rg_d3", t.reg), add_p("add_p", overflow_mode::wrap, 0, 0, t.adder),
+          add_d1("add_d1", overflow_mode::wrap, 0, 0, t.adder), add_d2("add_d2", overflow_mode::wrap, 0, 0, t.adder) {
         setup_p.x(d); setup_p.y(init_p);
         setup_d1.in[0](a); setup_d1.in[1](b); setup_d1.in[2](c); setup_d1.y(init_d1);
         setup_d2.in[0](a); setup_d2.in[1](b); setup_d2.y(init_d2);
@@ -105,28 +109,10 @@ public:
         ctrl.clk(clk); ctrl.start(start); ctrl.len(len);
         ctrl.fd_sel(fd_sel); ctrl.pixel(pixel); ctrl.valid(valid); ctrl.last(last);
         chk_clock.clk(clk);
-        chk_clock.set_min_high(setup_to_rg());
-        // The recurrence RG -> ADD -> MX -> RG is launched and captured by falling edges: it may
-        // use both phases, so the low phase only has to make up what the high phase lacks.
-        const auto loop = std::max({rg_p.clk_to_q(), rg_d1.clk_to_q(), rg_d2.clk_to_q()}) +
-                          std::max({add_p.delay(), add_d1.delay(), add_d2.delay()}) +
-                          std::max({mx_p.delay(), mx_d1.delay(), mx_d2.delay()});
-        const auto rest = loop > setup_to_rg() ? loop - setup_to_rg() : sc_core::SC_ZERO_TIME;
-        chk_clock.set_min_low(std::max(rg_to_output(), rest));
     }
 
-    // Slowest path launched by the rising edge into a register: the controller selects LOAD, and
-    // A..D may settle as late as that accepting edge (fd_ctrl: stable from it to the falling edge), so
-    // the set-up networks and the multiplexer must settle within the high phase. fd_sel -> MX
-    // alone (HOLD/STEP) is part of it.
-    sc_core::sc_time setup_to_rg() const {
-        return std::max({setup_d1.delay() + mx_d1.delay(), setup_d2.delay() + mx_d2.delay(),
-                         setup_d3.delay() + mx_d3.delay(), mx_p.delay()});  // setup_p is wiring
-    }
-    // RG_P's new value reaches i_px (out_align is wiring) before the rising edge where valid says
-    // the pixel is on the output.
-    sc_core::sc_time rg_to_output() const { return rg_p.clk_to_q(); }
-    // Shortest clock phases this unit works with (checked by chk_clock).
+    void end_of_elaboration() override { chk_clock.derive(timing_graph(*this), {&ctrl}); }
+    // Shortest clock phases this unit works with (checked by chk_clock; after elaboration).
     const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
     const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 

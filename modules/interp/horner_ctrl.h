@@ -24,12 +24,15 @@
 #include <sstream>
 #include <systemc>
 
-#include "formats/interp_formats.h"
 #include "core/report_ids.h"
+#include "core/timed_block.h"
+#include "formats/interp_formats.h"
 
 namespace shading {
 
-class horner_ctrl : public sc_core::sc_module {
+// timed_block as a clocked block: its outputs switch at the rising edge (no delay modelled), so the
+// timing graph starts paths there (the units' high phase) and never runs through it.
+class horner_ctrl : public sc_core::sc_module, public timed_block {
 public:
     static constexpr unsigned mx2_zero = 0, mx2_mul = 1, mx2_b = 2, mx2_c = 3, mx2_d = 4;
     static constexpr unsigned mx1_a = 0, mx1_rg = 1;
@@ -56,6 +59,9 @@ public:
         dont_initialize();
         bk_pass.initialize(true);  // idle: MX2 = 0 and BK pass make RG hold its value
     }
+
+    const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
+    const sc_core::sc_port_base* clock_port() const override { return &clk; }
 
 private:
     void on_clock() {

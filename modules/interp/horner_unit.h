@@ -11,15 +11,18 @@
 
 #include <systemc>
 
-#include "formats/interp_formats.h"
 #include "blocks/adder.h"
 #include "blocks/constant.h"
-#include "interp/horner_ctrl.h"
 #include "blocks/key_block.h"
 #include "blocks/mul.h"
 #include "blocks/mux.h"
-#include "monitors/phase_checker.h"
 #include "blocks/reg.h"
+#include "blocks/wire.h"
+#include "core/timing_graph.h"
+#include "formats/interp_formats.h"
+#include "interp/horner_ctrl.h"
+#include "interp/interp_delays.h"
+#include "monitors/phase_checker.h"
 
 namespace shading {
 
@@ -59,26 +62,26 @@ public:
     sc_core::sc_signal<horner_ctrl::step_code> step{"step"};
 
     // Blocks of Fig. 4 (names from the figure) and the controller.
-    reg<WC> rg{"rg"};
-    mux<WC, interp::horner_mx1_inputs> mx1{"mx1"};
-    horner_detail::mul_block mul{"mul"};  // Q16.16 x Q1.8 -> Q17.24, floor to Q16.16
-    mux<WC, interp::horner_mx2_inputs> mx2{"mx2"};
-    key_block<WC> bk{"bk"};
-    adder<WC, WC, WC, true, true> sm{"sm"};  // Q16.16 + Q16.16 -> Q16.16, wraps
+    reg<WC> rg;
+    mux<WC, interp::horner_mx1_inputs> mx1;
+    horner_detail::mul_block mul;  // Q16.16 x Q1.8 -> Q17.24, floor to Q16.16
+    mux<WC, interp::horner_mx2_inputs> mx2;
+    key_block<WC> bk;
+    adder<WC, WC, WC, true, true> sm;  // Q16.16 + Q16.16 -> Q16.16, wraps
     constant<coef_t> k_zero{"k_zero", coef_t(0)};
     constant<bool> k_carry0{"k_carry0", false};
+    wire<coef_t> out_wire{"out_wire"};  // RG's output is the unit's output
     horner_ctrl ctrl{"ctrl"};
-    // Assertion monitor (not hardware). High phase: the selects and the inputs A..D, t (driven
-    // after the accepting rising edge, as the handshake allows) must reach RG before it latches.
-    // Low phase: RG's new value must be on i_t at the rising edge where done is read. The loop
-    // RG -> MX1 -> MUL -> MX2 -> Sm -> RG takes clk_to_q + select_to_rg = min_low + min_high, so
-    // the two phase checks cover it.
-    phase_checker chk_clock{"chk_clock", select_to_rg(), rg.clk_to_q(),
-                            "high: selects, A, t -> MX1 -> MUL -> MX2 -> Sm -> RG input before the "
-                            "falling edge; low: RG clock-to-output -> i_t before the rising edge"};
+    // Assertion monitor (not hardware). High phase: the selects (from ctrl, at the rising edge) and
+    // the inputs A..D, t (driven after the accepting rising edge, as the handshake allows) must
+    // reach RG before it latches. Low phase: RG's new value must be on i_t at the rising edge where
+    // done is read. The loop RG -> MX1 -> MUL -> MX2 -> Sm -> RG spans both phases. Derived from
+    // the elaborated blocks at end_of_elaboration.
+    phase_checker chk_clock{"chk_clock"};
 
-    SC_HAS_PROCESS(horner_unit);
-    explicit horner_unit(const sc_core::sc_module_name& name) : sc_module(name) {
+    explicit horner_unit(const sc_core::sc_module_name& name, const interp_delays& dl = {})
+        : sc_module(name), rg("rg", dl.reg), mx1("mx1", dl.mux), mul("mul", dl.multiplier), mx2("mx2", dl.mux),
+          bk("bk", dl.gate), sm("sm", overflow_mode::wrap, 0, 0, dl.adder) {
         rg.ctl(clk); rg.d(sm_sum); rg.q(rg_value);
         mx1.in[horner_ctrl::mx1_a](a); mx1.in[horner_ctrl::mx1_rg](rg_value);
         mx1.sel(mx1_sel); mx1.y(mx1_operand);
@@ -93,22 +96,14 @@ public:
         ctrl.clk(clk); ctrl.start(start); ctrl.deg2(deg2); ctrl.t(t);
         ctrl.mx1_sel(mx1_sel); ctrl.mx2_sel(mx2_sel); ctrl.bk_pass(bk_pass); ctrl.step(step);
         ctrl.done(done); ctrl.busy(busy);
+        out_wire.x(rg_value); out_wire.y(i_t);
         chk_clock.clk(clk);
-        SC_METHOD(wire_out);  // RG's output is the unit's output: a zero-delay wire
-        sensitive << rg_value;
     }
 
-    // Slowest path into RG within a step: the selects change on the rising edge, RG latches on
-    // the falling edge half a period later.
-    sc_core::sc_time select_to_rg() const {
-        return mx1.delay() + mul.delay() + mx2.delay() + sm.delay();
-    }
-    // Shortest clock phases this unit works with (checked by chk_clock).
+    void end_of_elaboration() override { chk_clock.derive(timing_graph(*this), {&ctrl}); }
+    // Shortest clock phases this unit works with (checked by chk_clock; after elaboration).
     const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
     const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
-
-private:
-    void wire_out() { i_t.write(rg_value.read()); }
 };
 
 }  // namespace shading

@@ -1,7 +1,8 @@
 // Raster-line interpolator of seed 004 (SPEC 1.5): per interval of N = 2^M pixels the exact
 // intensities I1..I4 go in, the cubic coefficient unit forms A..D with shifts and adds, and the
 // forward-difference evaluator emits one pixel per clock. A device top: it only instantiates and
-// wires coef_unit_cubic<SET, DIV> -> fd_eval<M> and the ready gate; no arithmetic here.
+// wires the coefficient unit (coef_unit_cubic_t<SET, DIV, G>: /3 on the whole weighted sum or on
+// seed 004's partial sum) -> fd_eval<M> and the ready gate; no arithmetic here.
 //
 // Handshake and timing (decisions; seed 004 leaves them open, SPEC 6). Clock period T; the source
 // changes i1..i4, len and start only just after rising edges.
@@ -27,14 +28,17 @@
 #include <algorithm>
 #include <systemc>
 
-#include "formats/interp_formats.h"
-#include "interp/coef_unit_cubic.h"
-#include "interp/fd_eval.h"
 #include "blocks/interval_ready.h"
+#include "core/timing_graph.h"
+#include "formats/interp_formats.h"
+#include "interp/coef_unit_cubic_seed.h"
+#include "interp/fd_eval.h"
+#include "interp/interp_delays.h"
 
 namespace shading {
 
-template <unsigned M, interp::sample_set SET, interp::div3_mode DIV>
+template <unsigned M, interp::sample_set SET, interp::div3_mode DIV,
+          interp::div3_grouping G = interp::div3_grouping::whole_sum>
 class interp_line_unit : public sc_core::sc_module {
     using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
     using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
@@ -54,11 +58,12 @@ public:
     // Nets between the units: the coefficients, Q16.16 signed.
     sc_core::sc_signal<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
 
-    coef_unit_cubic<SET, DIV> coef{"coef"};  // I1..I4 (Q8.8) -> A..D (Q16.16), latency 1 clock
-    fd_eval<M> fd{"fd"};                     // A..D (Q16.16) -> one Q16.16 pixel per clock
-    interval_ready rdy{"rdy"};               // NOT valid OR last
+    coef_unit_cubic_t<SET, DIV, G> coef;  // I1..I4 (Q8.8) -> A..D (Q16.16), latency 1 clock
+    fd_eval<M> fd;                        // A..D (Q16.16) -> one Q16.16 pixel per clock
+    interval_ready rdy;                   // NOT valid OR last
 
-    explicit interp_line_unit(const sc_core::sc_module_name& name) : sc_module(name) {
+    explicit interp_line_unit(const sc_core::sc_module_name& name, const interp_delays& t = {})
+        : sc_module(name), coef("coef", t), fd("fd", t), rdy("rdy", t.gate) {
         coef.clk(clk);
         coef.i1(i1); coef.i2(i2); coef.i3(i3); coef.i4(i4);
         coef.a(a); coef.b(b); coef.c(c); coef.d(d);
@@ -69,32 +74,28 @@ public:
     }
 
     // The path that crosses the units: launched by the falling edge that latches the samples
-    // (rg_i clock-to-output -> network -> /3 -> A..D) and captured by the next falling edge in the
-    // evaluator's registers (-> set-up network -> MX), per coefficient and its consumers. It spans
-    // the low phase and then the high phase, so no phase holds it alone: coef's chk_clock holds its
-    // first part in the low phase (A..D before the rising edge) and fd's chk_clock the rest in the
-    // high phase (set-up from A..D settling as late as the accepting edge). Those two checks cover
-    // it (sample_to_load() <= min_low() + min_high(), tested), so the top needs no checker of its
-    // own; with a long enough period the path fits even when the low phase alone is short.
-    sc_core::sc_time sample_to_load() const {
-        const auto q = std::max({coef.rg_i1.clk_to_q(), coef.rg_i2.clk_to_q(), coef.rg_i3.clk_to_q(),
-                                 coef.rg_i4.clk_to_q()});
-        const auto at_a = q + coef.net_a.delay() + coef.div3_a.delay();
-        const auto at_b = q + coef.net_b.delay();  // align_b: wiring
-        const auto at_c = q + coef.net_c.delay() + coef.div3_c.delay();
-        const auto at_d = q;                       // D = I1 through align_d: wiring
-        const auto via_d1 = fd.setup_d1.delay() + fd.mx_d1.delay();  // A, B, C
-        const auto via_d2 = fd.setup_d2.delay() + fd.mx_d2.delay();  // A, B
-        const auto via_d3 = fd.setup_d3.delay() + fd.mx_d3.delay();  // A
-        const auto via_p = fd.mx_p.delay();                          // D (setup_p: wiring)
-        return std::max({at_a + std::max({via_d1, via_d2, via_d3}), at_b + std::max(via_d1, via_d2),
-                         at_c + via_d1, at_d + via_p});
+    // (rg_i clock-to-output -> networks -> /3 -> A..D) and captured by the next falling edge in the
+    // evaluator's registers (-> set-up network -> MX). It spans the low phase and then the high
+    // phase, so no phase holds it alone: coef's chk_clock holds its first part in the low phase
+    // (A..D before the rising edge) and fd's chk_clock the rest in the high phase (set-up from A..D
+    // settling as late as the accepting edge). Those two checks cover it (sample_to_load() <=
+    // min_low() + min_high(), tested), so the top needs no checker of its own. Derived from the
+    // elaborated blocks at end_of_elaboration.
+    void end_of_elaboration() override {
+        const timing_graph g(*this);
+        sample_to_load_ = g.longest_from_registers({&coef.rg_i1, &coef.rg_i2, &coef.rg_i3, &coef.rg_i4},
+                                                   {g.d_of(fd.rg_p), g.d_of(fd.rg_d1), g.d_of(fd.rg_d2),
+                                                    g.d_of(fd.rg_d3)});
     }
+    const timing_path& sample_to_load() const { return sample_to_load_; }
     // Shortest clock phases the joined unit works with: each unit's own requirement (their
     // chk_clock monitors check them; see sample_to_load() for the path between them).
     sc_core::sc_time min_high() const { return std::max(coef.min_high(), fd.min_high()); }
     sc_core::sc_time min_low() const { return std::max(coef.min_low(), fd.min_low()); }
     unsigned phase_violations() const { return coef.chk_clock.violations() + fd.chk_clock.violations(); }
+
+private:
+    timing_path sample_to_load_;
 };
 
 }  // namespace shading

@@ -6,16 +6,22 @@
 // equal to its path is a violation too: the register input would change at the latching instant
 // itself, which reg.h reports as a setup violation. A zero requirement is never violated.
 // Only phases whose both edges were seen are measured, so a partial phase before the clock's first
-// edge is ignored. Reported: the first `max_reports` violations (10 by default), one per violating
+// edge is ignored. Reported: the first `max_reports_` (10) violations, one per violating
 // edge, the last of them saying that later ones are only counted; violations() counts them all.
 // A short clock would otherwise print one report per clock for a whole run.
+// The requirements come from the unit's elaborated structure (derive(), core/timing_graph.h), not
+// from hand sums: a rewiring or a slower block moves them.
 #pragma once
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <systemc>
+#include <vector>
 
 #include "core/report_ids.h"
+#include "core/timed_block.h"
+#include "core/timing_graph.h"
 
 namespace shading {
 
@@ -24,9 +30,8 @@ public:
     sc_core::sc_in<bool> clk{"clk"};
 
     SC_HAS_PROCESS(phase_checker);
-    phase_checker(const sc_core::sc_module_name& name, const sc_core::sc_time& min_high,
-                  const sc_core::sc_time& min_low, std::string paths)
-        : sc_module(name), min_high_(min_high), min_low_(min_low), paths_(std::move(paths)) {
+    // Requirements 0 (never violated) until derive() sets them.
+    explicit phase_checker(const sc_core::sc_module_name& name) : sc_module(name) {
         SC_METHOD(on_rise);  // closes a low phase
         sensitive << clk.pos();
         dont_initialize();
@@ -35,12 +40,51 @@ public:
         dont_initialize();
     }
 
-    void set_min_high(const sc_core::sc_time& t) { min_high_ = t; }
-    void set_min_low(const sc_core::sc_time& t) { min_low_ = t; }
-    void set_max_reports(unsigned n) { max_reports_ = n; }
+    // Derives both requirements from the unit's timing graph `g` (build it at end_of_elaboration).
+    // The input pins and the `launch` blocks (controllers clocked on the rising edge, timed_block
+    // registers) change just after the rising edge; every other register latches on the falling
+    // edge. High phase: the longest path from an input pin or a launch block to a falling-edge
+    // register's data input, plus that register's setup time. Low phase: the longest path from a
+    // falling-edge register to the unit's outputs, which the rising edge samples; and a path between
+    // falling-edge registers, which has the whole period, needs from the low phase what the high
+    // phase leaves over.
+    void derive(const timing_graph& g, const std::vector<const sc_core::sc_object*>& launch = {}) {
+        std::vector<const sc_core::sc_object*> regs;
+        for (auto* r : g.registers())
+            if (std::find(launch.begin(), launch.end(), r) == launch.end()) regs.push_back(r);
+        timing_path high, loop;
+        sc_core::sc_time high_t, loop_t;
+        for (auto* r : regs) {
+            const sc_core::sc_time setup = dynamic_cast<const timed_block&>(*r).setup_time();
+            auto p = g.longest_from_channels(g.inputs(), {g.d_of(*r)});
+            if (!launch.empty()) {
+                const auto q = g.longest_from_registers(launch, {g.d_of(*r)});
+                if (q.found && (!p.found || q.delay > p.delay)) p = q;
+            }
+            if (p.found && (!high.found || p.delay + setup > high_t)) high = p, high_t = p.delay + setup;
+            const auto l = g.longest_from_registers(regs, {g.d_of(*r)});
+            if (l.found && (!loop.found || l.delay + setup > loop_t)) loop = l, loop_t = l.delay + setup;
+        }
+        const auto out = g.longest_from_registers(regs, g.outputs());
+        min_high_ = high_t;
+        min_low_ = std::max(out.found ? out.delay : sc_core::SC_ZERO_TIME,
+                            loop_t > high_t ? loop_t - high_t : sc_core::SC_ZERO_TIME);
+        std::ostringstream os;
+        os << "high: " << (high.found ? high.to_string() : "no path") << "; low: "
+           << (out.found ? out.to_string() : "no path");
+        if (loop.found) os << "; register to register over both phases: " << loop.to_string();
+        paths_ = os.str();
+        high_path_ = high;
+        out_path_ = out;
+        loop_path_ = loop;
+    }
+    // The paths derive() found: into a register in the high phase, to the outputs, and register to
+    // register (not found: no such path).
+    const timing_path& high_path() const { return high_path_; }
+    const timing_path& output_path() const { return out_path_; }
+    const timing_path& loop_path() const { return loop_path_; }
     const sc_core::sc_time& min_high() const { return min_high_; }
     const sc_core::sc_time& min_low() const { return min_low_; }
-    const std::string& paths() const { return paths_; }
     unsigned violations() const { return high_violations_ + low_violations_; }
     unsigned high_violations() const { return high_violations_; }
     unsigned low_violations() const { return low_violations_; }
@@ -84,7 +128,8 @@ private:
 
     sc_core::sc_time min_high_, min_low_;
     std::string paths_;
-    unsigned max_reports_ = 10;
+    timing_path high_path_, out_path_, loop_path_;
+    static constexpr unsigned max_reports_ = 10;
     sc_core::sc_time last_rise_, last_fall_;
     bool rise_seen_ = false, fall_seen_ = false;
     unsigned high_violations_ = 0, low_violations_ = 0;

@@ -30,6 +30,22 @@ int64_t aligned(int64_t v, int sh) {
 }
 int64_t fd_wrap(int64_t v) { return code_value(wrap_bits(v, fd_fmt.width), fd_fmt); }
 
+// The set-up values of the forward differences, codes with `frac` fraction bits.
+struct fd_setup {
+    int64_t p = 0, d1 = 0, d2 = 0, d3 = 0;
+};
+fd_setup fd_setup_values(const cubic_coefs& k, unsigned m, int frac) {
+    const int s = frac - coef_fmt.frac;  // alignment of a Q.16 code onto the FD bus
+    const int sm = static_cast<int>(m);
+    fd_setup r;
+    r.p = aligned(k.d, s);
+    // D3 = 6 A / N^3 = (4A + 2A) / N^3; D2 = 6 A / N^3 + 2 B / N^2; D1 = A/N^3 + B/N^2 + C/N.
+    r.d3 = fd_wrap(aligned(k.a, s - 3 * sm + 2) + aligned(k.a, s - 3 * sm + 1));
+    r.d2 = fd_wrap(aligned(k.a, s - 3 * sm + 2) + aligned(k.a, s - 3 * sm + 1) + aligned(k.b, s - 2 * sm + 1));
+    r.d1 = fd_wrap(aligned(k.a, s - 3 * sm) + aligned(k.b, s - 2 * sm) + aligned(k.c, s - sm));
+    return r;
+}
+
 }  // namespace
 
 int64_t golden_div3(int64_t x_q8, div3_mode mode) {
@@ -99,20 +115,8 @@ std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code,
     return rg;
 }
 
-fd_setup golden_fd_setup(const cubic_coefs& k, unsigned m, int frac) {
-    const int s = frac - coef_fmt.frac;  // alignment of a Q.16 code onto the FD bus
-    const int sm = static_cast<int>(m);
-    fd_setup r;
-    r.p = aligned(k.d, s);
-    // D3 = 6 A / N^3 = (4A + 2A) / N^3; D2 = 6 A / N^3 + 2 B / N^2; D1 = A/N^3 + B/N^2 + C/N.
-    r.d3 = fd_wrap(aligned(k.a, s - 3 * sm + 2) + aligned(k.a, s - 3 * sm + 1));
-    r.d2 = fd_wrap(aligned(k.a, s - 3 * sm + 2) + aligned(k.a, s - 3 * sm + 1) + aligned(k.b, s - 2 * sm + 1));
-    r.d1 = fd_wrap(aligned(k.a, s - 3 * sm) + aligned(k.b, s - 2 * sm) + aligned(k.c, s - sm));
-    return r;
-}
-
 std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac) {
-    fd_setup r = golden_fd_setup(k, m, frac);
+    fd_setup r = fd_setup_values(k, m, frac);
     const unsigned drop = static_cast<unsigned>(frac - coef_fmt.frac);
     std::vector<uint64_t> out;
     for (unsigned i = 0; i < len; ++i) {

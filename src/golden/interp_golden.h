@@ -38,10 +38,6 @@ inline uint64_t golden_horner(const cubic_coefs& k, uint64_t t_code, bool degree
 // Forward-difference evaluator for N = 2^m pixels, t = k/N: the set-up values on a bus with
 // `frac` fraction bits (fd_fmt.frac in the hardware; fewer to study the error growth), then
 // `len` outputs, each P truncated (floor) to coef_fmt bus bits.
-struct fd_setup {
-    int64_t p = 0, d1 = 0, d2 = 0, d3 = 0;  // codes with `frac` fraction bits
-};
-fd_setup golden_fd_setup(const cubic_coefs& k, unsigned m, int frac = fd_fmt.frac);
 std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac = fd_fmt.frac);
 
 // The raster-line interpolator (modules/interp_line_unit.h): per interval, I1..I4 (sample_fmt

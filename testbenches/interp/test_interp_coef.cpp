@@ -124,33 +124,6 @@ TEST(InterpCoefUnits, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     EXPECT_TRUE(problems.empty()) << joined(problems);
 }
 
-// Clock phases (chk_clock). The samples go straight into the registers, so the high phase needs
-// only their setup time (0). Low: from the latching falling edge, the register's clock-to-output
-// (0.2 ns) plus the slowest network path to a coefficient must end before the rising edge.
-// A shift-and-add network takes max(P tree, Q tree + inverter 0.1) + 1 ns for P + ~Q + 1, each
-// tree ceil(log2 terms) adders of 1 ns; the shift-and-add /3 (1 positive, 3 negative terms) is
-// max(0, 2 + 0.1) + 1 = 3.1 ns, the exact /3 a multiplier's 3 ns (hand sums, comb_delay.h).
-TEST(InterpCoefTiming, PhaseRequirementsAreTheHandSumsOfTheDefaultDelays) {
-    using interp::div3_mode;
-    using interp::sample_set;
-    coef_unit_cubic<sample_set::case1, div3_mode::shift_add> c1sa("c1sa");
-    coef_unit_cubic<sample_set::case1, div3_mode::exact> c1ex("c1ex");
-    coef_unit_cubic<sample_set::case2, div3_mode::shift_add> c2sa("c2sa");
-    coef_unit_cubic<sample_set::case2, div3_mode::exact> c2ex("c2ex");
-    coef_unit_quad quad("quad");
-    // Case 1: -S_C has 3 positive, 4 negative terms: max(2, 2 + 0.1) + 1 = 3.1 ns; then /3.
-    // (8(-S_A): 4 and 2 terms, max(2, 1.1) + 1 = 3 ns, and B: 3 and 3, 3.1 ns, are no slower.)
-    EXPECT_EQ(c1sa.min_low(), sc_time(6400, sc_core::SC_PS));  // 0.2 + 3.1 + 3.1
-    EXPECT_EQ(c1ex.min_low(), sc_time(6300, sc_core::SC_PS));  // 0.2 + 3.1 + 3
-    // Case 2: -S_C has 6 positive terms (3 adder levels), 2 negative: max(3, 1.1) + 1 = 4 ns.
-    EXPECT_EQ(c2sa.min_low(), sc_time(7300, sc_core::SC_PS));  // 0.2 + 4 + 3.1
-    EXPECT_EQ(c2ex.min_low(), sc_time(7200, sc_core::SC_PS));  // 0.2 + 4 + 3
-    // Quadratic: b has 1 positive, 3 negative terms: max(0, 2 + 0.1) + 1 = 3.1 ns; no division.
-    EXPECT_EQ(quad.min_low(), sc_time(3300, sc_core::SC_PS));  // 0.2 + 3.1
-    for (auto t : {c1sa.min_high(), c1ex.min_high(), c2sa.min_high(), c2ex.min_high(), quad.min_high()})
-        EXPECT_EQ(t, sc_core::SC_ZERO_TIME);
-}
-
 // Low phase 1 ns shorter than the quadratic unit needs (2.3 ns; period 20 ns): every unit
 // reports, and each one's coefficients are sampled before they settle.
 TEST(InterpCoefTiming, LowPhaseOneNanosecondShortIsReportedByEveryUnit) {

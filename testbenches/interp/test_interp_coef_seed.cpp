@@ -176,22 +176,3 @@ TEST_P(InterpCoefSeedUnit, HandWorkedFlatLine) {
         EXPECT_EQ(bench.results()[0], want);
     });
 }
-
-// Clock phases. High: the samples go straight into the registers (setup 0). Low: clock-to-output
-// 0.2 ns + the slowest coefficient path. Hand sums of the default delays (comb_delay.h: adder 1 ns,
-// inverter 0.1 ns, constant divider a multiplier's 3 ns; shift-and-add /3 = max(0, 2 + 0.1) + 1 =
-// 3.1 ns): case 1, A: net (2 terms, 1 ns) + /3 vs net + inverter (1.1 ns), then the subtractor 1 ns:
-// 1 + 3.1 + 1 = 5.1 ns (C: the same; B 3.1 ns). Case 2, C: 4-term net (2 ns) + /3 + inverter +
-// subtractor = 2 + 3.1 + 0.1 + 1 = 6.2 ns.
-TEST(InterpCoefSeedTiming, PhaseRequirementsAreTheHandSumsOfTheDefaultDelays) {
-    coef_unit_cubic_seed<sample_set::case1, div3_mode::shift_add> c1sa("c1sa");
-    coef_unit_cubic_seed<sample_set::case1, div3_mode::exact> c1ex("c1ex");
-    coef_unit_cubic_seed<sample_set::case2, div3_mode::shift_add> c2sa("c2sa");
-    coef_unit_cubic_seed<sample_set::case2, div3_mode::exact> c2ex("c2ex");
-    EXPECT_EQ(c1sa.min_low(), sc_time(5300, sc_core::SC_PS));  // 0.2 + 1 + 3.1 + 1
-    EXPECT_EQ(c1ex.min_low(), sc_time(5200, sc_core::SC_PS));  // 0.2 + 1 + 3 + 1
-    EXPECT_EQ(c2sa.min_low(), sc_time(6400, sc_core::SC_PS));  // 0.2 + 2 + 3.1 + 0.1 + 1
-    EXPECT_EQ(c2ex.min_low(), sc_time(6300, sc_core::SC_PS));  // 0.2 + 2 + 3 + 0.1 + 1
-    for (auto t : {c1sa.min_high(), c1ex.min_high(), c2sa.min_high(), c2ex.min_high()})
-        EXPECT_EQ(t, sc_core::SC_ZERO_TIME);
-}

@@ -40,17 +40,34 @@ void expect_exact_and_close_to_horner(fd_bench<M>& bench, std::size_t pixels) {
 }
 }  // namespace
 
-// The longest supported interval (64 pixels), random coefficients over their whole range.
-TEST(InterpFd, LongestIntervalBitExactAndWithinBoundOfHorner) {
-    fd_bench<6> bench("tb", random_intervals(40, 64, 31));
-    expect_exact_and_close_to_horner(bench, 40 * 64);
-}
+// The shortest and the longest supported interval (4 and 64 pixels), random coefficients over
+// their whole range: bit-exact, within the bound of Horner, and the default clock meets the phases.
+struct interval_case {
+    unsigned m;  // N = 2^m pixels
+    std::size_t intervals;
+    unsigned seed;
+};
+void PrintTo(const interval_case& c, std::ostream* os) { *os << "N = " << (1u << c.m); }
 
-TEST(InterpFd, ShortestIntervalBitExact) {
-    fd_bench<2> bench("tb", random_intervals(100, 4, 32));
-    expect_exact_and_close_to_horner(bench, 400);
+template <unsigned M>
+void expect_intervals_exact(const interval_case& c) {
+    fd_bench<M> bench("tb", random_intervals(c.intervals, 1u << M, c.seed));
+    expect_exact_and_close_to_horner(bench, c.intervals << M);
     EXPECT_EQ(bench.dut.chk_clock.violations(), 0u) << "the default 20 ns clock meets both phases";
 }
+
+class InterpFdLength : public ::testing::TestWithParam<interval_case> {};
+
+TEST_P(InterpFdLength, BitExactAndWithinBoundOfHorner) {
+    const auto c = GetParam();
+    ASSERT_TRUE(c.m == interp::m_min || c.m == interp::m_max);
+    if (c.m == interp::m_min) expect_intervals_exact<interp::m_min>(c);
+    else expect_intervals_exact<interp::m_max>(c);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShortestAndLongest, InterpFdLength,
+                         ::testing::Values(interval_case{interp::m_min, 100, 32}, interval_case{interp::m_max, 40, 31}),
+                         [](const ::testing::TestParamInfo<interval_case>& i) { return "N" + std::to_string(1u << i.param.m); });
 
 // A raster line of 200 pixels in intervals of 32, the last one 8 pixels long, with the cubic
 // and quadratic coefficients of every variant: one pixel per clock, no bubble between intervals.
@@ -110,18 +127,6 @@ TEST(InterpFd, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     f["tb.dut.fd_sel"] = qfmt{2, false, 0};
     const auto problems = view_problems(source_path("traces/interp_fd.gtkw"), base + ".vcd", "interp_fd", f);
     EXPECT_TRUE(problems.empty()) << joined(problems);
-}
-
-// Clock phases (chk_clock). High: at the accepting rising edge the controller selects LOAD and
-// A..D may just have settled, so the deepest set-up network (D1 and D2: three positive terms, two
-// adder levels) and the multiplexer must settle before the falling edge: 1 + 1 + 0.3 = 2.3 ns.
-// Low: RG_P's clock-to-output 0.2 ns puts the pixel on i_px (out_align is wiring) before the
-// rising edge. The recurrence RG -> ADD -> MX -> RG (0.2 + 1 + 0.3 = 1.5 ns) spans both phases
-// and fits in 2.3 + 0.2 (hand sums of the default delays, comb_delay.h).
-TEST(InterpFdTiming, PhaseRequirementsAreTheHandSumsOfTheDefaultDelays) {
-    fd_eval<5> dut("dut");
-    EXPECT_EQ(dut.min_high(), sc_time(2300, sc_core::SC_PS));
-    EXPECT_EQ(dut.min_low(), sc_time(200, sc_core::SC_PS));
 }
 
 // High phase 1 ns shorter (1.3 ns, period 20 ns): reported at every falling edge (the first 10).

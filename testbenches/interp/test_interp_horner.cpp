@@ -33,46 +33,47 @@ std::vector<horner_request> every_t(std::size_t intervals, unsigned m, bool deg2
 }
 }  // namespace
 
-TEST(InterpHorner, CubicBitExactEveryTOfAnInterval) {
-    horner_bench bench("tb", every_t(12, 5, false, 21));
-    EXPECT_TRUE(tb::run_to_completion(bench, limit));
-    EXPECT_EQ(bench.checker.samples().size(), 12u * 33u);
-    EXPECT_EQ(bench.checker.mismatches(), 0u);
-    EXPECT_EQ(bench.dut.chk_clock.violations(), 0u) << "the default 20 ns clock meets both phases";
-}
+// The two degrees differ only in constants: the micro-steps per pixel (6 cubic, 4 degree 2), the
+// interval of t values and the random seeds.
+struct degree_case {
+    bool deg2;
+    unsigned steps;         // micro-steps (clocks) per pixel
+    unsigned m;             // every t = k / 2^m, k = 0..2^m, for the bit-exact run
+    unsigned exact_seed, timing_seed;
+};
+void PrintTo(const degree_case& c, std::ostream* os) { *os << (c.deg2 ? "degree 2" : "cubic"); }
 
-TEST(InterpHorner, Degree2BitExactEveryTOfAnInterval) {
-    horner_bench bench("tb", every_t(12, 6, true, 22));
+class InterpHornerDegree : public ::testing::TestWithParam<degree_case> {};
+
+TEST_P(InterpHornerDegree, BitExactEveryTOfAnInterval) {
+    const auto p = GetParam();
+    horner_bench bench("tb", every_t(12, p.m, p.deg2, p.exact_seed));
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
-    EXPECT_EQ(bench.checker.samples().size(), 12u * 65u);
+    EXPECT_EQ(bench.checker.samples().size(), 12u * ((1u << p.m) + 1u));
     EXPECT_EQ(bench.checker.mismatches(), 0u);
-    for (const auto& s : bench.checker.samples()) EXPECT_EQ(s.steps.size(), 4u);
+    for (const auto& s : bench.checker.samples()) EXPECT_EQ(s.steps.size(), p.steps);
+    EXPECT_EQ(bench.dut.chk_clock.violations(), 0u) << "the default 20 ns clock meets both phases";
 }
 
 // Latency: I(t) is on the output 6 clocks (cubic) / 4 clocks (degree 2) after the edge that
 // accepted the request. Throughput back to back: one pixel per 6 / 4 clocks.
-TEST(InterpHorner, LatencyAndThroughputCubic) {
-    horner_bench bench("tb", every_t(2, 4, false, 23));
+TEST_P(InterpHornerDegree, LatencyAndThroughput) {
+    const auto p = GetParam();
+    horner_bench bench("tb", every_t(2, 4, p.deg2, p.timing_seed));
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
     const auto& s = bench.checker.samples();
     ASSERT_EQ(s.size(), 34u);
     EXPECT_EQ(bench.checker.mismatches(), 0u);
-    for (const auto& x : s) EXPECT_EQ(x.valid - x.accepted, 6 * interp_period()) << "at " << x.valid;
+    for (const auto& x : s) EXPECT_EQ(x.valid - x.accepted, static_cast<double>(p.steps) * interp_period()) << "at " << x.valid;
     for (std::size_t i = 1; i < s.size(); ++i)
         EXPECT_EQ(s[i].accepted, s[i - 1].valid) << "back-to-back: the done edge accepts the next request";
-    EXPECT_DOUBLE_EQ(bench.checker.cycles_per_result(), 6.0);
+    EXPECT_DOUBLE_EQ(bench.checker.cycles_per_result(), static_cast<double>(p.steps));
     EXPECT_EQ(s.front().accepted, interp_period());  // presented after the edge at 0, accepted at the next
 }
 
-TEST(InterpHorner, LatencyAndThroughputDegree2) {
-    horner_bench bench("tb", every_t(2, 4, true, 24));
-    EXPECT_TRUE(tb::run_to_completion(bench, limit));
-    const auto& s = bench.checker.samples();
-    ASSERT_EQ(s.size(), 34u);
-    EXPECT_EQ(bench.checker.mismatches(), 0u);
-    for (const auto& x : s) EXPECT_EQ(x.valid - x.accepted, 4 * interp_period());
-    EXPECT_DOUBLE_EQ(bench.checker.cycles_per_result(), 4.0);
-}
+INSTANTIATE_TEST_SUITE_P(Degrees, InterpHornerDegree,
+                         ::testing::Values(degree_case{false, 6, 5, 21, 23}, degree_case{true, 4, 6, 22, 24}),
+                         [](const ::testing::TestParamInfo<degree_case>& i) { return i.param.deg2 ? "Degree2" : "Cubic"; });
 
 // Idle gaps between requests change neither results nor latency; RG holds I(t) while idle.
 TEST(InterpHorner, GapsBetweenRequestsAndHoldWhileIdle) {
@@ -147,16 +148,6 @@ TEST(InterpHorner, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
     f["tb.dut.step"] = f["tb.dut.mx2_sel"] = qfmt{3, false, 0};
     const auto problems = view_problems(source_path("traces/interp_horner.gtkw"), base + ".vcd", "interp_horner", f);
     EXPECT_TRUE(problems.empty()) << joined(problems);
-}
-
-// Clock phases (chk_clock). High: the selects switch at the rising edge and RG latches at the
-// falling one, so MX1 -> MUL -> MX2 -> Sm must settle in between: 0.3 + 3 + 0.3 + 1 = 4.6 ns
-// (mux, multiplier, mux, adder; comb_delay.h). Low: RG's clock-to-output 0.2 ns puts I(t) on i_t
-// before the rising edge that reads it (hand sums of the default delays).
-TEST(InterpHornerTiming, PhaseRequirementsAreTheHandSumsOfTheDefaultDelays) {
-    horner_unit dut("dut");
-    EXPECT_EQ(dut.min_high(), sc_time(4600, sc_core::SC_PS));
-    EXPECT_EQ(dut.min_low(), sc_time(200, sc_core::SC_PS));
 }
 
 // High phase 1 ns shorter (3.6 ns, period still 20 ns): RG latches Sm before MUL's product has
