@@ -13,6 +13,7 @@
 
 #include "common/report_log.h"
 #include "common/vcd_names.h"
+#include "specular/specular_view.h"
 #include "common/sim_guard.h"
 #include "specular/specular_tb.h"
 #include "core/trace.h"
@@ -160,6 +161,29 @@ TEST(UA22802Trace, MissingTraceFolderIsCreatedAndTheTestsVcdWritten) {
     EXPECT_EQ(content.width.count("SystemC.tb.out25_r[16:0]"), 1u);
     EXPECT_GT(content.end, 0) << "no value changes were written";
     EXPECT_EQ(bench.checker.mismatches(), 0u);
+}
+
+TEST(UA22802, GtkwaveViewReadsAtFirstSight) {
+    // traces/ua22802.gtkw against a VCD of the stream ua22802_tb writes up to its marker (n = 1, 2,
+    // 3, 8, 48 pixels each, default strobes): dump file, marker inside the window and off every
+    // edge, every bus a number in its format from src/formats (vcd_names.h, view_problems).
+    const std::string base = ::testing::TempDir() + "ua22802_view";
+    std::vector<uint32_t> codes;
+    for (uint32_t i = 0; i < 48; ++i) codes.push_back(0x0400 + 0x2A0 * i);
+    std::vector<surface> s;
+    for (unsigned n : {1u, 2u, 3u, 8u}) s.push_back({n, {255, 160, 48}, codes});
+    {
+        specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
+        vcd_file vcd(base);
+        vcd.trace(bench);
+        ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
+        EXPECT_EQ(bench.checker.mismatches(), 0u);
+    }
+    view_formats f = specular_view_formats();
+    f["tb.in16_n"] = f["tb.dut.rg1_n"] = ua22802::addr_fmt;
+    f["tb.dut.a_coef"] = ua22802::a_fmt;
+    const auto problems = view_problems(source_path("traces/ua22802.gtkw"), base + ".vcd", "ua22802", f);
+    EXPECT_TRUE(problems.empty()) << joined(problems);
 }
 
 TEST(UA22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
