@@ -5,7 +5,8 @@
 #   It exits 0 only with zero mismatches and zero unexpected SystemC reports. Registers ctest
 #   entries: bench.<name>.default (the default run, no VCD), bench.<name>.random[.<i>] (a short
 #   random differential run; one per RANDOM argument string, e.g. "--mode wrap") and
-#   bench.<name>.inject (a mismatch forced with --inject-mismatch must make it exit 1).
+#   bench.<name>.inject (a mismatch forced with --inject-mismatch must make it exit 1; .inject256
+#   forces 256 in a short random run, the count that exited 0 when the status was the count).
 # shading_add_gtest(<name> SOURCES <files...> [LIBS <targets...>] [TIMEOUT <s>])
 #   A GoogleTest suite whose main() runs the tests inside sc_elab_and_sim (testbenches/common).
 #   gtest_discover_tests registers every test as its own ctest entry, so each test that
@@ -17,11 +18,15 @@ function(shading_add_bench name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE shading_modules shading_golden shading_tb_common CLI11::CLI11 ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
-  set(tests bench.${name}.default bench.${name}.inject)
+  set(tests bench.${name}.default bench.${name}.inject bench.${name}.inject256)
   add_test(NAME bench.${name}.default COMMAND ${name} --no-vcd WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
   # Exit status exactly 1 (a crash would also be non-zero, and must not pass).
   add_test(NAME bench.${name}.inject
            COMMAND sh -c "\"$0\" --no-vcd --inject-mismatch 3; test $? -eq 1" $<TARGET_FILE:${name}>
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  add_test(NAME bench.${name}.inject256
+           COMMAND sh -c "\"$0\" --random 300 --inject-mismatch 0 --inject-count 256; test $? -eq 1"
+                   $<TARGET_FILE:${name}>
            WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
   if(NOT ARG_RANDOM)
     set(ARG_RANDOM " ")

@@ -11,6 +11,7 @@
 //   --seed S              seed of every random draw (default 1)
 //   --random N            random differential mode: N random stimuli against the golden model
 //   --inject-mismatch K   (hidden, for the tests) corrupt the golden value of sample K
+//   --inject-count C      (hidden) ... and of the C - 1 samples after it (default 1)
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -89,6 +90,7 @@ public:
             ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 40));
         // Hidden (empty group): the CI proves with it that a mismatch makes the program fail.
         app.add_option("--inject-mismatch", inject_, "corrupt the golden value of sample K (0-based)")->group("");
+        app.add_option("--inject-count", inject_count_, "corrupt C samples from K on (256 must not exit 0)")->group("");
     }
 
     CLI::App app;
@@ -111,6 +113,7 @@ public:
     uint64_t random_count() const { return random_; }
     uint64_t seed() const { return seed_; }
     std::size_t inject() const { return inject_; }
+    std::size_t inject_count() const { return inject_count_; }
     const std::string& summary_path() const { return summary_; }
     const std::string& mode_name() const { return mode_name_; }
     overflow_mode mode() const { return mode_name_ == "wrap" ? overflow_mode::wrap : overflow_mode::saturate; }
@@ -173,7 +176,7 @@ private:
     std::string bench_, vcd_, summary_, mode_name_ = "saturate";
     bool no_vcd_ = false, finished_ = false;
     uint64_t seed_ = 1, random_ = 0;
-    std::size_t inject_ = no_injection;
+    std::size_t inject_ = no_injection, inject_count_ = 1;
     double wall_ = 0.0;
 };
 

@@ -53,7 +53,10 @@ inline void report_mismatch(std::size_t count, std::size_t max, const std::strin
 template <typename Sample>
 class checker_log {
 public:
-    void inject_mismatch(std::size_t k) { inject_ = k; }
+    void inject_mismatch(std::size_t k, std::size_t count = 1) {
+        inject_ = k;
+        inject_count_ = count;
+    }
     void keep_samples(bool keep) { keep_ = keep; }
     std::size_t checked() const { return checked_; }
     std::size_t mismatches() const { return mismatches_; }
@@ -70,7 +73,9 @@ protected:
     bool begin(const sc_core::sc_time& accepted, const sc_core::sc_time& valid) {
         if (checked_ == 0) first_accepted_ = accepted;
         last_valid_ = valid;
-        return checked_++ == inject_;
+        const bool corrupt = checked_ >= inject_ && checked_ - inject_ < inject_count_;
+        ++checked_;
+        return corrupt;
     }
     void record(const Sample& s) {
         if (keep_) samples_.push_back(s);
@@ -78,7 +83,7 @@ protected:
     std::size_t mismatches_ = 0;
 
 private:
-    std::size_t checked_ = 0, inject_ = std::numeric_limits<std::size_t>::max();
+    std::size_t checked_ = 0, inject_ = std::numeric_limits<std::size_t>::max(), inject_count_ = 1;
     bool keep_ = true;
     std::vector<Sample> samples_;
     sc_core::sc_time first_accepted_, last_valid_, period_ = interp_period();

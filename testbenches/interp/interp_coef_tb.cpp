@@ -34,7 +34,7 @@ int sc_main(int argc, char* argv[]) {
     if (run.random()) {
         coef_bench bench("tb", random_coef_inputs(run.random_count(), run.seed()));
         bench.checker.keep_samples(false);
-        bench.checker.inject_mismatch(run.inject());
+        bench.checker.inject_mismatch(run.inject(), run.inject_count());
         run.simulate(bench, sc_core::sc_max_time());
         for (std::size_t u = 0; u < 5; ++u)
             std::cout << "  " << variant_name(all_variants[u]) << ": mismatches " << bench.checker.mismatches(u) << '\n';
@@ -51,7 +51,7 @@ int sc_main(int argc, char* argv[]) {
         sets.push_back({{u(rng), u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}});
 
     coef_bench bench("tb", sets);
-    bench.checker.inject_mismatch(run.inject());
+    bench.checker.inject_mismatch(run.inject(), run.inject_count());
     run.simulate(bench);
 
     // Relative error of A and C against the real-valued formulas of the same sample codes.

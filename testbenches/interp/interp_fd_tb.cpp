@@ -31,7 +31,7 @@ int run_m(bench_runner& run, const options& o) {
     if (run.random()) {
         fd_bench<M> bench("tb", random_fd_intervals<M>(run.random_count(), run.seed()));
         bench.checker.keep_samples(false);
-        bench.checker.inject_mismatch(run.inject());
+        bench.checker.inject_mismatch(run.inject(), run.inject_count());
         run.simulate(bench, sc_core::sc_max_time());
         std::cout << "interp_fd (m = " << M << "): FD - Horner in [" << bench.checker.min_vs_horner() << ", "
                   << bench.checker.max_vs_horner() << "] LSB (bound [0, 2]), clocks per pixel "
@@ -50,7 +50,7 @@ int run_m(bench_runner& run, const options& o) {
             iv_variant.push_back(v);
         }
     fd_bench<M> bench("tb", ivs);
-    bench.checker.inject_mismatch(run.inject());
+    bench.checker.inject_mismatch(run.inject(), run.inject_count());
     run.simulate(bench);
 
     std::ofstream csv;

@@ -35,7 +35,7 @@ int sc_main(int argc, char* argv[]) {
     if (run.random()) {
         horner_bench bench("tb", random_horner_requests(run.random_count(), run.seed()), gap);
         bench.checker.keep_samples(false);
-        bench.checker.inject_mismatch(run.inject());
+        bench.checker.inject_mismatch(run.inject(), run.inject_count());
         run.simulate(bench, sc_core::sc_max_time());
         std::cout << "interp_horner: clocks per result " << bench.checker.cycles_per_result() << '\n';
         run.report_random("random", bench.checker.checked(), bench.checker.mismatches());
@@ -59,7 +59,7 @@ int sc_main(int argc, char* argv[]) {
         }
 
     horner_bench bench("tb", reqs, gap);
-    bench.checker.inject_mismatch(run.inject());
+    bench.checker.inject_mismatch(run.inject(), run.inject_count());
     run.simulate(bench);
 
     std::ofstream csv;

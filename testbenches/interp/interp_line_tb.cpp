@@ -34,7 +34,7 @@ int run_variant(bench_runner& run, const options& o) {
     if (run.random()) {
         line_bench<M, SET, DIV> bench("tb", random_line_intervals<M>(run.random_count(), run.seed()));
         bench.checker.keep_samples(false);
-        bench.checker.inject_mismatch(run.inject());
+        bench.checker.inject_mismatch(run.inject(), run.inject_count());
         run.simulate(bench, sc_core::sc_max_time());
         std::cout << "interp_line (" << name << "): clocks per pixel " << bench.checker.cycles_per_result()
                   << ", clock-phase violations " << bench.dut.phase_violations() << '\n';
@@ -43,7 +43,7 @@ int run_variant(bench_runner& run, const options& o) {
     }
     const auto line = make_line(o.width, M);
     line_bench<M, SET, DIV> bench("tb", line_intervals(line, SET));
-    bench.checker.inject_mismatch(run.inject());
+    bench.checker.inject_mismatch(run.inject(), run.inject_count());
     run.simulate(bench);
 
     const auto& s = bench.checker.samples();

@@ -209,14 +209,18 @@ public:
     explicit specular_checker(golden_fn golden, std::size_t max_reports = 10)
         : golden_(std::move(golden)), max_reports_(max_reports) {}
 
-    // For the tests of the verdict: the golden value of sample k (0-based) is corrupted.
-    void inject_mismatch(std::size_t k) { inject_ = k; }
+    // For the tests of the verdict: the golden values of samples k..k+count-1 (0-based) are corrupted.
+    void inject_mismatch(std::size_t k, std::size_t count = 1) {
+        inject_ = k;
+        inject_count_ = count;
+    }
 
     void check(const pixel_sample& s) {
         auto& st = stats_[s.n];
         ++st.samples;
         auto g = golden_(s.n, s.cos, s.ksi);
-        if (checked_++ == inject_) g.out[0] ^= 1;
+        if (checked_ >= inject_ && checked_ - inject_ < inject_count_) g.out[0] ^= 1;
+        ++checked_;
         if (g.out != s.out) {
             ++st.mismatches;
             ++mismatches_;
@@ -253,7 +257,7 @@ private:
     golden_fn golden_;
     std::size_t max_reports_;
     std::map<uint64_t, specular_stats> stats_;
-    std::size_t mismatches_ = 0, checked_ = 0, inject_ = SIZE_MAX;
+    std::size_t mismatches_ = 0, checked_ = 0, inject_ = SIZE_MAX, inject_count_ = 1;
 };
 
 // A bench that owns the pins' signals, the device, the stimulus, the monitor and the checker.

@@ -57,7 +57,7 @@ int sc_main(int argc, char* argv[]) {
         strobe_timing{},
         [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) { return golden_ua22802(n, c, k, mode); },
         mode);
-    bench.checker.inject_mismatch(run.inject());
+    bench.checker.inject_mismatch(run.inject(), run.inject_count());
     std::printf("UA 22802 ROM: %llu words x %d bits (Q%d.%d unsigned) = %llu bits = %llu bytes\n",
                 static_cast<unsigned long long>(bench.dut.rom.words), static_cast<int>(ua22802::a_fmt.width),
                 ua22802::a_fmt.int_bits(), ua22802::a_fmt.frac, static_cast<unsigned long long>(bench.dut.rom.bits),

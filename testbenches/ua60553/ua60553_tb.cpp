@@ -59,7 +59,7 @@ int run_device(bench_runner& run, options& o, const std::string& name, specular_
     t.cos_lead = t.t_high / 2;
     specular_bench<Device> bench("tb", stimulus(run, o), t, std::move(golden), run.mode(),
                                  std::forward<DeviceArgs>(device_args)...);
-    bench.checker.inject_mismatch(run.inject());
+    bench.checker.inject_mismatch(run.inject(), run.inject_count());
     const auto limit = run.random() ? sc_core::sc_max_time()
                                     : bench.stim.duration() * 1.01 + sc_core::sc_time(1, sc_core::SC_US);
     run.simulate(bench, limit);
