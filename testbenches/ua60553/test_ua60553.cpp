@@ -10,6 +10,7 @@
 
 #include "common/report_log.h"
 #include "common/vcd_names.h"
+#include "specular/specular_view.h"
 #include "core/report_ids.h"
 #include "specular/specular_tb.h"
 #include "core/trace.h"
@@ -254,6 +255,29 @@ TEST(UA60553Trace, VcdDeclaresTheDatapathSignals) {
     const auto shown = gtkw_listed(source_path("traces/ua60553.gtkw"));
     EXPECT_GE(shown.size(), 30u);
     for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+}
+
+TEST(UA60553Trace, GtkwaveViewReadsAtFirstSight) {
+    // traces/ua60553.gtkw against a VCD of the bench ua60553_tb builds (n = 10, default strobes),
+    // long enough to pass the marker: dump file, marker inside the window and off every edge, every
+    // bus a number in its format from src/formats (vcd_names.h, view_problems).
+    const std::string base = ::testing::TempDir() + "ua60553_view";
+    {
+        std::vector<surface> s{{10, {255, 180, 60}, codes(0x7000, 0x7040)}};
+        strobe_timing t;
+        bench_t bench("tb", s, t, golden_for(overflow_mode::saturate));
+        vcd_file vcd(base);
+        vcd.trace(bench);
+        run(bench);
+        EXPECT_EQ(bench.checker.mismatches(), 0u);
+    }
+    view_formats f = specular_view_formats();
+    f["tb.in16_n"] = f["tb.dut.rg1_n"] = ua60553::n_fmt;
+    f["tb.dut.node31_k"] = f["tb.dut.node32_k"] = ua60553::k_fmt;
+    f["tb.dut.mul6_n_x_k"] = ua60553::mul6_fmt;
+    f["tb.dut.a_coef"] = ua60553::a_fmt;
+    const auto problems = view_problems(source_path("traces/ua60553.gtkw"), base + ".vcd", "ua60553", f);
+    EXPECT_TRUE(problems.empty()) << joined(problems);
 }
 
 TEST(UA60553Checker, AWrongGoldenValueIsCaught) {
