@@ -1,34 +1,14 @@
-// UA 22802, the prototype UA 60553 names (SPEC section 4): the shared specular datapath with RG1
-// addressing a ROM that holds a(n) (seed 001, formula 7) instead of MUL6/ADD15. The ROM content
-// is generated at build time by src/tools/gen_a_rom.cpp (header ua22802_a_rom.h in the build tree);
-// format and rounding in src/ua22802_formats.h.
+// UA 22802, the prototype UA 60553 names (SPEC section 4): the specular datapath with RG1
+// addressing a ROM that holds a(n) (a_gen_rom.h). Construct as
+// device_ua22802(name, mode, ROM words = the generated a(n) table, block delays); the ROM's access
+// time is block_delays::rom. Link shading_ua22802 (the generated ROM content).
 #pragma once
 
-#include <systemc>
-#include <vector>
-
-#include "formats/ua22802_formats.h"
-#include "blocks/rom.h"
-#include "specular/specular_datapath.h"
-#include "ua22802_a_rom.h"
+#include "specular/specular_device.h"
+#include "ua22802/a_gen_rom.h"
 
 namespace shading {
 
-class device_ua22802
-    : public specular_datapath<ua22802::addr_fmt.width, ua22802::a_fmt.width, ua22802::a_fmt.frac> {
-public:
-    shading::rom<ua22802::addr_fmt.width, ua22802::a_fmt.width> rom;  // n (10.0) -> a (Q10.6), 1024 words
-
-    device_ua22802(const sc_core::sc_module_name& name, overflow_mode mode = overflow_mode::saturate,
-                   const block_delays& t = {},
-                   const sc_core::sc_time& rom_access = delay_default::rom_access)
-        : specular_datapath(name, mode, t, ua60553::n_min, ua60553::n_max,
-                            "n = 0 reads ROM word 0 = a 0 (q = cos, as for n = 1); n > 1000 reads "
-                            "words 1001..1023, programmed with the same formula a(n)"),
-          rom("rom", std::vector<uint64_t>(ua22802::a_rom_content.begin(), ua22802::a_rom_content.end()),
-              rom_access) {
-        rom.addr(rg1_n); rom.data(a_coef);
-    }
-};
+using device_ua22802 = specular_device<a_gen_rom>;
 
 }  // namespace shading

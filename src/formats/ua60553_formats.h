@@ -46,6 +46,8 @@ struct tuned_generator {
 };
 
 inline constexpr qfmt k32s_fmt{8, true, 7};  // node 32 of the tuned device: Q1.7 signed
+// The special case's OR gate reads n's wires tuned_or_lo..9: 1 when n >= 2^tuned_or_lo = 2.
+inline constexpr unsigned tuned_or_lo = 1;
 
 // The search's winner (build/bin/generator_search, out/generator_search.csv): the patent's own
 // node-31 constant 0.1100101b = 0.7890625 with node 32 = -0.101b = -0.625, and n < 2 -> a = 0.

@@ -75,7 +75,8 @@ std::vector<method> methods() {
 // Hardware cost (README, "Cost"): multiplier cells = WA x WB of each array multiplier (a multiplier
 // by a hardwired constant keeps only the rows of its non-zero constant bits: WN x nnz); adder bits
 // = output width of each adder; gates = inputs of the special case's OR gate + AND gates of the key
-// block. Registers and the colour path are common to all and listed for completeness.
+// block. Registers and the colour path are common to all and listed for completeness. Every width is
+// read from the format tables (src/formats) the device tops take their template widths from.
 struct cost {
     std::string design;
     unsigned rom_bits, gen_mult_cells, gen_adder_bits, gen_gates, mul10_cells, shared_mult_cells,
@@ -91,17 +92,20 @@ unsigned nnz(const char* bits) {
 }
 
 std::vector<cost> costs() {
-    const unsigned shared_mult = 16 * 16 + 3 * (16 * 8);  // MUL7, MUL12..14
-    const unsigned shared_add = 32 + 16;                  // ADD9, ADD11
+    using spec::brdf_fmt, spec::cos_fmt, spec::d_fmt, spec::ksi_fmt;
+    const unsigned shared_mult = cos_fmt.width * cos_fmt.width + 3 * (brdf_fmt.width * ksi_fmt.width);  // MUL7, MUL12..14
+    const unsigned shared_add = d_fmt.width + brdf_fmt.width;                                         // ADD9, ADD11
     const unsigned wn = ua60553::n_fmt.width, wa60553 = ua60553::a_fmt.width;
+    const unsigned mul10_60553 = wa60553 * d_fmt.width;                  // MUL10: a x (cos^2 - cos)
+    const unsigned tuned_gates = (wn - ua60553::tuned_or_lo) + wa60553;  // OR over n[9:1], key block
     return {
-        {"ua22802_rom", ua22802::rom_bits, 0, 0, 0, ua22802::a_fmt.width * 32, shared_mult, shared_add},
-        {"ua60553_patent", 0, wn * nnz(ua60553::patent.k31_bits), wa60553, 0, wa60553 * 32, shared_mult,
+        {"ua22802_rom", ua22802::rom_bits, 0, 0, 0, ua22802::a_fmt.width * d_fmt.width, shared_mult, shared_add},
+        {"ua60553_patent", 0, wn * nnz(ua60553::patent.k31_bits), wa60553, 0, mul10_60553, shared_mult,
          shared_add},
-        {"ua60553_minimax", 0, wn * nnz(ua60553::minimax.k31_bits), wa60553, (wn - 1) + wa60553,
-         wa60553 * 32, shared_mult, shared_add},
-        {"ua60553_rom_matched", 0, wn * nnz(ua60553::rom_matched.k31_bits), wa60553, (wn - 1) + wa60553,
-         wa60553 * 32, shared_mult, shared_add},
+        {"ua60553_minimax", 0, wn * nnz(ua60553::minimax.k31_bits), wa60553, tuned_gates, mul10_60553,
+         shared_mult, shared_add},
+        {"ua60553_rom_matched", 0, wn * nnz(ua60553::rom_matched.k31_bits), wa60553, tuned_gates, mul10_60553,
+         shared_mult, shared_add},
     };
 }
 
@@ -226,8 +230,8 @@ int main(int argc, char* argv[]) {
             excess_abs = std::max(excess_abs, e - maxrel[0][n]);
             if (n >= 3) excess_rel = std::max(excess_rel, (e - maxrel[0][n]) / maxrel[0][n]);
         }
-        const unsigned word = 10 + F;
-        sweep << F << ',' << word << ',' << 1024 * word << ',' << worst << ',' << excess_rel << ',' << excess_abs
+        const unsigned word = static_cast<unsigned>(ua22802::a_fmt.int_bits() + F);
+        sweep << F << ',' << word << ',' << ua22802::rom_words * word << ',' << worst << ',' << excess_rel << ',' << excess_abs
               << '\n';
     }
 

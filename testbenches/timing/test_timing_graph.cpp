@@ -97,6 +97,7 @@ TEST(TimingGraph, UA60553Rg1PathThroughThePatentGenerator) {
     const auto p = g.to_outputs(top.dut.rg1);
     // RG1 -> MUL6 -> ADD15 -> MUL10 -> ADD11 -> MUL12: 0.2 + 3 + 1 + 3 + 1 + 3 = 11.2 ns.
     EXPECT_EQ(p.delay, sc_time(11200, SC_PS)) << p.to_string();
+    EXPECT_EQ(p.to_string(), "rg1 -> a_gen.mul6 -> a_gen.add15 -> mul10 -> add11 -> mul12 = 11.2 ns");
     EXPECT_EQ(top.dut.chk_timing.path(0), p.delay);
     every_register_has_its_path(top.dut);
 }
@@ -109,6 +110,7 @@ TEST(TimingGraph, TunedRg1PathIncludesTheKeyBlock) {
     // RG1 -> MUL6 -> ADD15 -> key block -> MUL10 -> ADD11 -> MUL12: 0.2+3+1+0.1+3+1+3 = 11.3 ns
     // (the OR gate's 0.1 ns branch into the key block is shorter than MUL6 + ADD15).
     EXPECT_EQ(p.delay, sc_time(11300, SC_PS)) << p.to_string();
+    EXPECT_EQ(blocks(p), "rg1 a_gen.mul6 a_gen.add15 a_gen.key_a mul10 add11 mul12");
     EXPECT_EQ(top.dut.chk_timing.path(0), p.delay);
     every_register_has_its_path(top.dut);
 }
@@ -120,8 +122,20 @@ TEST(TimingGraph, RomRg1PathIsTheRomAccess) {
     const auto p = g.to_outputs(top.dut.rg1);
     // RG1 -> ROM -> MUL10 -> ADD11 -> MUL12: 0.2 + 4 + 3 + 1 + 3 = 11.2 ns.
     EXPECT_EQ(p.delay, sc_time(11200, SC_PS)) << p.to_string();
+    EXPECT_EQ(blocks(p), "rg1 a_gen.rom mul10 add11 mul12");
     EXPECT_EQ(top.dut.chk_timing.path(0), p.delay);
     every_register_has_its_path(top.dut);
+}
+
+TEST(TimingGraph, TunedSlowerGatesMoveTheRg1PathByTheKeyBlocksExcess) {
+    // Gates at 0.6 ns: the OR gate's branch (0.6) stays shorter than MUL6 + ADD15 (4), so only
+    // the key block's +0.5 ns shows: 11.3 -> 11.8 ns.
+    block_delays t;
+    t.gate = sc_time(600, SC_PS);
+    pins<device_ua60553_tuned> top("tb", overflow_mode::saturate, ua60553::minimax, t);
+    elaborate();
+    EXPECT_EQ(top.dut.rg1_to_outputs(), sc_time(11800, SC_PS));
+    EXPECT_EQ(top.dut.rg2_to_outputs(), sc_time(11200, SC_PS));
 }
 
 TEST(TimingGraph, ASlowerInverterBankMovesTheRg2PathByExactlyItsExcess) {
@@ -136,7 +150,9 @@ TEST(TimingGraph, ASlowerInverterBankMovesTheRg2PathByExactlyItsExcess) {
 }
 
 TEST(TimingGraph, ASlowerRomMovesOnlyTheRg1Path) {
-    pins<device_ua22802> top("tb", overflow_mode::saturate, block_delays{}, sc_time(5, SC_NS));
+    block_delays t;
+    t.rom = sc_time(5, SC_NS);
+    pins<device_ua22802> top("tb", overflow_mode::saturate, a_gen_rom::default_config(), t);
     elaborate();
     EXPECT_EQ(top.dut.chk_timing.path(0), sc_time(12200, SC_PS)) << "4 ns -> 5 ns ROM: +1 ns";
     EXPECT_EQ(top.dut.chk_timing.path(1), sc_time(11200, SC_PS));

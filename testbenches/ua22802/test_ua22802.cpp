@@ -1,13 +1,13 @@
-// UA 22802 device (SystemC) against its golden model, bit for bit, through the shared specular
-// bench (testbenches/specular/specular_tb.h). One elaboration per test (each runs in its own
-// process under gtest_discover_tests).
+// UA 22802 device (SystemC): its timing beside UA 60553's and its VCD. The tests every specular
+// device shares (bit-exact against the golden model, every n, wrap mode, a wrong golden model
+// caught) are typed tests in testbenches/specular/test_specular_devices.cpp. One elaboration per
+// test (each runs in its own process under gtest_discover_tests).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <random>
 #include <set>
 #include <string>
 
@@ -32,70 +32,7 @@ specular_checker::golden_fn golden(overflow_mode mode) {
         return golden_ua22802(n, c, k, mode);
     };
 }
-std::vector<uint32_t> all_cos_codes() {
-    std::vector<uint32_t> v;
-    for (uint32_t c = 0; c <= spec::cos_one; ++c) v.push_back(c);
-    return v;
-}
-std::vector<uint32_t> random_codes(std::mt19937& rng, std::size_t k, uint32_t hi) {
-    std::uniform_int_distribution<uint32_t> d(0, hi);
-    std::vector<uint32_t> v{0, spec::cos_one};
-    while (v.size() < k) v.push_back(d(rng));
-    return v;
-}
 }  // namespace
-
-TEST(UA22802, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
-    const std::vector<unsigned> ns{1, 2, 3, 512, 1000};
-    std::vector<surface> s;
-    for (unsigned n : ns) s.push_back({n, {255, 170, 3}, all_cos_codes()});
-    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
-    ASSERT_TRUE(run_to_completion(bench, sc_time(1000, SC_MS)));
-    EXPECT_EQ(bench.checker.samples(), ns.size() * (spec::cos_one + 1));
-    EXPECT_EQ(bench.checker.mismatches(), 0u);
-    for (unsigned n : ns) {
-        const auto& st = bench.checker.stats().at(n);
-        EXPECT_GT(st.rel_err_points, 0u);
-        // Seed 001: <= 4 % above 0.56. n = 1 and n = 2 are exact in the model: only the output's
-        // Q9.8 floor remains (1/256 of 255*0.56 is 2.7e-5 relative).
-        EXPECT_LT(st.max_rel_err_056, n <= 2 ? 1e-4 : 0.04) << "n = " << n;
-    }
-    // The ROM word on net a_coef is the last surface's a(1000).
-    EXPECT_EQ(bench.dut.a_coef.read().to_uint64(), golden_a_rom(1000));
-}
-
-TEST(UA22802, EveryAddressIncludingOutOfRangeN) {
-    // n = 0 and n = 1001..1023 are reported (shading/input) and read their documented words.
-    report_log::get().expect(msg::input);
-    const unsigned before = report_log::get().count(msg::input);
-    std::mt19937 rng(22802);
-    std::vector<surface> s;
-    for (unsigned n = 0; n < 1024; ++n) s.push_back({n, {255, 17, 96}, random_codes(rng, 12, spec::cos_one)});
-    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::saturate));
-    ASSERT_TRUE(run_to_completion(bench, sc_time(1000, SC_MS)));
-    EXPECT_EQ(bench.checker.samples(), 1024u * 12u);
-    EXPECT_EQ(bench.checker.mismatches(), 0u);
-    EXPECT_EQ(report_log::get().count(msg::input) - before, 1u + 23u) << "n = 0 and 1001..1023";
-    EXPECT_EQ(bench.dut.chk_in16_n.violations(), 24u);
-}
-
-TEST(UA22802, WrapModeAndCosAboveOneMatchGolden) {
-    // Wrap mode: q < 0 for a > 1 below (a-1)/a is passed on as two's-complement bits; cos codes
-    // above 0x8000 are reported and pass through the datapath unchanged.
-    report_log::get().expect(msg::input);
-    const unsigned before = report_log::get().count(msg::input);
-    std::mt19937 rng(60553);
-    std::vector<surface> s;
-    for (unsigned n : {2u, 7u, 100u, 1000u}) s.push_back({n, {255, 255, 255}, random_codes(rng, 3000, 0xffff)});
-    std::size_t above = 0;
-    for (const auto& sf : s)
-        for (uint32_t c : sf.cos_codes) above += c > spec::cos_one;
-    specular_bench<device_ua22802> bench("tb", s, strobe_timing{}, golden(overflow_mode::wrap),
-                                         overflow_mode::wrap);
-    ASSERT_TRUE(run_to_completion(bench, sc_time(1000, SC_MS)));
-    EXPECT_EQ(bench.checker.mismatches(), 0u);
-    EXPECT_EQ(report_log::get().count(msg::input) - before, above);
-}
 
 TEST(UA22802, SameTimingAsUa60553AndShortStrobesAreReported) {
     // Both devices in one elaboration: the RG2 path (per pixel) and the RG1 path (per surface)
@@ -126,20 +63,6 @@ TEST(UA22802, SameTimingAsUa60553AndShortStrobesAreReported) {
     EXPECT_EQ(bench.dut.chk_timing.violations(), 3u) << "every pixel's strobe is too short";
     EXPECT_EQ(report_log::get().count(msg::timing) - before, 3u);
     EXPECT_GE(bench.checker.mismatches(), 1u) << "unsettled outputs differ from the golden model";
-}
-
-TEST(UA22802, CheckerCatchesAWrongGoldenModel) {
-    // Negative test: the UA 60553 golden (patent a = 0.789 n + 0.5) differs from the ROM device.
-    report_log::get().expect(msg::mismatch);
-    std::vector<surface> s{{10, {255, 255, 255}, {0x7000, 0x7800, 0x7c00}}};
-    specular_bench<device_ua22802> bench(
-        "tb", s, strobe_timing{},
-        [](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
-            return golden_ua60553(n, c, k, overflow_mode::saturate);
-        });
-    ASSERT_TRUE(run_to_completion(bench, sc_time(1, SC_MS)));
-    EXPECT_EQ(bench.checker.mismatches(), 3u);
-    EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
 }
 
 TEST(UA22802Trace, MissingTraceFolderIsCreatedAndTheTestsVcdWritten) {

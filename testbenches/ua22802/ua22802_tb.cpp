@@ -59,9 +59,9 @@ int sc_main(int argc, char* argv[]) {
         mode);
     bench.checker.inject_mismatch(run.inject(), run.inject_count());
     std::printf("UA 22802 ROM: %llu words x %d bits (Q%d.%d unsigned) = %llu bits = %llu bytes\n",
-                static_cast<unsigned long long>(bench.dut.rom.words), static_cast<int>(ua22802::a_fmt.width),
-                ua22802::a_fmt.int_bits(), ua22802::a_fmt.frac, static_cast<unsigned long long>(bench.dut.rom.bits),
-                static_cast<unsigned long long>(bench.dut.rom.bits / 8));
+                static_cast<unsigned long long>(bench.dut.a_gen.rom.words), static_cast<int>(ua22802::a_fmt.width),
+                ua22802::a_fmt.int_bits(), ua22802::a_fmt.frac, static_cast<unsigned long long>(bench.dut.a_gen.rom.bits),
+                static_cast<unsigned long long>(bench.dut.a_gen.rom.bits / 8));
     run.simulate(bench, run.random() ? sc_core::sc_max_time() : sc_core::sc_time(1, sc_core::SC_SEC));
 
     if (run.random()) {
@@ -73,7 +73,7 @@ int sc_main(int argc, char* argv[]) {
                         st.max_rel_err_056);
             run.summary({run.bench(), "n=" + std::to_string(n) + (mode == overflow_mode::wrap ? "_wrap" : ""),
                          st.samples, st.mismatches, fmt_percent(st.max_rel_err_056, 2), "1 strobe",
-                         "max rel err vs cos^n where cos^n >= 0.56; ROM " + std::to_string(bench.dut.rom.bits) +
+                         "max rel err vs cos^n where cos^n >= 0.56; ROM " + std::to_string(bench.dut.a_gen.rom.bits) +
                              " bits"});
         }
     }
