@@ -273,8 +273,8 @@ TEST(UA60553Trace, GtkwaveViewReadsAtFirstSight) {
     }
     view_formats f = specular_view_formats();
     f["tb.in16_n"] = f["tb.dut.rg1_n"] = ua60553::n_fmt;
-    f["tb.dut.node31_k"] = f["tb.dut.node32_k"] = ua60553::k_fmt;
-    f["tb.dut.mul6_n_x_k"] = ua60553::mul6_fmt;
+    f["tb.dut.a_gen.node31_k"] = f["tb.dut.a_gen.node32_k"] = ua60553::k_fmt;
+    f["tb.dut.a_gen.mul6_n_x_k"] = ua60553::mul6_fmt;
     f["tb.dut.a_coef"] = ua60553::a_fmt;
     const auto problems = view_problems(source_path("traces/ua60553.gtkw"), base + ".vcd", "ua60553", f);
     EXPECT_TRUE(problems.empty()) << joined(problems);
