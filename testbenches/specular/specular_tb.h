@@ -261,7 +261,7 @@ private:
 };
 
 // A bench that owns the pins' signals, the device, the stimulus, the monitor and the checker.
-// Device is any specular_datapath-derived top (device_ua60553, device_ua22802, ...).
+// Device is any specular_device<AGen> (device_ua60553, device_ua22802, device_ua60553_tuned).
 template <typename Device>
 class specular_bench : public sc_core::sc_module {
 public:
