@@ -35,7 +35,6 @@ public:
     }
 
     const sc_core::sc_time& delay() const override { return drv_.delay(); }
-    overflow_mode mode() const { return mode_; }
 
 private:
     void compute() {

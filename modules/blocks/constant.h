@@ -19,7 +19,6 @@ public:
         SC_METHOD(drive);  // runs once at initialisation; nothing ever re-triggers it
     }
 
-    const T& value() const { return value_; }
     // Tied wires: no propagation delay.
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
 

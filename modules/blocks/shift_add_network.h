@@ -98,7 +98,6 @@ public:
         sensitive << *out_;
     }
 
-    const std::vector<sa_term>& terms() const { return terms_; }
     // Slowest input-to-y path, summed from the adders' and the inverter bank's own delays while
     // the tree was wired (callers need it for their clock-phase requirements).
     const sc_core::sc_time& delay() const override { return delay_; }

@@ -27,7 +27,6 @@ public:
         sensitive << x;
     }
 
-    int shift() const { return shift_; }
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }  // wiring
 
 private:

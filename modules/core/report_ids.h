@@ -6,6 +6,5 @@ inline constexpr const char* setup = "shading/setup";        // data changed at 
 inline constexpr const char* input = "shading/input";        // input outside its documented range
 inline constexpr const char* timing = "shading/timing";      // strobe phase shorter than a path
 inline constexpr const char* mismatch = "shading/mismatch";  // DUT differs from the golden model
-inline constexpr const char* protocol = "shading/protocol";  // handshake misuse (start while busy...)
 inline constexpr const char* config = "shading/config";      // bad elaboration-time parameter
 }  // namespace shading::msg
