@@ -61,6 +61,5 @@ function(shading_add_gtest name)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60
-    NO_PRETTY_TYPES  # typed suites named by their name generator (SpecularDevice/UA60553.X)
     PROPERTIES TIMEOUT ${ARG_TIMEOUT})
 endfunction()
