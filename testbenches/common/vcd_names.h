@@ -75,8 +75,9 @@ struct gtkw_view {
     int64_t timestart = 0;           // left edge of the waves pane, in the VCD's time unit
     double zoom = 0;                 // "*<zoom> <marker> ..." line
     int64_t marker = -1;
-    int width = 0, signals_width = 0, sst_width = 0;
+    int width = 0, height = 0, signals_width = 0, sst_width = 0;
     std::vector<gtkw_trace> traces;
+    std::vector<std::string> rows;   // every row of the signal pane in order: traces and group lines
 
     // Right edge of the opening window. GTKWave draws 2^-zoom time units per 200 pixels (calczoom:
     // pixelsperframe = 200); the waves pane gets the window width less the signal pane, the SST
@@ -85,6 +86,10 @@ struct gtkw_view {
         const double wave_px = width - signals_width - sst_width - 50;
         return timestart + static_cast<int64_t>(wave_px * std::pow(2.0, -zoom) / 200.0);
     }
+    // Rows of the signal pane visible without scrolling: the pane starts ~150 px below the
+    // window's top (title, tool bar, time ruler) and GTKWave's default font gives ~21 px a row
+    // (read off screenshots of these views at 1600x900 under Xvfb: 36 rows; this counts 35).
+    int visible_rows() const { return height <= 150 ? 0 : (height - 150) / 21; }
 };
 
 inline gtkw_view gtkw_read(const std::string& gtkw_path) {
@@ -105,11 +110,13 @@ inline gtkw_view gtkw_read(const std::string& gtkw_path) {
         else if (key == "[dumpfile]") v.dumpfile = quoted(line);
         else if (key == "[savefile]") v.savefile = quoted(line);
         else if (key == "[timestart]") in >> v.timestart;
-        else if (key == "[size]") in >> v.width;
+        else if (key == "[size]") in >> v.width >> v.height;
         else if (key == "[signals_width]") in >> v.signals_width;
         else if (key == "[sst_width]") in >> v.sst_width;
         else if (line.rfind('*', 0) == 0) std::istringstream(line.substr(1)) >> v.zoom >> v.marker;
         else if (line.rfind("SystemC.", 0) == 0) v.traces.push_back({line, flags, fpshift});
+
+        if (line.rfind("SystemC.", 0) == 0 || line.rfind('-', 0) == 0) v.rows.push_back(line);
     }
     return v;
 }
@@ -177,9 +184,12 @@ using view_formats = std::map<std::string, qfmt>;
 //   (on an edge the pane shows the value of one side while the README describes the other);
 // - every bus shows a number, no hex/octal/binary/ASCII: decimal, signed exactly when its format
 //   is signed, with GTKWave's fixed-point shift equal to its format's fraction bits, and its width
-//   in the VCD is the format's; every bus has a format; single bits show as bits.
+//   in the VCD is the format's; every bus has a format; single bits show as bits;
+// - every net of `first_sight` (the outputs and valid strobes, named as in `formats`) lies in the
+//   rows visible without scrolling.
 inline std::vector<std::string> view_problems(const std::string& gtkw_path, const std::string& vcd_path,
-                                              const std::string& dump_stem, const view_formats& formats) {
+                                              const std::string& dump_stem, const view_formats& formats,
+                                              const std::vector<std::string>& first_sight = {}) {
     std::vector<std::string> p;
     const gtkw_view v = gtkw_read(gtkw_path);
     const vcd_content vcd = vcd_read(vcd_path);
@@ -194,6 +204,15 @@ inline std::vector<std::string> view_problems(const std::string& gtkw_path, cons
                     ", " + std::to_string(t1) + "]");
     if (vcd.end <= v.marker) p.push_back("the VCD ends before the marker: the edge check cannot run");
     if (v.traces.empty()) p.push_back("the view shows no trace");
+    for (const auto& want : first_sight) {
+        std::size_t row = 0;
+        while (row < v.rows.size() && v.rows[row].substr(0, v.rows[row].find('[')) != "SystemC." + want) ++row;
+        if (row == v.rows.size())
+            p.push_back(want + " should be visible at first sight but is not in the view");
+        else if (static_cast<int>(row) >= v.visible_rows())
+            p.push_back(want + " is on row " + std::to_string(row + 1) + ", below the " +
+                        std::to_string(v.visible_rows()) + " rows visible without scrolling");
+    }
     for (const auto& t : v.traces) {
         const auto w = vcd.width.find(t.name);
         if (w == vcd.width.end()) {
