@@ -18,30 +18,6 @@
 
 namespace shading::tb {
 
-inline std::set<std::string> vcd_declared(const std::string& vcd_path) {
-    std::set<std::string> names;
-    std::vector<std::string> scope;
-    std::ifstream vcd(vcd_path);
-    for (std::string tok; vcd >> tok;) {
-        if (tok == "$scope") {
-            std::string kind, name;
-            vcd >> kind >> name;
-            scope.push_back(name);
-        } else if (tok == "$upscope") {
-            if (!scope.empty()) scope.pop_back();
-        } else if (tok == "$var") {
-            std::string kind, width, id, name, range;
-            vcd >> kind >> width >> id >> name >> range;
-            std::string full;
-            for (const auto& s : scope) full += s + ".";
-            names.insert(full + name + (range == "$end" ? "" : range));
-        } else if (tok == "$enddefinitions") {
-            break;
-        }
-    }
-    return names;
-}
-
 // The traces a save file shows (its lines that start with the top scope "SystemC.").
 inline std::vector<std::string> gtkw_listed(const std::string& gtkw_path) {
     std::vector<std::string> listed;
@@ -170,6 +146,13 @@ inline vcd_content vcd_read(const std::string& vcd_path) {
         for (const auto& name : by_id[id]) c.changes[name].push_back(now);
     }
     return c;
+}
+
+// The names a VCD declares (GTKWave's form), from the same reader.
+inline std::set<std::string> vcd_declared(const std::string& vcd_path) {
+    std::set<std::string> names;
+    for (const auto& [name, width] : vcd_read(vcd_path).width) names.insert(name);
+    return names;
 }
 
 // The number format a view must give each bus it shows: a name (scope path below "SystemC."
