@@ -1,0 +1,196 @@
+// Seed 004's shading system as a bit-accurate golden model (plain C++, no SystemC): the geometry side
+// plans each raster line into intervals and delivers N.H and N.L at their sample points; the
+// hardware forms a colour sample per sample point (the specular device, a diffuse multiplier and an
+// adder per channel), the coefficient unit turns the samples into a polynomial, and the Horner unit
+// (or our forward-difference evaluator) gives every pixel of the interval, clamped to the pixel format.
+// The SystemC pipeline (modules/pipeline/) is bit-exact against golden_interval() and golden_frame().
+//
+// This header is the contract between the parts:
+//   frame_constants / sample_geometry / golden_sample   the sample stage      (golden_pipeline.cpp)
+//   interval_job / golden_interval                       one interval          (golden_pipeline.cpp)
+//   plan_config / make_plan                              the geometry side     (plan.cpp)
+//   head_zone / zone names                               the Fig. 5 zone map   (zones.cpp)
+//   golden_frame / hardware_ops / metrics                a whole frame         (golden_pipeline.cpp, metrics.cpp)
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "formats/fixed_point.h"
+#include "formats/interp_formats.h"
+#include "formats/specular_formats.h"
+#include "scene/counted.h"
+#include "scene/raster.h"
+#include "scene/shade.h"
+#include "scene/world.h"
+
+namespace shading::pipeline {
+
+// ---- Formats of the sample stage (decisions: seed 004 leaves them open) ----
+// k_d * I_l per channel: an 8-bit code like the device's k_s * I (spec::ksi_fmt), a frame constant.
+inline constexpr qfmt kdi_fmt = spec::ksi_fmt;
+// Diffuse multiplier: k_d*I (8.0) x N.L (Q1.15) -> Q9.23, the 15 low wires dropped (floor) -> Q9.8,
+// in 8-bit image units like the device's out25..27 (spec::out_fmt).
+inline constexpr qfmt diffuse_fmt = spec::out_fmt;
+inline constexpr unsigned diffuse_drop = spec::cos_fmt.frac + kdi_fmt.frac - diffuse_fmt.frac;  // 15
+// Ambient term per channel: 255 * ambient as an unsigned Q8.8 code (rounded), a frame constant.
+inline constexpr qfmt ambient_fmt = interp::sample_fmt;
+// Colour sample: ambient + diffuse + specular, saturated to interp::sample_fmt (Q8.8 unsigned,
+// largest code 0xFFFF = 255.996): the coefficient units' input format.
+inline constexpr qfmt colour_fmt = interp::sample_fmt;
+// Output stage: the evaluator's Q16.16 signed pixel clamped to [0, 0xFFFF] of Q8.8 unsigned (the
+// 8 low fraction wires dropped, floor). The frame buffer stores these; PNGs round them to 8 bits.
+inline constexpr qfmt pixel_fmt = interp::sample_fmt;
+
+using rgb_codes = std::array<uint64_t, 3>;
+
+// ---- Sample stage ----
+// Per-frame registers, loaded once per frame (UA 60553, Fig. 3: RG1 by strobe 15, RG3-5 by 20, 22, 24).
+struct frame_constants {
+    unsigned n = 32;           // the device's in16 (1..1000)
+    rgb_codes ksi{};           // k_s * I_l, 8-bit codes (scene::ksi_code)
+    rgb_codes kdi{};           // k_d * I_l, 8-bit codes (scene::ksi_code)
+    rgb_codes ambient{};       // 255 * ambient, Q8.8 codes
+};
+// The frame constants of a scene. The hardware path shades one material under one light: throws
+// scene::scene_error naming the scene if it has more than one light or its objects' materials differ.
+frame_constants frame_constants_of(const scene::world& s);
+
+// What the geometry side delivers per sample point: in18's Q1.15 codes (scene::cos_code) of N.H and
+// N.L; both 0 where N.L <= 0 (no highlight where the light does not reach, as the references gate it).
+struct sample_geometry {
+    uint32_t cos_nh = 0, cos_nl = 0;
+    bool operator==(const sample_geometry& o) const { return cos_nh == o.cos_nh && cos_nl == o.cos_nl; }
+};
+// Single light (light index 0). Pure format conversion: not counted.
+sample_geometry sample_of(const scene::pixel_geometry& g);
+
+// One colour sample (colour_fmt codes per channel):
+//   sat(ambient + floor(kdi * cos_nl >> 15) + device_specular(n, cos_nh, ksi)).
+rgb_codes golden_sample(const scene::device_config& dev, const frame_constants& k, sample_geometry g);
+
+// ---- One interval ----
+enum class evaluator { horner, fd };  // the seed's Fig. 4 Horner unit, or our forward differences
+const char* evaluator_name(evaluator e);  // "horner", "fd"
+
+// An interval of a raster line as it enters the hardware: pixels x0 .. x0 + len - 1 of line y, pixel
+// k at t = k / 2^m. Cubic: s[0..3] at the sample set's points (case 1: t = 0, 1/4, 1/2, 1; case 2:
+// 0, 1/2, 3/4, 1). Quadratic (deg2): s[0..2] at t = 0, 1/2, 1, s[3] = s[2]. The sample at t = 1 is
+// pixel x0 + 2^m, the next interval's first pixel (shared, not recomputed by the geometry side).
+// An exact pixel is m = 0, len = 1, deg2 = false, all four samples equal: the cubic through four
+// equal samples is that constant (A = B = C = 0, D = I1), so the hardware needs no special case.
+struct interval_job {
+    unsigned y = 0, x0 = 0;
+    unsigned len = 1;        // 1 .. 2^m (shorter only when the plan says so)
+    unsigned m = 0;          // 0 (exact pixel) or interp::m_min .. interp::m_max
+    bool deg2 = false;
+    std::array<sample_geometry, 4> s{};
+    uint8_t zone = 0;        // the zone of the interval's first pixel (head_zone), for maps and reports
+};
+
+// Every pixel of one interval, pixel_fmt codes per channel: golden_sample at each sample point ->
+// golden_cubic_coefs (sample set, /3 mode; whole-sum grouping) or golden_quad_coefs -> per pixel
+// golden_horner (t code k << (8 - m)) or golden_fd (fixed m; quadratic as A = 0, B = a, C = b, D = c)
+// -> golden_output_clamp.
+rgb_codes::value_type golden_output_clamp(uint64_t coef_bits);
+std::vector<rgb_codes> golden_interval(const interval_job& job, const frame_constants& k,
+                                       const scene::device_config& dev, evaluator e, interp::sample_set set,
+                                       interp::div3_mode div);
+
+// ---- The geometry side: planning a frame into intervals ----
+enum class length_policy { fixed, adaptive };
+enum class degree_policy { cubic, quadratic, zones, adaptive };
+const char* length_policy_name(length_policy p);  // "fixed", "adaptive"
+const char* degree_policy_name(degree_policy p);  // "cubic", "quadratic", "zones", "adaptive"
+
+struct plan_config {
+    interp::sample_set set = interp::sample_set::case1;
+    interp::div3_mode div = interp::div3_mode::shift_add;
+    length_policy length = length_policy::fixed;
+    unsigned m = 4;                        // fixed: N = 2^m
+    unsigned m_min = interp::m_min;        // adaptive: range of m tried, longest first
+    unsigned m_max = 5;
+    double length_tol = 0.5;               // adaptive length: largest accepted error estimate, 8-bit levels
+    degree_policy degree = degree_policy::cubic;
+    double degree_tol = 0.25;              // adaptive degree: largest accepted quadratic error estimate
+    double depth_step = 0.02;              // world units: a depth jump that ends a segment (raster.h)
+    evaluator eval = evaluator::horner;    // fd needs length = fixed (one m per evaluator)
+};
+// Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
+// fd with adaptive length, a negative tolerance).
+void validate(const plan_config& c);
+
+// A frame's intervals, line by line, left to right, and what the geometry side spent on them:
+// `geometry` counts geometry_at plus the two dot products at every distinct pixel whose geometry was
+// computed (sample points, and the extra check points the adaptive policies look at); `decision`
+// counts the policies' own arithmetic (the error estimates). Lines are split into segments at every
+// discontinuity (raster.h: coverage edges, object changes, depth steps), and no interval's samples
+// straddle one; pieces too short for an interval of 2^m_min are exact pixels.
+struct plan {
+    unsigned width = 0, height = 0;
+    std::vector<interval_job> jobs;
+    scene::op_counts geometry, decision;
+    std::size_t geometry_points = 0;   // distinct pixels whose geometry was computed
+    std::size_t pixels = 0;            // covered pixels (= sum of len)
+};
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c);
+
+// ---- Zones of the head (seed 004, Fig. 5, reconstructed: the figure is not in the text) ----
+// 0 other (ears, skull, neck), 1 forehead, 2 brows, 3 eyes, 4 nose, 5 cheeks, 6 mouth, 7 chin.
+// Which are quadratic under degree_policy::zones: see zone_is_quadratic (seed 004: zones 2, 4, 7).
+inline constexpr unsigned zone_count = 8;
+const char* zone_name(unsigned zone);
+bool zone_is_quadratic(unsigned zone);
+// The zone of a surface point of the head scan, from its position relative to the mesh's bounds.
+unsigned head_zone(const scene::rasterised& r, const scene::pixel_geometry& g);
+
+// ---- A whole frame ----
+struct frame {
+    unsigned width = 0, height = 0;
+    std::vector<rgb_codes> px;          // pixel_fmt codes; 0 where not covered
+    std::vector<uint8_t> covered;
+    std::vector<uint8_t> degree;        // 0 empty, 1 exact pixel, 2 quadratic, 3 cubic
+    std::vector<uint8_t> log2_len;      // m of the pixel's interval (0 exact)
+    std::vector<uint8_t> zone;
+};
+// Runs golden_interval over every job of the plan into a frame (the frame buffer's content).
+frame golden_frame(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c);
+// The same frame with every covered pixel an exact sample (golden_sample at every pixel, clamped to
+// pixel_fmt): per-pixel shading through the same device, the interpolation's reference.
+frame per_pixel_frame(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev);
+
+// Operations of the hardware path for a planned frame, counted per block as the hardware performs
+// them: the geometry side (plan.geometry + plan.decision), per sample evaluated by the sample stage
+// the device's multipliers and adders and the diffuse multiplier and adders, per interval the
+// coefficient unit's adders, per pixel the evaluator's multiplications and additions. `interpolation`
+// is everything after the geometry side.
+struct hardware_counts {
+    scene::op_counts geometry, sample_stage, interpolation;
+    std::size_t pixels = 0, samples = 0, intervals = 0;
+    uint64_t clocks = 0;  // clock cycles of the evaluator for the frame (Horner: 6 per cubic pixel, 4 per quadratic)
+    scene::op_counts total() const {
+        scene::op_counts t = geometry;
+        t += sample_stage;
+        t += interpolation;
+        return t;
+    }
+};
+hardware_counts hardware_ops(const plan& p, const plan_config& c);
+
+// ---- Error measures over covered pixels and the three channels, in 8-bit units ----
+struct error_stats {
+    double nmse = 0.0;     // sum (a - ref)^2 / sum ref^2
+    double psnr_db = 0.0;  // 10 log10(255^2 / MSE); +inf when equal
+    double max_abs = 0.0;  // largest |a - ref|
+    std::size_t pixels = 0;
+};
+// The values of a frame's pixels in 8-bit units (code / 256).
+scene::shaded_image to_image(const frame& f);
+// `zone` < 0: the whole image; otherwise only pixels of that zone (zones from `zones`, per pixel).
+error_stats compare(const scene::shaded_image& a, const scene::shaded_image& ref, const std::vector<uint8_t>* zones = nullptr,
+                    int zone = -1);
+
+}  // namespace shading::pipeline
