@@ -1,0 +1,183 @@
+// The golden model of seed 004's shading system (pipeline.h): the sample stage, one interval through
+// the coefficient unit and an evaluator, a whole frame, and the hardware path's operation counts.
+// Direct integer arithmetic on the codes of pipeline.h's format table; the interpolation units come
+// from interp_golden (the SystemC pipeline must match these bit for bit).
+#include <algorithm>
+#include <cmath>
+
+#include "golden/interp_golden.h"
+#include "pipeline/pipeline.h"
+#include "scene/scene.h"
+
+namespace shading::pipeline {
+
+namespace {
+
+constexpr uint64_t pixel_max = pixel_fmt.mask();  // 0xFFFF
+
+bool same_material(const scene::material& a, const scene::material& b) {
+    return a.ambient == b.ambient && a.k_d == b.k_d && a.k_s == b.k_s && a.n == b.n;
+}
+
+// An interval the hardware cannot take: a programming error of the plan, reported clearly.
+void check_job(const interval_job& job) {
+    const bool exact = job.m == 0;
+    const bool m_ok = exact || (job.m >= interp::m_min && job.m <= interp::m_max);
+    const unsigned n = 1u << job.m;
+    if (!m_ok || job.len < 1 || job.len > n || (exact && job.deg2))
+        throw scene::scene_error("golden_interval: invalid interval at line " + std::to_string(job.y) + ", x " +
+                                 std::to_string(job.x0) + " (m " + std::to_string(job.m) + ", len " +
+                                 std::to_string(job.len) + (job.deg2 ? ", quadratic" : "") +
+                                 "): m must be 0 (exact pixel, len 1, cubic) or " + std::to_string(interp::m_min) +
+                                 ".." + std::to_string(interp::m_max) + " with len 1..2^m");
+}
+
+}  // namespace
+
+frame_constants frame_constants_of(const scene::world& s) {
+    // Zero lights is refused too: the sample stage reads light 0's N.L and N.H.
+    if (s.lights.size() != 1)
+        throw scene::scene_error("scene '" + s.name + "': the hardware path shades exactly one light, the scene has " +
+                                 std::to_string(s.lights.size()));
+    if (s.objects.empty()) throw scene::scene_error("scene '" + s.name + "': no objects, so no material to shade");
+    const scene::material& m = s.objects.front().mat;
+    for (const auto& o : s.objects)
+        if (!same_material(o.mat, m))
+            throw scene::scene_error("scene '" + s.name + "': the hardware path shades one material, object '" +
+                                     o.name + "' differs from object '" + s.objects.front().name + "'");
+    const scene::light& l = s.lights.front();
+    frame_constants k;
+    k.n = m.n;
+    for (int c = 0; c < 3; ++c) {
+        k.ksi[c] = scene::ksi_code(m.k_s[c] * l.intensity[c]);
+        k.kdi[c] = scene::ksi_code(m.k_d[c] * l.intensity[c]);
+        // 255 * ambient in Q8.8, rounded to nearest, clamped to the largest code.
+        const double a = std::round(255.0 * std::clamp(m.ambient[c], 0.0, 1.0) * (1u << ambient_fmt.frac));
+        k.ambient[c] = std::min<uint64_t>(static_cast<uint64_t>(a), ambient_fmt.mask());
+    }
+    return k;
+}
+
+sample_geometry sample_of(const scene::pixel_geometry& g) {
+    // The same gate as shade.cpp: no diffuse and no highlight unless N.L > 0.
+    const double ndl = dot(g.n, g.l[0]).value();
+    if (!(ndl > 0.0)) return {};
+    const double ndh = dot(g.n, g.h[0]).value();
+    sample_geometry s;
+    s.cos_nh = scene::cos_code(std::max(ndh, 0.0));
+    s.cos_nl = scene::cos_code(ndl);
+    return s;
+}
+
+rgb_codes golden_sample(const scene::device_config& dev, const frame_constants& k, sample_geometry g) {
+    const auto spec = scene::device_specular(dev, k.n, g.cos_nh, k.ksi);  // out_fmt Q9.8
+    rgb_codes out{};
+    for (int c = 0; c < 3; ++c) {
+        // k_d*I (8.0) x N.L (Q1.15) = Q9.15, diffuse_drop = 7 low wires dropped (floor) -> Q9.8.
+        const uint64_t diffuse = (k.kdi[c] * g.cos_nl) >> diffuse_drop;
+        const uint64_t sum = k.ambient[c] + diffuse + spec[c];  // Q.8, at most 18 bits: no wrap
+        out[c] = std::min(sum, colour_fmt.mask());             // saturated to colour_fmt
+    }
+    return out;
+}
+
+const char* evaluator_name(evaluator e) {
+    switch (e) {
+        case evaluator::horner: return "horner";
+        case evaluator::fd: return "fd";
+    }
+    return "?";
+}
+
+rgb_codes::value_type golden_output_clamp(uint64_t coef_bits) {
+    const int64_t v = code_value(coef_bits, interp::coef_fmt);  // signed Q16.16
+    if (v < 0) return 0;
+    const uint64_t q8 = static_cast<uint64_t>(v) >> (interp::coef_fmt.frac - pixel_fmt.frac);  // floor
+    return std::min(q8, pixel_max);
+}
+
+std::vector<rgb_codes> golden_interval(const interval_job& job, const frame_constants& k,
+                                       const scene::device_config& dev, evaluator e, interp::sample_set set,
+                                       interp::div3_mode div) {
+    check_job(job);
+    const bool exact = job.m == 0;
+    // The sample stage: an exact pixel's sample is evaluated once and fills all four registers.
+    std::array<rgb_codes, 4> smp{};
+    const unsigned n_samples = exact ? 1 : (job.deg2 ? 3 : 4);
+    for (unsigned i = 0; i < n_samples; ++i) smp[i] = golden_sample(dev, k, job.s[i]);
+    for (unsigned i = n_samples; i < 4; ++i) smp[i] = smp[n_samples - 1];
+
+    std::vector<rgb_codes> out(job.len);
+    for (int c = 0; c < 3; ++c) {
+        interp::cubic_coefs coefs;
+        if (job.deg2)
+            coefs = interp::golden_quad_coefs({smp[0][c], smp[1][c], smp[2][c]});
+        else
+            coefs = interp::golden_cubic_coefs({smp[0][c], smp[1][c], smp[2][c], smp[3][c]}, set, div,
+                                               interp::div3_grouping::whole_sum);
+        if (e == evaluator::horner) {
+            for (unsigned p = 0; p < job.len; ++p) {
+                const uint64_t t = static_cast<uint64_t>(p) << (interp::t_fmt.frac - job.m);  // k / 2^m in Q1.8
+                out[p][c] = golden_output_clamp(interp::golden_horner(coefs, t, job.deg2));
+            }
+        } else {
+            // The FD unit is a cubic evaluator: a quadratic enters as A = 0, B = a, C = b, D = c.
+            const interp::cubic_coefs fd = job.deg2 ? interp::cubic_coefs{0, coefs.a, coefs.b, coefs.c} : coefs;
+            const auto bits = interp::golden_fd(fd, job.m, job.len);
+            for (unsigned p = 0; p < job.len; ++p) out[p][c] = golden_output_clamp(bits[p]);
+        }
+    }
+    return out;
+}
+
+namespace {
+frame empty_frame(unsigned w, unsigned h) {
+    frame f;
+    f.width = w;
+    f.height = h;
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+    f.px.assign(n, rgb_codes{});
+    f.covered.assign(n, 0);
+    f.degree.assign(n, 0);
+    f.log2_len.assign(n, 0);
+    f.zone.assign(n, 0);
+    return f;
+}
+}  // namespace
+
+frame golden_frame(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c) {
+    frame f = empty_frame(p.width, p.height);
+    for (const interval_job& job : p.jobs) {
+        if (job.y >= p.height || job.x0 + job.len > p.width)
+            throw scene::scene_error("golden_frame: an interval at line " + std::to_string(job.y) + ", x " +
+                                     std::to_string(job.x0) + " leaves the " + std::to_string(p.width) + "x" +
+                                     std::to_string(p.height) + " frame");
+        const auto px = golden_interval(job, k, dev, c.eval, c.set, c.div);
+        const uint8_t degree = job.m == 0 ? 1 : (job.deg2 ? 2 : 3);
+        for (unsigned i = 0; i < job.len; ++i) {
+            const std::size_t at = static_cast<std::size_t>(job.y) * p.width + job.x0 + i;
+            f.px[at] = px[i];
+            f.covered[at] = 1;
+            f.degree[at] = degree;
+            f.log2_len[at] = static_cast<uint8_t>(job.m);
+            f.zone[at] = job.zone;
+        }
+    }
+    return f;
+}
+
+frame per_pixel_frame(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev) {
+    // Every pixel exact: degree 1, log2_len 0; zone left 0 (the caller may fill it with head_zone).
+    frame f = empty_frame(r.width, r.height);
+    for (unsigned y = 0; y < r.height; ++y)
+        for (unsigned x = 0; x < r.width; ++x) {
+            if (!r.covered(x, y)) continue;
+            const std::size_t at = r.index(x, y);
+            f.px[at] = golden_sample(dev, k, sample_of(scene::geometry_at(r, x, y, nullptr)));
+            f.covered[at] = 1;
+            f.degree[at] = 1;
+        }
+    return f;
+}
+
+}  // namespace shading::pipeline
