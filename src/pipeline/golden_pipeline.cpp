@@ -181,3 +181,85 @@ frame per_pixel_frame(const scene::rasterised& r, const frame_constants& k, cons
 }
 
 }  // namespace shading::pipeline
+
+// ---- Operation counts of the hardware path ----
+namespace shading::pipeline {
+
+namespace {
+
+// The sample stage per colour sample (one N.H, N.L pair): the specular device's datapath, shared by
+// every device (modules/specular/specular_device.h: MUL7 cos^2, MUL10 a x (cos^2 - cos), MUL12..14
+// times k_s*I; ADD9 cos^2 - cos, ADD11 + cos; the a generator works once per frame on RG1's n), then
+// per channel the diffuse multiplier (k_d*I x N.L) and two adders (ambient + diffuse + specular).
+constexpr scene::op_counts device_per_sample{5, 0, 0, 2, 0};
+constexpr scene::op_counts diffuse_per_sample{3, 0, 0, 6, 0};
+
+// The coefficient units per interval and channel, adders of their shift-and-add networks
+// (shift_add_network: one adder per term but the first, the subtraction's included):
+//   cubic case 1: A 6 terms (5), B 6 (5), C 7 (6); case 2: A 6 (5), B 7 (6), C 8 (7);
+//   /3 of A and C: Fig. 2's x/2 - x/8 - x/32 - x/128, 4 terms (3) each, or the exact constant divider
+//   (const_div.h), counted as one division each;
+//   quadratic: a 3 terms (2), b 4 (3); c = I1 and D = I1 are wiring.
+// So a cubic (and an exact pixel, which goes through the cubic unit) costs 16 (case 1) or 18 (case 2)
+// network adders plus 6 for the two /3 (or 2 divisions); a quadratic 5 adders.
+scene::op_counts cubic_unit_ops(interp::sample_set set, interp::div3_mode div) {
+    scene::op_counts c;
+    c.add = set == interp::sample_set::case1 ? 5 + 5 + 6 : 5 + 6 + 7;
+    if (div == interp::div3_mode::shift_add)
+        c.add += 2 * 3;
+    else
+        c.div += 2;
+    return c;
+}
+constexpr scene::op_counts quad_unit_ops{0, 0, 0, 2 + 3, 0};
+// Forward differences' set-up per interval and channel (fd_eval.h): D1 = A/N^3 + B/N^2 + C/N
+// (3 terms, 2 adders), D2 = (4A + 2A)/N^3 + 2B/N^2 (3 terms, 2), D3 = (4A + 2A)/N^3 (2 terms, 1);
+// P = D is wiring. Per pixel: P += D1, D1 += D2, D2 += D3.
+constexpr scene::op_counts fd_setup_ops{0, 0, 0, 5, 0};
+constexpr scene::op_counts fd_pixel_ops{0, 0, 0, 3, 0};
+// The Horner unit (Fig. 4) per pixel and channel: cubic steps 2..6 are A t + B, x t, + C, x t, + D
+// (3 MUL, 3 Sm, 6 clocks); degree 2 stops after + C (2 MUL, 2 Sm, 4 clocks).
+constexpr scene::op_counts horner_cubic_ops{3, 0, 0, 3, 0};
+constexpr scene::op_counts horner_quad_ops{2, 0, 0, 2, 0};
+constexpr unsigned horner_cubic_clocks = 6, horner_quad_clocks = 4, fd_clocks = 1;
+
+scene::op_counts times(scene::op_counts c, uint64_t k) {
+    c.mul *= k;
+    c.div *= k;
+    c.sqrt *= k;
+    c.add *= k;
+    c.cmp *= k;
+    return c;
+}
+
+}  // namespace
+
+hardware_counts hardware_ops(const plan& p, const plan_config& c) {
+    hardware_counts h;
+    h.geometry = p.geometry;
+    h.geometry += p.decision;
+    const scene::op_counts cubic_unit = cubic_unit_ops(c.set, c.div);
+    for (const interval_job& job : p.jobs) {
+        const bool exact = job.m == 0;
+        const bool quad = job.deg2 && !exact;
+        const uint64_t samples = exact ? 1 : (quad ? 3 : 4);  // an exact pixel's sample fills all four
+        h.samples += samples;
+        h.sample_stage += times(device_per_sample, samples);
+        h.sample_stage += times(diffuse_per_sample, samples);
+        ++h.intervals;
+        h.pixels += job.len;
+        // Three channels, each with its own coefficient unit and evaluator.
+        h.interpolation += times(quad ? quad_unit_ops : cubic_unit, 3);
+        if (c.eval == evaluator::fd) {
+            h.interpolation += times(fd_setup_ops, 3);
+            h.interpolation += times(fd_pixel_ops, 3ull * job.len);
+            h.clocks += static_cast<uint64_t>(fd_clocks) * job.len;
+        } else {
+            h.interpolation += times(quad ? horner_quad_ops : horner_cubic_ops, 3ull * job.len);
+            h.clocks += static_cast<uint64_t>(quad ? horner_quad_clocks : horner_cubic_clocks) * job.len;
+        }
+    }
+    return h;
+}
+
+}  // namespace shading::pipeline
