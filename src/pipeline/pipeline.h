@@ -133,14 +133,17 @@ struct plan {
     std::vector<interval_job> jobs;
     scene::op_counts geometry, decision;
     std::size_t geometry_points = 0;   // distinct pixels whose geometry was computed
+    // Colour samples the adaptive policies evaluated (golden_sample) at pixels that are no job's
+    // sample point: their check points. The sample stage's cost for these is the decision's too.
+    std::size_t check_samples = 0;
     std::size_t pixels = 0;            // covered pixels (= sum of len)
 };
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c);
 
 // ---- Zones of the head (seed 004, Fig. 5, reconstructed: the figure is not in the text) ----
-// 0 other (ears, skull, neck), 1 forehead, 2 brows, 3 eyes, 4 nose, 5 cheeks, 6 mouth, 7 chin.
-// Which are quadratic under degree_policy::zones: see zone_is_quadratic (seed 004: zones 2, 4, 7).
+// 0 other (ears, skull, neck), 1 brows, 2 forehead, 3 eyes, 4 cheeks, 5 nose, 6 mouth, 7 chin:
+// numbered so that seed 004's quadratic zones 2, 4, 7 are the flat ones (zones.cpp, zone_is_quadratic).
 inline constexpr unsigned zone_count = 8;
 const char* zone_name(unsigned zone);
 bool zone_is_quadratic(unsigned zone);

@@ -1,0 +1,323 @@
+// The geometry side of seed 004's shading system (pipeline.h): each raster line is cut into segments
+// at its discontinuities, each segment is tiled into intervals of 2^m pixels by a length policy, each
+// interval gets its degree by a degree policy, and the geometry (N.H, N.L) is computed once per
+// distinct pixel that any sample or decision needs, every operation counted.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "pipeline/pipeline.h"
+
+namespace shading::pipeline {
+
+const char* length_policy_name(length_policy p) {
+    switch (p) {
+        case length_policy::fixed: return "fixed";
+        case length_policy::adaptive: return "adaptive";
+    }
+    return "?";
+}
+
+const char* degree_policy_name(degree_policy p) {
+    switch (p) {
+        case degree_policy::cubic: return "cubic";
+        case degree_policy::quadratic: return "quadratic";
+        case degree_policy::zones: return "zones";
+        case degree_policy::adaptive: return "adaptive";
+    }
+    return "?";
+}
+
+void validate(const plan_config& c) {
+    const std::string range = std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max);
+    auto fail = [](const std::string& what) { throw scene::scene_error("plan: " + what); };
+    if (c.length == length_policy::fixed && (c.m < interp::m_min || c.m > interp::m_max))
+        fail("interval length 2^m with m = " + std::to_string(c.m) + " is outside the units' range m = " + range);
+    if (c.m_min < interp::m_min || c.m_min > interp::m_max || c.m_max < interp::m_min || c.m_max > interp::m_max)
+        fail("adaptive interval lengths m = " + std::to_string(c.m_min) + ".." + std::to_string(c.m_max) +
+             " are outside the units' range m = " + range);
+    if (c.m_min > c.m_max)
+        fail("m_min = " + std::to_string(c.m_min) + " exceeds m_max = " + std::to_string(c.m_max));
+    if (!(c.length_tol >= 0.0)) fail("the length tolerance must be >= 0 (8-bit levels)");
+    if (!(c.degree_tol >= 0.0)) fail("the degree tolerance must be >= 0 (8-bit levels)");
+    if (!(c.depth_step > 0.0)) fail("the depth step must be > 0 (world units)");
+    // The forward-difference evaluator is set up for one N per frame (interp_line_unit).
+    if (c.eval == evaluator::fd && c.length != length_policy::fixed)
+        fail("the forward-difference evaluator needs a fixed interval length (length policy 'fixed')");
+}
+
+namespace {
+
+using scene::cnum;
+using scene::cvec3;
+using scene::op_counts;
+
+// Sample points of an interval as fractions of N in eighths (t = k/8): the sets of pipeline.h.
+// Cubic case 1: 0, 1/4, 1/2, 1; case 2: 0, 1/2, 3/4, 1. Quadratic: 0, 1/2, 1.
+std::array<unsigned, 4> cubic_points(interp::sample_set set) {
+    return set == interp::sample_set::case1 ? std::array<unsigned, 4>{0, 2, 4, 8} : std::array<unsigned, 4>{0, 4, 6, 8};
+}
+constexpr std::array<unsigned, 3> quad_points{0, 4, 8};
+// The cubic's sample that the quadratic skips (the adaptive degree policy's check): case 1 t = 1/4,
+// case 2 t = 3/4. The adaptive length policy's check: the middle of the widest gap between the cubic's
+// points, case 1 t = 3/4, case 2 t = 1/4.
+unsigned degree_check(interp::sample_set set) { return set == interp::sample_set::case1 ? 2 : 6; }
+unsigned length_check(interp::sample_set set) { return set == interp::sample_set::case1 ? 6 : 2; }
+
+// Lagrange weights of the polynomial through `nodes` (eighths) at `t` (eighths). Frame constants.
+template <std::size_t K>
+std::array<double, K> lagrange(const std::array<unsigned, K>& nodes, unsigned t) {
+    std::array<double, K> w{};
+    for (std::size_t i = 0; i < K; ++i) {
+        double v = 1.0;
+        for (std::size_t j = 0; j < K; ++j)
+            if (j != i) v *= (double(t) - nodes[j]) / (double(nodes[i]) - nodes[j]);
+        w[i] = v;
+    }
+    return w;
+}
+
+// Every weight above is a multiple of 1/8 (nodes and points on eighths of N): multiplying by one is
+// a shift-and-add network, as in the coefficient units, costing (binary ones of |w| * 8) - 1 adds.
+unsigned shift_add_cost(double w) {
+    auto k = static_cast<unsigned>(std::lround(std::abs(w) * 8.0));
+    unsigned ones = 0;
+    for (; k; k >>= 1) ones += k & 1u;
+    return ones > 0 ? ones - 1 : 0;
+}
+
+// One raster line's geometry, computed once per pixel and counted once.
+class line_geometry {
+public:
+    line_geometry(const scene::rasterised& r, unsigned y, const frame_constants& k, const scene::device_config& dev,
+                  plan& p)
+        : r_(r), y_(y), k_(k), dev_(dev), p_(p), geo_(r.width), have_geo_(r.width, 0), smp_(r.width),
+          col_(r.width), have_col_(r.width, 0) {}
+
+    const scene::pixel_geometry& geometry(unsigned x) {
+        if (!have_geo_[x]) {
+            // geometry_at charges a scratch count, added at once; sample_of may do arithmetic on the
+            // counted values, which then lands in the scratch and is ignored: the dot products are
+            // charged below, exactly as the references' shade_common computes them.
+            op_counts scratch;
+            geo_[x] = scene::geometry_at(r_, x, y_, &scratch);
+            p_.geometry += scratch;
+            smp_[x] = sample_of(geo_[x]);
+            charge_dots(geo_[x]);
+            ++p_.geometry_points;
+            have_geo_[x] = 1;
+        }
+        return geo_[x];
+    }
+    sample_geometry sample(unsigned x) {
+        geometry(x);
+        return smp_[x];
+    }
+    // The colour sample at pixel x (the sample stage's output), for the policies' estimates.
+    bool has_colour(unsigned x) const { return have_col_[x] != 0; }
+    const rgb_codes& colour(unsigned x) {
+        if (!have_col_[x]) {
+            col_[x] = golden_sample(dev_, k_, sample(x));
+            have_col_[x] = 1;
+        }
+        return col_[x];
+    }
+
+private:
+    // N.L, the N.L > 0 gate, and N.H clamped at 0 where the light reaches (sample_of, shade.cpp).
+    void charge_dots(const scene::pixel_geometry& g) {
+        op_counts* ops = &p_.geometry;
+        auto recount = [ops](const cvec3& v) {
+            return cvec3{cnum(v.x.value(), ops), cnum(v.y.value(), ops), cnum(v.z.value(), ops)};
+        };
+        const cvec3 n = recount(g.n);
+        const cnum zero(0.0, ops);
+        if (dot(n, recount(g.l[0])) > zero) max(dot(n, recount(g.h[0])), zero);
+    }
+
+    const scene::rasterised& r_;
+    unsigned y_;
+    const frame_constants& k_;
+    const scene::device_config& dev_;
+    plan& p_;
+    std::vector<scene::pixel_geometry> geo_;
+    std::vector<uint8_t> have_geo_;
+    std::vector<sample_geometry> smp_;
+    std::vector<rgb_codes> col_;
+    std::vector<uint8_t> have_col_;
+};
+
+class planner {
+public:
+    planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+            const plan_config& c, plan& p)
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), cubic_(cubic_points(c.set)),
+          w_deg_(lagrange(quad_points, degree_check(c.set))),
+          w_len_cubic_(lagrange(cubic_, length_check(c.set))),
+          w_len_quad_(lagrange(quad_points, length_check(c.set))),
+          // Tolerances in 8-bit levels against Q8.8 codes: scaled once per frame.
+          length_tol_(c.length_tol * (1u << colour_fmt.frac)), degree_tol_(c.degree_tol * (1u << colour_fmt.frac)) {}
+
+    void line(unsigned y) {
+        line_geometry lg(r_, y, k_, dev_, p_);
+        const std::size_t first_job = p_.jobs.size();
+        // Segment boundaries: every discontinuity (coverage edges bound the spans; object changes and
+        // depth steps cut them), so no interval's pixels or samples straddle one.
+        const auto cuts = scene::line_discontinuities(r_, y, c_.depth_step);
+        for (const scene::span& sp : scene::line_spans(r_, y)) {
+            unsigned xa = sp.x_begin;
+            for (const auto& d : cuts)
+                if (d.x > sp.x_begin && d.x < sp.x_end) {
+                    segment(lg, y, xa, d.x - 1);
+                    xa = d.x;
+                }
+            segment(lg, y, xa, sp.x_end - 1);
+        }
+        // Check samples: colours evaluated where no job of this line has a sample point.
+        std::vector<uint8_t> sampled(r_.width, 0);
+        for (std::size_t j = first_job; j < p_.jobs.size(); ++j) {
+            const interval_job& job = p_.jobs[j];
+            const unsigned n = 1u << job.m;
+            if (job.m == 0)
+                sampled[job.x0] = 1;
+            else if (job.deg2)
+                for (unsigned e : quad_points) sampled[job.x0 + e * n / 8] = 1;
+            else
+                for (unsigned e : cubic_) sampled[job.x0 + e * n / 8] = 1;
+        }
+        for (unsigned x = 0; x < r_.width; ++x)
+            if (lg.has_colour(x) && !sampled[x]) ++p_.check_samples;
+    }
+
+private:
+    // Pixels xa..xb (inclusive) with no discontinuity inside.
+    void segment(line_geometry& lg, unsigned y, unsigned xa, unsigned xb) {
+        const unsigned lowest = c_.length == length_policy::fixed ? interp::m_min : c_.m_min;
+        unsigned pos = xa;
+        for (;;) {
+            const unsigned room = xb - pos;  // the t = 1 sample, pixel pos + 2^m, must be <= xb
+            if (room < (1u << lowest)) break;
+            unsigned top = lowest;
+            const unsigned highest = c_.length == length_policy::fixed ? c_.m : c_.m_max;
+            while (top < highest && (1u << (top + 1)) <= room) ++top;
+            interval_job job = choose(lg, y, pos, lowest, top);
+            pos += job.len;
+            p_.pixels += job.len;
+            p_.jobs.push_back(job);
+        }
+        // The tail: exact pixels (the last one's geometry is the last interval's t = 1 sample).
+        for (unsigned x = pos; x <= xb; ++x) {
+            interval_job job;
+            job.y = y;
+            job.x0 = x;
+            job.len = 1;
+            job.m = 0;
+            const sample_geometry s = lg.sample(x);
+            job.s = {s, s, s, s};
+            job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(x)));
+            ++p_.pixels;
+            p_.jobs.push_back(job);
+        }
+    }
+
+    // The interval at `pos`: the longest m in lowest..top that the length policy accepts.
+    interval_job choose(line_geometry& lg, unsigned y, unsigned pos, unsigned lowest, unsigned top) {
+        for (unsigned m = top;; --m) {
+            const unsigned n = 1u << m;
+            auto at = [pos, n](unsigned eighths) { return pos + eighths * n / 8; };
+            const bool deg2 = degree(lg, pos, n);
+            interval_job job;
+            job.y = y;
+            job.x0 = pos;
+            job.len = n;
+            job.m = m;
+            job.deg2 = deg2;
+            if (deg2) {
+                for (unsigned i = 0; i < 3; ++i) job.s[i] = lg.sample(at(quad_points[i]));
+                job.s[3] = job.s[2];
+            } else {
+                for (unsigned i = 0; i < 4; ++i) job.s[i] = lg.sample(at(cubic_[i]));
+            }
+            job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(pos)));
+            if (c_.length == length_policy::fixed || m == lowest) return job;
+            // Adaptive length: the interval's polynomial against the exact colour at the check point.
+            const unsigned check = at(length_check(c_.set));
+            const double e = deg2 ? estimate(lg, pos, n, quad_points, w_len_quad_, check)
+                                  : estimate(lg, pos, n, cubic_, w_len_cubic_, check);
+            if (!(cnum(e, &p_.decision) > cnum(length_tol_, &p_.decision))) return job;
+        }
+    }
+
+    bool degree(line_geometry& lg, unsigned pos, unsigned n) {
+        switch (c_.degree) {
+            case degree_policy::cubic: return false;
+            case degree_policy::quadratic: return true;
+            case degree_policy::zones: {
+                // The zone's box tests: three differences from the nose tip against thresholds
+                // pre-scaled per frame (zones.cpp), at most ten comparisons.
+                p_.decision.add += 3;
+                p_.decision.cmp += 10;
+                return zone_is_quadratic(head_zone(r_, lg.geometry(pos)));
+            }
+            case degree_policy::adaptive: {
+                // The quadratic through t = 0, 1/2, 1 at the cubic's other sample, which the cubic
+                // computes anyway; no extra sample.
+                const unsigned check = pos + degree_check(c_.set) * n / 8;
+                const double e = estimate(lg, pos, n, quad_points, w_deg_, check);
+                return !(cnum(e, &p_.decision) > cnum(degree_tol_, &p_.decision));
+            }
+        }
+        return false;
+    }
+
+    // The largest |polynomial - exact colour| over the channels at pixel `check`, in Q8.8 code units:
+    // the polynomial through the colours at `nodes` evaluated by constant Lagrange weights (shift-and-
+    // add, charged as adds), minus the exact colour (an add), the largest magnitude kept (compares).
+    template <std::size_t K>
+    double estimate(line_geometry& lg, unsigned pos, unsigned n, const std::array<unsigned, K>& nodes,
+                    const std::array<double, K>& w, unsigned check) {
+        std::array<const rgb_codes*, K> s{};
+        for (std::size_t i = 0; i < K; ++i) s[i] = &lg.colour(pos + nodes[i] * n / 8);
+        const rgb_codes& exact = lg.colour(check);
+        double worst = 0.0;
+        for (int ch = 0; ch < 3; ++ch) {
+            double v = 0.0;
+            for (std::size_t i = 0; i < K; ++i) {
+                v += w[i] * double((*s[i])[ch]);
+                p_.decision.add += shift_add_cost(w[i]);
+            }
+            p_.decision.add += K - 1;  // the weighted sum
+            p_.decision.add += 1;      // minus the exact colour
+            const double e = std::abs(v - double(exact[ch]));
+            ++p_.decision.cmp;
+            worst = std::max(worst, e);
+        }
+        return worst;
+    }
+
+    const scene::rasterised& r_;
+    const frame_constants& k_;
+    const scene::device_config& dev_;
+    const plan_config& c_;
+    plan& p_;
+    std::array<unsigned, 4> cubic_;
+    std::array<double, 3> w_deg_;
+    std::array<double, 4> w_len_cubic_;
+    std::array<double, 3> w_len_quad_;
+    double length_tol_, degree_tol_;
+};
+
+}  // namespace
+
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c) {
+    validate(c);
+    plan p;
+    p.width = r.width;
+    p.height = r.height;
+    planner pl(r, k, dev, c, p);
+    for (unsigned y = 0; y < r.height; ++y) pl.line(y);
+    return p;
+}
+
+}  // namespace shading::pipeline

@@ -1,0 +1,5 @@
+# The geometry side (src/pipeline/plan.cpp) and the head's zone map (zones.cpp): plans checked against
+# the rasteriser's spans and discontinuities and the geometry recomputed at the documented pixels.
+# Plain C++, no simulation: tests may share a process. ZoneMapOfTheHead writes out/pipeline/zones_head.png
+# in the build tree (the zone map over the shaded head, to look at).
+shading_add_gtest(test_pipeline_plan SOURCES test_pipeline_plan.cpp LIBS shading_pipeline TIMEOUT 120)
