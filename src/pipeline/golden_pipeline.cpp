@@ -238,6 +238,10 @@ hardware_counts hardware_ops(const plan& p, const plan_config& c) {
     hardware_counts h;
     h.geometry = p.geometry;
     h.geometry += p.decision;
+    // The adaptive policies' check points: colours formed by the sample stage for the decision only
+    // (plan.check_samples), charged to the geometry side's decision, not to `samples`.
+    h.geometry += times(device_per_sample, p.check_samples);
+    h.geometry += times(diffuse_per_sample, p.check_samples);
     const scene::op_counts cubic_unit = cubic_unit_ops(c.set, c.div);
     for (const interval_job& job : p.jobs) {
         const bool exact = job.m == 0;

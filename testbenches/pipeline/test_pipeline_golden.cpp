@@ -517,12 +517,14 @@ plan mixed_plan() {
     p.jobs.push_back(job_of({0, 0, 0, 0}, 3, true));
     for (int i = 0; i < 3; ++i) p.jobs.push_back(interval_job{});
     p.pixels = 37;
+    p.check_samples = 5;
     return p;
 }
 }  // namespace
 
 // Hand sums. Samples: 2 x 4 + 3 + 3 x 1 = 14, each 5 mul + 2 add (device) + 3 mul + 6 add (diffuse
-// and adders): 112 mul, 112 add. Horner, case 1, shift-and-add /3: coefficient units 5 cubic-unit
+// and adders): 112 mul, 112 add. The 5 check samples of the adaptive policies cost the same each
+// (40 mul, 40 add) and are the geometry side's: {10 + 1 + 40, 2, 1, 20 + 4 + 40, 3}. Horner, case 1, shift-and-add /3: coefficient units 5 cubic-unit
 // intervals x 3 channels x 22 adders = 330 and 1 x 3 x 5 = 15; Horner 29 cubic pixels x 3 x (3, 3) =
 // 261 mul, 261 add and 8 quadratic pixels x 3 x (2, 2) = 48, 48; clocks 29 x 6 + 8 x 4 = 206.
 TEST(PipelineOps, HornerHandSums) {
@@ -531,14 +533,14 @@ TEST(PipelineOps, HornerHandSums) {
     c.div = interp::div3_mode::shift_add;
     c.eval = evaluator::horner;
     const hardware_counts h = hardware_ops(mixed_plan(), c);
-    EXPECT_EQ(h.geometry, (scene::op_counts{11, 2, 1, 24, 3}));
+    EXPECT_EQ(h.geometry, (scene::op_counts{51, 2, 1, 64, 3}));
     EXPECT_EQ(h.samples, 14u);
     EXPECT_EQ(h.intervals, 6u);
     EXPECT_EQ(h.pixels, 37u);
     EXPECT_EQ(h.sample_stage, (scene::op_counts{112, 0, 0, 112, 0}));
     EXPECT_EQ(h.interpolation, (scene::op_counts{261 + 48, 0, 0, 330 + 15 + 261 + 48, 0}));
     EXPECT_EQ(h.clocks, 206u);
-    EXPECT_EQ(h.total(), (scene::op_counts{11 + 112 + 309, 2, 1, 24 + 112 + 654, 3}));
+    EXPECT_EQ(h.total(), (scene::op_counts{51 + 112 + 309, 2, 1, 64 + 112 + 654, 3}));
 }
 
 // FD, case 2, exact /3: cubic unit 18 adders + 2 divisions per channel (5 x 3 = 15 units: 270 add,
@@ -554,4 +556,43 @@ TEST(PipelineOps, FdHandSums) {
     EXPECT_EQ(h.interpolation, (scene::op_counts{0, 30, 0, 270 + 15 + 90 + 333, 0}));
     EXPECT_EQ(h.clocks, 37u);
     EXPECT_EQ(h.pixels, 37u);
+}
+
+// ---- With the geometry side's plan ----
+
+// make_plan + golden_frame on the sphere, against per_pixel_frame (which reads geometry_at itself):
+// every covered pixel is some interval's, nothing else is; an interval's first pixel (t = 0: the
+// evaluators return D = I1 exactly) and every exact pixel equal the per-pixel frame bit for bit; the
+// counts cover every pixel once; the interpolated pixels stay near the per-pixel ones.
+TEST(PipelineFrame, PlannedFrameAgainstPerPixel) {
+    const scene::world w = scene::builtin_scene("sphere", SHADING_SOURCE_DIR, 64, 64);
+    const scene::rasterised r = scene::rasterise(w);
+    const frame_constants k = frame_constants_of(w);
+    const frame ref = per_pixel_frame(r, k, patent);
+    for (evaluator e : {evaluator::horner, evaluator::fd})
+        for (degree_policy d : {degree_policy::cubic, degree_policy::quadratic}) {
+            plan_config c;
+            c.m = 3;
+            c.degree = d;
+            c.eval = e;
+            const plan p = make_plan(r, k, patent, c);
+            const frame f = golden_frame(p, k, patent, c);
+            const std::string what = std::string(evaluator_name(e)) + " " + degree_policy_name(d);
+            EXPECT_EQ(f.covered, ref.covered) << what;
+            std::size_t starts = 0;
+            for (const interval_job& job : p.jobs) {
+                const std::size_t at = r.index(job.x0, job.y);
+                EXPECT_EQ(f.px[at], ref.px[at]) << what << " interval at (" << job.x0 << ", " << job.y << ")";
+                ++starts;
+            }
+            EXPECT_GT(starts, 100u);
+            const hardware_counts h = hardware_ops(p, c);
+            EXPECT_EQ(h.pixels, r.covered_pixels()) << what;
+            EXPECT_EQ(h.intervals, p.jobs.size()) << what;
+            // Interpolation error against per-pixel shading: bounded, and not zero (it interpolates).
+            const error_stats s = compare(to_image(f), to_image(ref));
+            EXPECT_GT(s.max_abs, 0.0) << what;
+            EXPECT_LT(s.nmse, 1e-2) << what;
+            RecordProperty(what + " nmse", std::to_string(s.nmse));
+        }
 }
