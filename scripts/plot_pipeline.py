@@ -1,0 +1,109 @@
+#!/usr/bin/python3
+"""Plot of the shading pipeline's sweep (render_pipeline --sweep; scripts/run.d/70-pipeline.sh runs this).
+
+  plot_pipeline.py SWEEP_CSV
+reads the CSV (one row per configuration: length and degree policy, evaluator, device, the hardware
+image's NMSE against per-pixel shading through the same device and against exact Phong, and the
+counted long operations -- multiplications, divisions, square roots -- per pixel), writes beside it
+  <stem>.png  - left: the interpolation's NMSE (hardware vs per-pixel device) against long operations
+                per pixel; right: the total NMSE (hardware vs Phong). Colour = degree policy, marker =
+                length policy and evaluator, one panel row per device. The Pareto front (no other
+                configuration both cheaper and more accurate) is joined by a line and listed in
+                <stem>_pareto.csv. Our target (NMSE <= 1e-5 with Phong's long ops / 3) and seed 004's
+                claim (NMSE <= 1e-4) are drawn as lines.
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+COLOURS = {"cubic": "tab:blue", "quadratic": "tab:orange", "zones": "tab:green", "adaptive": "tab:purple"}
+MARKERS = {("fixed", "horner"): "o", ("fixed", "fd"): "^", ("adaptive", "horner"): "s", ("adaptive", "fd"): "D"}
+
+
+def label(r):
+    if r["length"] == "fixed":
+        ln = f"m={r['m']}"
+    else:
+        ln = f"adaptive tol {r['length_tol']}"
+    deg = r["degree"] + (f" {r['degree_tol']}" if r["degree"] == "adaptive" else "")
+    return f"{ln}, {deg}, {r['eval']}"
+
+
+def pareto(rows, key):
+    """Rows not dominated in (long_per_px, key): sorted by cost, each strictly more accurate."""
+    front, best = [], float("inf")
+    for r in sorted(rows, key=lambda r: (float(r["long_per_px"]), float(r[key]))):
+        if float(r[key]) < best:
+            front.append(r)
+            best = float(r[key])
+    return front
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: plot_pipeline.py SWEEP_CSV")
+    path = sys.argv[1]
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"plot_pipeline: {path} has no rows")
+    stem = os.path.splitext(path)[0]
+    devices = sorted({r["device"] for r in rows})
+    phong_long = float(rows[0]["phong_long_per_px"])
+    fig, axes = plt.subplots(len(devices), 2, figsize=(15, 4.6 * len(devices)), squeeze=False)
+    fronts = []
+    for row_i, dev in enumerate(devices):
+        sel = [r for r in rows if r["device"] == dev]
+        for col, (key, title) in enumerate((("nmse_interp", "interpolation: hardware vs per-pixel device"),
+                                            ("nmse_phong", "total: hardware vs exact Phong"))):
+            ax = axes[row_i][col]
+            seen = set()
+            for r in sel:
+                lab_deg = r["degree"]
+                lab_len = (r["length"], r["eval"])
+                lab = None
+                if (lab_deg, lab_len) not in seen:
+                    seen.add((lab_deg, lab_len))
+                    lab = f"{lab_deg}, {lab_len[0]} length, {lab_len[1]}"
+                ax.scatter(float(r["long_per_px"]), max(float(r[key]), 1e-12), c=COLOURS.get(r["degree"], "k"),
+                           marker=MARKERS.get(lab_len, "x"), s=28, alpha=0.8, label=lab)
+            front = pareto(sel, key)
+            ax.plot([float(r["long_per_px"]) for r in front], [max(float(r[key]), 1e-12) for r in front], "k-",
+                    lw=1, zorder=0, label="Pareto front")
+            for r in front:
+                fronts.append((dev, key, r))
+            ax.axvline(phong_long, color="0.3", ls=":", lw=1, label=f"Phong {phong_long:.1f} long ops/pixel")
+            ax.axvline(phong_long / 3, color="tab:red", ls=":", lw=1, label="Phong / 3")
+            if key == "nmse_interp":
+                ax.axhline(1e-5, color="tab:red", ls="--", lw=1, label="our target 1e-5")
+            ax.axhline(1e-4, color="tab:brown", ls="--", lw=1, label="seed 004: NMSE <= 1e-4")
+            if key == "nmse_phong":
+                brdf = float(sel[0]["nmse_brdf"])
+                ax.axhline(brdf, color="0.5", ls="-.", lw=1, label=f"device BRDF alone {brdf:.1e}")
+            ax.set_yscale("log")
+            ax.set_xlabel("long operations (mul + div + sqrt) per pixel, counted")
+            ax.set_ylabel("NMSE")
+            ax.set_title(f"{dev}: {title}", fontsize=10)
+            ax.grid(True, which="both", lw=0.3)
+            if col == 1:
+                ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    r0 = rows[0]
+    fig.suptitle(f"Shading pipeline sweep: {r0['scene']} {r0['size']}x{r0['size']}, n = {r0['n']}, "
+                 f"{len(rows)} configurations (golden model)", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(stem + ".png", dpi=100)
+    with open(stem + "_pareto.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["device", "measure", "config", "long_per_px", "nmse", "ratio_long"])
+        for dev, key, r in fronts:
+            w.writerow([dev, key, label(r), r["long_per_px"], r[key], r["ratio_long"]])
+    print(f"plot_pipeline: wrote {stem}.png and {stem}_pareto.csv")
+
+
+if __name__ == "__main__":
+    main()

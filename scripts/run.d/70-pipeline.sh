@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Seed 004's shading system on the head scan at 512x512 (render_pipeline): the default configuration
+# (fixed 16-pixel intervals, cubic, Horner unit, UA 60553 with the patent's constants) and two others,
+# each through the golden model and the SystemC pipeline (which must agree bit for bit), PNGs and
+# report.md/report.json in $SHADING_OUT/pipeline/<case>/; then the small sweep over interval and
+# degree policies, evaluators and two devices on the golden model (parallel processes), its CSV and
+# plot in $SHADING_OUT/pipeline/sweep/. One summary row per render: samples = covered pixels,
+# mismatches = SystemC vs golden, max_error = the interpolation's NMSE (vs per-pixel shading through
+# the same device), cycles_per_pixel = simulated clocks per pixel.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+bin="$SHADING_BIN/render_pipeline"
+out="$SHADING_OUT/pipeline"
+size=512
+mkdir -p "$out"
+# The SystemC pipeline runs beside the golden model when this build has it (it always should; a
+# build without it renders golden-only and says so in the rows).
+sim=--sim
+"$bin" --sim-available || { sim=--no-sim; echo "70-pipeline: no SystemC pipeline in this build: golden model only" >&2; }
+
+summary() {  # case folder -> one row from its report.json
+  /usr/bin/python3 - "$1" "$2" >> "$SHADING_SUMMARY" <<'EOF'
+import json, sys
+case, folder = sys.argv[1], sys.argv[2]
+j = json.load(open(folder + "/report.json"))
+e, ops, sim = j["errors"], j["ops_per_pixel"], j["sim"]
+hw, ph = ops["hardware"]["total"]["long"], ops["phong"]["total"]["long"]
+cpp = sim["clocks_per_pixel"] if sim["ran"] else j["clocks_per_pixel"]["hardware_ops"]
+note = (f"NMSE vs per-pixel device {e['interpolation']['image']['nmse']:.2e} (max {e['interpolation']['image']['max_abs']:.1f} lv), "
+        f"vs Phong {e['total']['image']['nmse']:.2e}, device vs Phong {e['brdf']['image']['nmse']:.2e}; "
+        f"long ops/pixel {hw:.1f} vs Phong {ph:.1f} ({ops['phong_long_over_hardware_long']:.2f}x)")
+note += f"; sim {sim['pixels_per_second']:.0f} px/s" if sim["ran"] else "; golden only"
+print("\t".join(["pipeline_head", case, str(j["plan"]["pixels"]), str(sim["mismatches"]) if sim["ran"] else "-",
+                 f"{e['interpolation']['image']['nmse']:.3e}", f"{cpp:.3f}", note]))
+EOF
+}
+
+render() {  # case, then render_pipeline's options
+  local case=$1
+  shift
+  "$bin" --scene head --size "$size" "$sim" --out "$out/$case" "$@"
+  summary "${case}_${size}" "$out/$case"
+}
+
+render default
+render adaptive --length adaptive --degree adaptive --device minimax
+render zones_fd --degree zones --eval fd --m 3 --device rom_matched
+
+# The small sweep at the same size on the golden model (bit-exact to SystemC by the tests).
+"$bin" --sweep --scene head --size "$size" --grid small --out "$out/sweep"
+/usr/bin/python3 scripts/plot_pipeline.py "$out/sweep/sweep.csv"

@@ -1,0 +1,68 @@
+# The render program (render_pipeline): a scene through seed 004's shading system, golden model and
+# (when the SystemC pipeline is built, sim.cmake) the SystemC pipeline, PNGs and a report; --sweep.
+if(TARGET shading_pipeline)
+  find_package(nlohmann_json 3 QUIET)
+  if(NOT nlohmann_json_FOUND)
+    message(WARNING "render_pipeline needs nlohmann-json (Debian: nlohmann-json3-dev; scripts/setup.sh installs it): not built")
+    return()
+  endif()
+  add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp)
+  target_link_libraries(render_pipeline PRIVATE shading_pipeline CLI11::CLI11 nlohmann_json::nlohmann_json)
+  # The default --data-dir: this source tree (the head scan lives in data/head/).
+  target_compile_definitions(render_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  set_target_properties(render_pipeline PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  if(TARGET shading_pipeline_sim)
+    target_link_libraries(render_pipeline PRIVATE shading_pipeline_sim)
+    target_include_directories(render_pipeline PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+    target_compile_definitions(render_pipeline PRIVATE SHADING_PIPELINE_SIM=1)
+  else()
+    message(STATUS "render_pipeline: no SystemC pipeline (shading_pipeline_sim) yet: --sim unavailable")
+  endif()
+
+  set(rp_out ${CMAKE_BINARY_DIR}/out/pipeline_test)
+  set(rp_tests)
+  # End to end on a small head through both pipelines: exit 0 (the SystemC frame equal to the golden
+  # one bit for bit), then the report must hold the measured pairs, the operation counts and the files.
+  set(rp_sim --sim)
+  if(NOT TARGET shading_pipeline_sim)
+    set(rp_sim --no-sim)
+  endif()
+  add_test(NAME pipeline.render.head48
+           COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 48 $2 --out \"$1\""
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/head48 ${rp_sim})
+  add_test(NAME pipeline.render.head48.report
+           COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"clocks_per_pixel\"' '\"forehead\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
+                   ${rp_out}/head48)
+  set_tests_properties(pipeline.render.head48.report PROPERTIES DEPENDS pipeline.render.head48)
+  list(APPEND rp_tests pipeline.render.head48 pipeline.render.head48.report)
+  # A tiny sweep (one device, the small grid, 2 processes) merges one CSV row per configuration.
+  add_test(NAME pipeline.sweep.tiny
+           COMMAND sh -c "\"$0\" --sweep --scene head --size 32 --device patent --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 33"
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/sweep)
+  list(APPEND rp_tests pipeline.sweep.tiny)
+  # Bad input: a clear message and exit status 1, nothing written. Each case: name, then arguments.
+  set(rp_bad
+      "m0|--m 0"
+      "m7|--m 7"
+      "adaptive_range|--length adaptive --m-min 2 --m-max 9"
+      "unknown_scene|--scene teapot"
+      "too_large|--size 100000"
+      "n0|--n 0"
+      "n1001|--n 1001"
+      "missing_obj|--scene ${CMAKE_BINARY_DIR}/no_such_file.obj"
+      "malformed_obj|--scene ${CMAKE_CURRENT_SOURCE_DIR}/data/malformed.obj"
+      "empty_obj|--scene ${CMAKE_CURRENT_SOURCE_DIR}/data/empty.obj"
+      "unknown_device|--device phong"
+      "bad_light|--light 30"
+      "fd_adaptive|--eval fd --length adaptive")
+  foreach(case IN LISTS rp_bad)
+    string(REPLACE "|" ";" parts "${case}")
+    list(GET parts 0 name)
+    list(GET parts 1 args)
+    add_test(NAME pipeline.render.bad.${name}
+             COMMAND sh -c "rm -rf \"$1\"; \"$0\" --no-sim ${args} --out \"$1\"; rc=$?; test $rc -eq 1 && test ! -e \"$1/report.json\""
+                     $<TARGET_FILE:render_pipeline> ${rp_out}/bad_${name})
+    list(APPEND rp_tests pipeline.render.bad.${name})
+  endforeach()
+  set_tests_properties(${rp_tests} PROPERTIES TIMEOUT 120 ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+endif()
