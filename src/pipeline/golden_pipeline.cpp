@@ -59,6 +59,7 @@ frame_constants frame_constants_of(const scene::world& s) {
 }
 
 sample_geometry sample_of(const scene::pixel_geometry& g) {
+    if (g.l.empty() || g.h.empty()) throw scene::scene_error("sample_of: the pixel's geometry has no light");
     // The same gate as shade.cpp: no diffuse and no highlight unless N.L > 0.
     const double ndl = dot(g.n, g.l[0]).value();
     if (!(ndl > 0.0)) return {};

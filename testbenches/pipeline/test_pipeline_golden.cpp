@@ -114,6 +114,11 @@ TEST(PipelineSample, SampleOf) {
     // N.L > 0, N.H < 0: cos_nh 0; N.L = 0.5 -> 0x4000.
     EXPECT_EQ(sample_of(geometry(vec(0, 0, 1), vec(0, 0.8660254037844386, 0.5), vec(0, 0.6, -0.8))),
               (sample_geometry{0, 0x4000}));
+    // Geometry without a light is a caller's error, not a dark pixel.
+    scene::pixel_geometry none = geometry(vec(0, 0, 1), vec(0, 0, 1), vec(0, 0, 1));
+    none.l.clear();
+    none.h.clear();
+    EXPECT_THROW(sample_of(none), scene::scene_error);
 }
 
 namespace {
