@@ -112,10 +112,12 @@ struct plan_config {
     unsigned m = 4;                        // fixed: N = 2^m
     unsigned m_min = interp::m_min;        // adaptive: range of m tried, longest first
     unsigned m_max = 5;
-    double length_tol = 0.5;               // adaptive length: largest accepted error estimate, 8-bit levels
+    double length_tol = 0.25;              // adaptive length: largest accepted error estimate, 8-bit levels
+    bool exact_fallback = true;            // adaptive length: where even 2^m_min fails, 2^m_min exact pixels
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.25;              // adaptive degree: largest accepted quadratic error estimate
     double depth_step = 0.02;              // world units: a depth jump that ends a segment (raster.h)
+    bool surface_breaks = true;            // also end segments where neighbours' triangles share no vertex (a fold)
     evaluator eval = evaluator::horner;    // fd needs length = fixed (one m per evaluator)
 };
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
@@ -125,9 +127,13 @@ void validate(const plan_config& c);
 // A frame's intervals, line by line, left to right, and what the geometry side spent on them:
 // `geometry` counts geometry_at plus the two dot products at every distinct pixel whose geometry was
 // computed (sample points, and the extra check points the adaptive policies look at); `decision`
-// counts the policies' own arithmetic (the error estimates). Lines are split into segments at every
+// counts the policies' own arithmetic (the error estimates, the fold test's compares). Lines are split into segments at every
 // discontinuity (raster.h: coverage edges, object changes, depth steps), and no interval's samples
-// straddle one; pieces too short for an interval of 2^m_min are exact pixels.
+// straddle one; pieces too short for an interval of 2^m_min are exact pixels. With surface_breaks,
+// segments also end where the visible surface jumps to a part of the mesh not connected to the pixel
+// before (neighbouring pixels' triangles share no vertex: an eyelid or ear fold in front of skin at
+// nearly the same depth). Adaptive length tries m_max down to m_min and takes the first m whose
+// estimate is within length_tol; with exact_fallback, where even m_min fails, its 2^m_min pixels are exact.
 struct plan {
     unsigned width = 0, height = 0;
     std::vector<interval_job> jobs;

@@ -4,6 +4,7 @@
 // distinct pixel that any sample or decision needs, every operation counted.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "pipeline/pipeline.h"
@@ -163,13 +164,21 @@ public:
         const std::size_t first_job = p_.jobs.size();
         // Segment boundaries: every discontinuity (coverage edges bound the spans; object changes and
         // depth steps cut them), so no interval's pixels or samples straddle one.
-        const auto cuts = scene::line_discontinuities(r_, y, c_.depth_step);
+        std::vector<unsigned> cuts;
+        for (const auto& d : scene::line_discontinuities(r_, y, c_.depth_step)) cuts.push_back(d.x);
+        if (c_.surface_breaks) {
+            for (unsigned x = 1; x < r_.width; ++x)
+                if (r_.covered(x - 1, y) && r_.covered(x, y) && surface_break(r_.index(x - 1, y), r_.index(x, y)))
+                    cuts.push_back(x);
+            std::sort(cuts.begin(), cuts.end());
+            cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        }
         for (const scene::span& sp : scene::line_spans(r_, y)) {
             unsigned xa = sp.x_begin;
-            for (const auto& d : cuts)
-                if (d.x > sp.x_begin && d.x < sp.x_end) {
-                    segment(lg, y, xa, d.x - 1);
-                    xa = d.x;
+            for (unsigned x : cuts)
+                if (x > sp.x_begin && x < sp.x_end) {
+                    segment(lg, y, xa, x - 1);
+                    xa = x;
                 }
             segment(lg, y, xa, sp.x_end - 1);
         }
@@ -190,6 +199,26 @@ public:
     }
 
 private:
+    // The visible surface jumps to another part of the mesh between two neighbouring pixels when their
+    // triangles share no vertex (a fold: eyelid, ear, nostril, lips, in front of a surface at nearly
+    // the same depth). Integer compares on the rasteriser's triangle indices, counted as decisions.
+    bool surface_break(std::size_t a, std::size_t b) {
+        const int32_t ta = r_.tri[a], tb = r_.tri[b];
+        if (ta == tb) return false;
+        const scene::triangle_setup& sa = r_.setups[static_cast<std::size_t>(ta)];
+        const scene::triangle_setup& sb = r_.setups[static_cast<std::size_t>(tb)];
+        if (sa.object != sb.object) return true;
+        const scene::mesh& m = r_.src->objects[sa.object].geometry;
+        const auto& va = m.triangles[sa.triangle];
+        const auto& vb = m.triangles[sb.triangle];
+        for (uint32_t i : va)
+            for (uint32_t j : vb) {
+                ++p_.decision.cmp;
+                if (i == j) return false;
+            }
+        return true;
+    }
+
     // Pixels xa..xb (inclusive) with no discontinuity inside.
     void segment(line_geometry& lg, unsigned y, unsigned xa, unsigned xb) {
         const unsigned lowest = c_.length == length_policy::fixed ? interp::m_min : c_.m_min;
@@ -200,51 +229,68 @@ private:
             unsigned top = lowest;
             const unsigned highest = c_.length == length_policy::fixed ? c_.m : c_.m_max;
             while (top < highest && (1u << (top + 1)) <= room) ++top;
-            interval_job job = choose(lg, y, pos, lowest, top);
-            pos += job.len;
-            p_.pixels += job.len;
-            p_.jobs.push_back(job);
+            if (const auto job = choose(lg, y, pos, lowest, top)) {
+                pos += job->len;
+                p_.pixels += job->len;
+                p_.jobs.push_back(*job);
+            } else {
+                // Even the shortest interval misses its check: its pixels are exact.
+                for (unsigned i = 0; i < (1u << lowest); ++i) exact(lg, y, pos++);
+            }
         }
         // The tail: exact pixels (the last one's geometry is the last interval's t = 1 sample).
-        for (unsigned x = pos; x <= xb; ++x) {
-            interval_job job;
-            job.y = y;
-            job.x0 = x;
-            job.len = 1;
-            job.m = 0;
-            const sample_geometry s = lg.sample(x);
-            job.s = {s, s, s, s};
-            job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(x)));
-            ++p_.pixels;
-            p_.jobs.push_back(job);
-        }
+        for (unsigned x = pos; x <= xb; ++x) exact(lg, y, x);
     }
 
-    // The interval at `pos`: the longest m in lowest..top that the length policy accepts.
-    interval_job choose(line_geometry& lg, unsigned y, unsigned pos, unsigned lowest, unsigned top) {
-        for (unsigned m = top;; --m) {
+    void exact(line_geometry& lg, unsigned y, unsigned x) {
+        interval_job job;
+        job.y = y;
+        job.x0 = x;
+        job.len = 1;
+        job.m = 0;
+        const sample_geometry s = lg.sample(x);
+        job.s = {s, s, s, s};
+        job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(x)));
+        ++p_.pixels;
+        p_.jobs.push_back(job);
+    }
+
+    // The interval at `pos`: the longest m in lowest..top that the length policy accepts; none when
+    // the shortest one fails too and c.exact_fallback is set.
+    std::optional<interval_job> choose(line_geometry& lg, unsigned y, unsigned pos, unsigned lowest, unsigned top) {
+        // The zone map's decision depends on the first pixel only: taken once per position.
+        const int zone_deg2 = c_.degree == degree_policy::zones ? int(degree(lg, pos, 0)) : -1;
+        auto make = [&](unsigned m) {
             const unsigned n = 1u << m;
-            auto at = [pos, n](unsigned eighths) { return pos + eighths * n / 8; };
-            const bool deg2 = degree(lg, pos, n);
             interval_job job;
             job.y = y;
             job.x0 = pos;
             job.len = n;
             job.m = m;
-            job.deg2 = deg2;
-            if (deg2) {
-                for (unsigned i = 0; i < 3; ++i) job.s[i] = lg.sample(at(quad_points[i]));
+            job.deg2 = zone_deg2 >= 0 ? zone_deg2 != 0 : degree(lg, pos, n);
+            if (job.deg2) {
+                for (unsigned i = 0; i < 3; ++i) job.s[i] = lg.sample(pos + quad_points[i] * n / 8);
                 job.s[3] = job.s[2];
             } else {
-                for (unsigned i = 0; i < 4; ++i) job.s[i] = lg.sample(at(cubic_[i]));
+                for (unsigned i = 0; i < 4; ++i) job.s[i] = lg.sample(pos + cubic_[i] * n / 8);
             }
             job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(pos)));
-            if (c_.length == length_policy::fixed || m == lowest) return job;
-            // Adaptive length: the interval's polynomial against the exact colour at the check point.
-            const unsigned check = at(length_check(c_.set));
-            const double e = deg2 ? estimate(lg, pos, n, quad_points, w_len_quad_, check)
-                                  : estimate(lg, pos, n, cubic_, w_len_cubic_, check);
-            if (!(cnum(e, &p_.decision) > cnum(length_tol_, &p_.decision))) return job;
+            return job;
+        };
+        // Adaptive length: the interval's polynomial against the exact colour at the check point.
+        auto passes = [&](const interval_job& job) {
+            const unsigned n = 1u << job.m;
+            const unsigned check = pos + length_check(c_.set) * n / 8;
+            const double e = job.deg2 ? estimate(lg, pos, n, quad_points, w_len_quad_, check)
+                                      : estimate(lg, pos, n, cubic_, w_len_cubic_, check);
+            return !(cnum(e, &p_.decision) > cnum(length_tol_, &p_.decision));
+        };
+        if (c_.length == length_policy::fixed) return make(top);
+        for (unsigned m = top;; --m) {
+            interval_job job = make(m);
+            if (m == lowest && !c_.exact_fallback) return job;
+            if (passes(job)) return job;
+            if (m == lowest) return std::nullopt;
         }
     }
 

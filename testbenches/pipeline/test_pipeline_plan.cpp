@@ -50,15 +50,37 @@ std::vector<unsigned> job_points(const interval_job& j, interp::sample_set set) 
 }
 unsigned at(const interval_job& j, unsigned eighths) { return j.x0 + eighths * (1u << j.m) / 8; }
 
-// The pixels of line y where the rasteriser's discontinuities fall (between x - 1 and x).
-std::set<unsigned> cuts(const scene::rasterised& r, unsigned y, double step) {
+bool fold(const scene::rasterised& r, unsigned y, unsigned x);
+
+// The pixels of line y where the rasteriser's discontinuities fall (between x - 1 and x), and with
+// surface breaks the folds too.
+std::set<unsigned> cuts(const scene::rasterised& r, unsigned y, double step, bool folds) {
     std::set<unsigned> s;
     for (const auto& d : scene::line_discontinuities(r, y, step)) s.insert(d.x);
+    if (folds)
+        for (unsigned x = 1; x < r.width; ++x)
+            if (r.covered(x - 1, y) && r.covered(x, y) && fold(r, y, x)) s.insert(x);
     return s;
+}
+std::set<unsigned> cuts(const scene::rasterised& r, unsigned y, const plan_config& c) {
+    return cuts(r, y, c.depth_step, c.surface_breaks);
 }
 
 // The segment end (last pixel) of the segment holding pixel x on line y, from the discontinuities.
 unsigned segment_end(const std::set<unsigned>& c, unsigned x) { return *c.upper_bound(x) - 1; }
+
+// Whether the triangles under two neighbouring pixels share no vertex (a fold of the mesh), from
+// the mesh's vertex indices.
+bool fold(const scene::rasterised& r, unsigned y, unsigned x) {
+    const auto& a = r.setups[static_cast<std::size_t>(r.tri[r.index(x - 1, y)])];
+    const auto& b = r.setups[static_cast<std::size_t>(r.tri[r.index(x, y)])];
+    if (a.object != b.object) return true;
+    const auto& m = r.src->objects[a.object].geometry;
+    std::set<uint32_t> va(m.triangles[a.triangle].begin(), m.triangles[a.triangle].end());
+    for (uint32_t v : m.triangles[b.triangle])
+        if (va.count(v)) return false;
+    return true;
+}
 
 // The checks every plan must pass, whatever its policies.
 void expect_valid_plan(const scene::rasterised& r, const plan& p, const plan_config& c) {
@@ -94,11 +116,14 @@ void expect_valid_plan(const scene::rasterised& r, const plan& p, const plan_con
         pixels += j.len;
         // No discontinuity between the first pixel and the last sample point.
         auto& lc = line_cuts[j.y];
-        if (lc.empty()) lc = cuts(r, j.y, c.depth_step);
+        if (lc.empty()) lc = cuts(r, j.y, c);
         const unsigned last = j.m == 0 ? j.x0 : j.x0 + (1u << j.m);
         const auto next_cut = lc.upper_bound(j.x0);
         ASSERT_NE(next_cut, lc.end());
         EXPECT_GT(*next_cut, last) << "a discontinuity inside the interval's samples";
+        if (c.surface_breaks) {
+            for (unsigned x = j.x0 + 1; x <= last; ++x) EXPECT_FALSE(fold(r, j.y, x)) << "a fold at x " << x;
+        }
         // The samples are the geometry at the documented pixels.
         const auto pts = job_points(j, c.set);
         for (std::size_t s = 0; s < 4; ++s) {
@@ -106,8 +131,9 @@ void expect_valid_plan(const scene::rasterised& r, const plan& p, const plan_con
             EXPECT_EQ(j.s[s], sample_of(scene::geometry_at(r, x, j.y, nullptr))) << "sample " << s << " at x " << x;
         }
         EXPECT_EQ(j.zone, head_zone(r, scene::geometry_at(r, j.x0, j.y, nullptr)));
-        // Exact pixels only in a segment's tail, shorter than the shortest interval plus its t = 1 pixel.
-        if (j.m == 0) {
+        // Exact pixels only in a segment's tail, shorter than the shortest interval plus its t = 1 pixel
+        // (or, with the adaptive length's exact fallback, in runs of 2^m_min: ExactFallback).
+        if (j.m == 0 && !(c.length == length_policy::adaptive && c.exact_fallback)) {
             const unsigned end = segment_end(lc, j.x0);
             for (std::size_t k = i + 1; k < p.jobs.size() && p.jobs[k].y == j.y && p.jobs[k].x0 <= end; ++k)
                 EXPECT_EQ(p.jobs[k].m, 0u) << "an interval after an exact pixel in the same segment";
@@ -167,6 +193,8 @@ double quad_at_quarter(double i0, double i2, double i3) { return (3 * i0 + 6 * i
 
 // The 64x64 sphere is 38 pixels across, 0.06 world units per pixel: the default depth step (0.02, set
 // for the head at 256) fires all over its slopes. 0.5 fires nowhere on it (DepthStepsSplitSegments).
+// Its triangles are about a pixel wide, so neighbouring pixels often lie on triangles that share no
+// vertex: the sphere's tests plan without surface breaks (the head's tests plan with them).
 constexpr double sphere_step = 0.5;
 
 plan_config fixed(unsigned m, double depth_step = sphere_step) {
@@ -174,6 +202,15 @@ plan_config fixed(unsigned m, double depth_step = sphere_step) {
     c.length = length_policy::fixed;
     c.m = m;
     c.depth_step = depth_step;
+    c.surface_breaks = false;
+    return c;
+}
+
+// The head's plans keep the defaults (depth step 0.02, surface breaks).
+plan_config head_fixed(unsigned m) {
+    plan_config c;
+    c.length = length_policy::fixed;
+    c.m = m;
     return c;
 }
 
@@ -183,7 +220,9 @@ plan_config adaptive_length(unsigned m_min, unsigned m_max, double tol) {
     c.m_min = m_min;
     c.m_max = m_max;
     c.length_tol = tol;
+    c.exact_fallback = false;
     c.depth_step = sphere_step;
+    c.surface_breaks = false;
     return c;
 }
 
@@ -261,7 +300,7 @@ TEST(PipelinePlan, FixedLengthTilesEverySegment) {
         // Intervals shorter than 2^m only where the segment's remaining pixels do not hold 2^m + 1.
         for (const auto& j : p.jobs) {
             if (j.m == 0 || j.m == m) continue;
-            const unsigned end = segment_end(cuts(f.r, j.y, c.depth_step), j.x0);
+            const unsigned end = segment_end(cuts(f.r, j.y, c), j.x0);
             EXPECT_LT(end - j.x0, 1u << (j.m + 1)) << "a shorter interval where a longer one fits, line " << j.y;
         }
         if (m == 4) {
@@ -283,7 +322,7 @@ TEST(PipelinePlan, HandWorkedSegment) {
     for (unsigned y = 0; y < f.r.height && !found; ++y) {
         const auto spans = scene::line_spans(f.r, y);
         if (spans.size() != 1 || spans[0].x_end - spans[0].x_begin != 22) continue;
-        if (cuts(f.r, y, c.depth_step).size() != 2) continue;  // coverage begin and end only
+        if (cuts(f.r, y, c).size() != 2) continue;  // coverage begin and end only
         found = true;
         const unsigned xa = spans[0].x_begin;
         std::vector<interval_job> line;
@@ -436,6 +475,74 @@ TEST(PipelinePlan, AdaptiveLengthAcceptsWithinTolerance) {
     EXPECT_GT(by_m[4] + by_m[5] + by_m[6], 0u) << "a mix of lengths at tolerance 1 level";
 }
 
+// With the exact fallback, where even an interval of 2^m_min misses its check, its pixels are exact:
+// at tolerance 0 every group of exact pixels that is not a segment's tail is one whose interval of 4
+// misses the exact colour at t = 3/4 (hand-worked weights), and every interval hits it.
+TEST(PipelinePlan, ExactFallback) {
+    const auto& f = sphere();
+    plan_config c = adaptive_length(2, 5, 0.0);
+    c.exact_fallback = true;
+    const plan p = make_plan(f.r, f.k, patent, c);
+    expect_valid_plan(f.r, p, c);
+    auto cubic_hits = [&f](unsigned y, unsigned x0, unsigned n) {
+        const auto i0 = colour(f, x0, y), i1 = colour(f, x0 + n / 4, y), i2 = colour(f, x0 + n / 2, y),
+                   i3 = colour(f, x0 + n, y), e = colour(f, x0 + 3 * n / 4, y);
+        for (int ch = 0; ch < 3; ++ch)
+            if (cubic_at_three_quarters(double(i0[ch]), double(i1[ch]), double(i2[ch]), double(i3[ch])) != double(e[ch]))
+                return false;
+        return true;
+    };
+    std::size_t groups = 0, intervals = 0;
+    for (std::size_t i = 0; i < p.jobs.size(); ++i) {
+        const interval_job& j = p.jobs[i];
+        if (j.m != 0) {
+            ++intervals;
+            EXPECT_TRUE(cubic_hits(j.y, j.x0, 1u << j.m)) << "line " << j.y << ", x " << j.x0;
+            continue;
+        }
+        const unsigned end = segment_end(cuts(f.r, j.y, c), j.x0);
+        if (end - j.x0 < 4) continue;  // the tail
+        ++groups;
+        EXPECT_FALSE(cubic_hits(j.y, j.x0, 4)) << "line " << j.y << ", x " << j.x0;
+        for (unsigned k = 1; k < 4; ++k) {
+            ASSERT_LT(i + k, p.jobs.size());
+            EXPECT_EQ(p.jobs[i + k].m, 0u);
+            EXPECT_EQ(p.jobs[i + k].x0, j.x0 + k);
+        }
+        i += 3;
+    }
+    EXPECT_GT(groups, 0u);
+    // A huge tolerance never falls back: the same tiling as fixed m = 5.
+    c.length_tol = 1e9;
+    const plan q = make_plan(f.r, f.k, patent, c);
+    const plan r5 = make_plan(f.r, f.k, patent, fixed(5));
+    ASSERT_EQ(q.jobs.size(), r5.jobs.size());
+    for (std::size_t i = 0; i < q.jobs.size(); ++i) EXPECT_EQ(q.jobs[i].m, r5.jobs[i].m);
+}
+
+// Folds: on the head, neighbouring pixels whose triangles share no vertex (eyelids, ears, nostrils)
+// end segments; without surface breaks intervals straddle some of them, and the interpolation's
+// error against per-pixel shading through the same device is larger.
+TEST(PipelinePlan, SurfaceBreaksSplitFolds) {
+    const auto& f = head();
+    plan_config with = head_fixed(3);
+    plan_config without = with;
+    without.surface_breaks = false;
+    const plan a = make_plan(f.r, f.k, patent, with);
+    const plan b = make_plan(f.r, f.k, patent, without);
+    expect_valid_plan(f.r, a, with);
+    expect_valid_plan(f.r, b, without);
+    std::size_t straddling = 0;
+    for (const auto& j : b.jobs)
+        for (unsigned x = j.x0 + 1; j.m && x <= j.x0 + (1u << j.m); ++x) straddling += fold(f.r, j.y, x);
+    EXPECT_GT(straddling, 0u);
+    EXPECT_GT(a.decision.cmp, 0u) << "the vertex comparisons are counted";
+    const auto ref = to_image(per_pixel_frame(f.r, f.k, patent));
+    const double err_with = compare(to_image(golden_frame(a, f.k, patent, with)), ref).nmse;
+    const double err_without = compare(to_image(golden_frame(b, f.k, patent, without)), ref).nmse;
+    EXPECT_LT(err_with, err_without);
+}
+
 // ---- Degree policies ----
 
 TEST(PipelinePlan, AdaptiveDegreeExtremes) {
@@ -582,7 +689,7 @@ TEST(PipelineZones, ZoneMapOfTheHead) {
 
 TEST(PipelinePlan, ZonesPolicyIsTheZoneMap) {
     const auto& f = head();
-    plan_config c = fixed(3, plan_config{}.depth_step);
+    plan_config c = head_fixed(3);
     c.degree = degree_policy::zones;
     const plan p = make_plan(f.r, f.k, patent, c);
     expect_valid_plan(f.r, p, c);
