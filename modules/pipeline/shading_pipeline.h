@@ -1,0 +1,236 @@
+// Seed 004's shading system in hardware: a raster-line shading unit that takes one interval at a
+// time from the geometry side and writes its pixels as an R, G, B stream. A device top: it only
+// instantiates and wires.
+//   job registers  rg_y, rg_x0, rg_len, rg_m, rg_deg2 and the samples' N.H / N.L codes
+//                  rg_nh1..4, rg_nl1..4, latched where ld_job falls (the edge that takes a job)
+//   mx_nh, mx_nl   the sample being formed (smp_sel)
+//   dev            the specular device of UA 60553, Fig. 1, with the generator of `a` AGen
+//                  (a_gen_linear: the patent's constants; a_gen_tuned: minimax / rom_matched;
+//                  a_gen_rom: UA 22802), driven through its Fig. 3 strobes: ctl15, ctl20, ctl22,
+//                  ctl24 once per frame, ctl17 once per sample (out29_valid is its output 29)
+//   rg_kd_r/g/b, rg_amb_r/g/b  the frame's k_d*I and ambient codes (strobe ld_k)
+//   smp_r/g/b      per channel: diffuse multiplier, adders, sample registers I1..I4, interval
+//                  registers, cubic and quadratic coefficient units (sample_channel.h)
+//   horner_r/g/b   per channel: degree-select multiplexers, the Fig. 4 Horner unit and the output
+//     or fd_r/g/b  clamp (horner_channel.h), or our forward differences (fd_channel.h)
+//   ctl_sample     sample controller (falling edges; the geometry side's handshake, sample_ctrl.h)
+//   ctl_pixel      pixel controller (rising edges; horner_pixel_ctrl.h or fd_pixel_ctrl.h)
+// Pixel stream: at a rising edge of clk where px_valid = 1, px_r/g/b (Q8.8 codes) belong at
+// (px_x, px_y); a frame_buffer samples it there.
+#pragma once
+
+#include <string>
+#include <systemc>
+#include <type_traits>
+
+#include "blocks/mux.h"
+#include "blocks/reg.h"
+#include "blocks/wire.h"
+#include "formats/interp_formats.h"
+#include "formats/specular_formats.h"
+#include "interp/interp_delays.h"
+#include "pipeline/fd_channel.h"
+#include "pipeline/fd_pixel_ctrl.h"
+#include "pipeline/horner_channel.h"
+#include "pipeline/horner_pixel_ctrl.h"
+#include "pipeline/sample_channel.h"
+#include "pipeline/sample_ctrl.h"
+#include "specular/block_delays.h"
+#include "specular/specular_device.h"
+
+namespace shading {
+
+enum class pipe_eval { horner, fd };
+
+template <class AGen, pipe_eval EVAL>
+class shading_pipeline : public sc_core::sc_module {
+    static constexpr bool horner = EVAL == pipe_eval::horner;
+    static constexpr unsigned WCOS = spec::cos_fmt.width;
+    static constexpr unsigned WI = interp::sample_fmt.width;
+
+public:
+    using coord_t = sc_dt::sc_uint<16>;
+    using len_t = sc_dt::sc_uint<sample_ctrl::len_bits>;
+    using m_t = sc_dt::sc_uint<sample_ctrl::m_bits>;
+    using bit_t = sc_dt::sc_uint<1>;
+    using n_t = sc_dt::sc_uint<AGen::n_fmt.width>;
+    using cos_t = pipe::cos_t;
+    using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
+    using sample_t = pipe::sample_t;
+    using eval_channel = std::conditional_t<horner, horner_channel, fd_channel>;
+    using pixel_ctrl = std::conditional_t<horner, horner_pixel_ctrl, fd_pixel_ctrl>;
+
+    // Pins from the geometry side.
+    sc_core::sc_in<bool> clk{"clk"};
+    sc_core::sc_in<bool> start{"start"}, load_frame{"load_frame"};
+    sc_core::sc_out<bool> ready{"ready"};
+    sc_core::sc_in<coord_t> in_y{"in_y"}, in_x0{"in_x0"};
+    sc_core::sc_in<len_t> in_len{"in_len"};
+    sc_core::sc_in<m_t> in_m{"in_m"};
+    sc_core::sc_in<bit_t> in_deg2{"in_deg2"};
+    sc_core::sc_in<cos_t> in_nh1{"in_nh1"}, in_nh2{"in_nh2"}, in_nh3{"in_nh3"}, in_nh4{"in_nh4"};
+    sc_core::sc_in<cos_t> in_nl1{"in_nl1"}, in_nl2{"in_nl2"}, in_nl3{"in_nl3"}, in_nl4{"in_nl4"};
+    // Frame constants.
+    sc_core::sc_in<n_t> in_n{"in_n"};
+    sc_core::sc_in<ksi_t> in_ksi_r{"in_ksi_r"}, in_ksi_g{"in_ksi_g"}, in_ksi_b{"in_ksi_b"};
+    sc_core::sc_in<pipe::kdi_t> in_kdi_r{"in_kdi_r"}, in_kdi_g{"in_kdi_g"}, in_kdi_b{"in_kdi_b"};
+    sc_core::sc_in<sample_t> in_amb_r{"in_amb_r"}, in_amb_g{"in_amb_g"}, in_amb_b{"in_amb_b"};
+    // Pixel stream.
+    sc_core::sc_out<bool> px_valid{"px_valid"};
+    sc_core::sc_out<coord_t> px_x{"px_x"}, px_y{"px_y"};
+    sc_core::sc_out<sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
+
+    // Nets.
+    sc_core::sc_signal<bool> ld_job{"ld_job"}, ld_k{"ld_k"}, samples_ready{"samples_ready"}, ld_e{"ld_e"};
+    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
+    sc_core::sc_signal<bool> out29_valid{"out29_valid"};
+    sc_core::sc_signal<bool> ld_i1{"ld_i1"}, ld_i2{"ld_i2"}, ld_i3{"ld_i3"}, ld_i4{"ld_i4"};
+    sc_core::sc_signal<coord_t> y{"y"}, x0{"x0"};
+    sc_core::sc_signal<len_t> len{"len"};
+    sc_core::sc_signal<m_t> m{"m"};
+    sc_core::sc_signal<bit_t> deg2_job{"deg2_job"};
+    sc_core::sc_signal<cos_t> nh1{"nh1"}, nh2{"nh2"}, nh3{"nh3"}, nh4{"nh4"}, nl1{"nl1"}, nl2{"nl2"}, nl3{"nl3"},
+        nl4{"nl4"};
+    sc_core::sc_signal<sample_ctrl::sel_t> smp_sel{"smp_sel"};
+    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"}, cos_nl{"cos_nl"};
+    sc_core::sc_signal<sc_dt::sc_uint<spec::out_fmt.width>> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
+    sc_core::sc_signal<pipe::kdi_t> kdi_r{"kdi_r"}, kdi_g{"kdi_g"}, kdi_b{"kdi_b"};
+    sc_core::sc_signal<sample_t> amb_r{"amb_r"}, amb_g{"amb_g"}, amb_b{"amb_b"};
+    template <class T>
+    using rgb_nets = sc_core::sc_vector<sc_core::sc_signal<T>>;
+    rgb_nets<pipe::coef_t> ca{"ca", 3, rgb_net<pipe::coef_t>}, cb{"cb", 3, rgb_net<pipe::coef_t>},
+        cc{"cc", 3, rgb_net<pipe::coef_t>}, cd{"cd", 3, rgb_net<pipe::coef_t>}, qa{"qa", 3, rgb_net<pipe::coef_t>},
+        qb{"qb", 3, rgb_net<pipe::coef_t>}, qc{"qc", 3, rgb_net<pipe::coef_t>};
+    sc_core::sc_signal<bool> ev_start{"ev_start"}, deg2{"deg2"};
+    sc_core::sc_signal<sc_dt::sc_uint<1>> deg_sel{"deg_sel"};
+    sc_core::sc_signal<horner_channel::t_t> t{"t"};
+    sc_core::sc_signal<fd_channel::len_t> ev_len{"ev_len"};
+    // Horner: done, busy; forward differences: valid, last.
+    rgb_nets<bool> ev_done{"ev_done", 3, rgb_net<bool>}, ev_busy{"ev_busy", 3, rgb_net<bool>};
+
+    // Blocks.
+    reg<16> rg_y, rg_x0, rg_len;
+    reg<sample_ctrl::m_bits> rg_m;
+    reg<1> rg_deg2;
+    reg<WCOS> rg_nh1, rg_nh2, rg_nh3, rg_nh4, rg_nl1, rg_nl2, rg_nl3, rg_nl4;
+    mux<WCOS, 4> mx_nh, mx_nl;
+    specular_device<AGen> dev;
+    reg<pipe::kdi_fmt.width> rg_kd_r, rg_kd_g, rg_kd_b;
+    reg<WI> rg_amb_r, rg_amb_g, rg_amb_b;
+    sample_channel smp_r, smp_g, smp_b;
+    eval_channel ev_r, ev_g, ev_b;
+    wire<bool> out_valid{"out_valid"};
+    sample_ctrl ctl_sample;
+    pixel_ctrl ctl_pixel;
+
+    // fd_m: the interval length 2^fd_m the forward-difference evaluator is built for (ignored for Horner).
+    shading_pipeline(const sc_core::sc_module_name& name, overflow_mode mode, const typename AGen::config& gen,
+                     interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4, const block_delays& bd = {},
+                     const interp_delays& dl = {})
+        : sc_module(name), rg_y("rg_y", dl.reg), rg_x0("rg_x0", dl.reg), rg_len("rg_len", dl.reg),
+          rg_m("rg_m", dl.reg), rg_deg2("rg_deg2", dl.reg), rg_nh1("rg_nh1", dl.reg), rg_nh2("rg_nh2", dl.reg),
+          rg_nh3("rg_nh3", dl.reg), rg_nh4("rg_nh4", dl.reg), rg_nl1("rg_nl1", dl.reg), rg_nl2("rg_nl2", dl.reg),
+          rg_nl3("rg_nl3", dl.reg), rg_nl4("rg_nl4", dl.reg), mx_nh("mx_nh", dl.mux), mx_nl("mx_nl", dl.mux),
+          dev("dev", mode, gen, bd), rg_kd_r("rg_kd_r", dl.reg), rg_kd_g("rg_kd_g", dl.reg), rg_kd_b("rg_kd_b", dl.reg),
+          rg_amb_r("rg_amb_r", dl.reg), rg_amb_g("rg_amb_g", dl.reg), rg_amb_b("rg_amb_b", dl.reg),
+          smp_r("smp_r", set, div, dl), smp_g("smp_g", set, div, dl), smp_b("smp_b", set, div, dl),
+          ev_r(horner ? "horner_r" : "fd_r", fd_m, dl), ev_g(horner ? "horner_g" : "fd_g", fd_m, dl),
+          ev_b(horner ? "horner_b" : "fd_b", fd_m, dl),
+          ctl_sample("ctl_sample", horner ? 0 : fd_m), ctl_pixel("ctl_pixel") {
+        // Job registers: latched where ld_job falls.
+        rg_y.ctl(ld_job); rg_y.d(in_y); rg_y.q(y);
+        rg_x0.ctl(ld_job); rg_x0.d(in_x0); rg_x0.q(x0);
+        rg_len.ctl(ld_job); rg_len.d(in_len); rg_len.q(len);
+        rg_m.ctl(ld_job); rg_m.d(in_m); rg_m.q(m);
+        rg_deg2.ctl(ld_job); rg_deg2.d(in_deg2); rg_deg2.q(deg2_job);
+        reg<WCOS>* rnh[] = {&rg_nh1, &rg_nh2, &rg_nh3, &rg_nh4};
+        reg<WCOS>* rnl[] = {&rg_nl1, &rg_nl2, &rg_nl3, &rg_nl4};
+        sc_core::sc_in<cos_t>* pnh[] = {&in_nh1, &in_nh2, &in_nh3, &in_nh4};
+        sc_core::sc_in<cos_t>* pnl[] = {&in_nl1, &in_nl2, &in_nl3, &in_nl4};
+        sc_core::sc_signal<cos_t>* snh[] = {&nh1, &nh2, &nh3, &nh4};
+        sc_core::sc_signal<cos_t>* snl[] = {&nl1, &nl2, &nl3, &nl4};
+        for (int k = 0; k < 4; ++k) {
+            rnh[k]->ctl(ld_job); rnh[k]->d(*pnh[k]); rnh[k]->q(*snh[k]);
+            rnl[k]->ctl(ld_job); rnl[k]->d(*pnl[k]); rnl[k]->q(*snl[k]);
+            mx_nh.in[k](*snh[k]);
+            mx_nl.in[k](*snl[k]);
+        }
+        mx_nh.sel(smp_sel); mx_nh.y(in18_cos);
+        mx_nl.sel(smp_sel); mx_nl.y(cos_nl);
+
+        // The specular device: frame constants straight from the pins through its own registers.
+        dev.ctl15(ctl15); dev.ctl17(ctl17); dev.ctl20(ctl20); dev.ctl22(ctl22); dev.ctl24(ctl24);
+        dev.in16_n(in_n); dev.in18_cos(in18_cos);
+        dev.in19_ksi_r(in_ksi_r); dev.in21_ksi_g(in_ksi_g); dev.in23_ksi_b(in_ksi_b);
+        dev.out25_r(out25_r); dev.out26_g(out26_g); dev.out27_b(out27_b); dev.out29_valid(out29_valid);
+        rg_kd_r.ctl(ld_k); rg_kd_r.d(in_kdi_r); rg_kd_r.q(kdi_r);
+        rg_kd_g.ctl(ld_k); rg_kd_g.d(in_kdi_g); rg_kd_g.q(kdi_g);
+        rg_kd_b.ctl(ld_k); rg_kd_b.d(in_kdi_b); rg_kd_b.q(kdi_b);
+        rg_amb_r.ctl(ld_k); rg_amb_r.d(in_amb_r); rg_amb_r.q(amb_r);
+        rg_amb_g.ctl(ld_k); rg_amb_g.d(in_amb_g); rg_amb_g.q(amb_g);
+        rg_amb_b.ctl(ld_k); rg_amb_b.d(in_amb_b); rg_amb_b.q(amb_b);
+
+        sample_channel* smp[] = {&smp_r, &smp_g, &smp_b};
+        eval_channel* ev[] = {&ev_r, &ev_g, &ev_b};
+        sc_core::sc_signal<pipe::kdi_t>* kd[] = {&kdi_r, &kdi_g, &kdi_b};
+        sc_core::sc_signal<sample_t>* amb[] = {&amb_r, &amb_g, &amb_b};
+        sc_core::sc_signal<sc_dt::sc_uint<spec::out_fmt.width>>* spec[] = {&out25_r, &out26_g, &out27_b};
+        sc_core::sc_out<sample_t>* px[] = {&px_r, &px_g, &px_b};
+        for (int ch = 0; ch < 3; ++ch) {
+            sample_channel& s = *smp[ch];
+            s.clk(clk);
+            s.ld_i1(ld_i1); s.ld_i2(ld_i2); s.ld_i3(ld_i3); s.ld_i4(ld_i4); s.ld_e(ld_e);
+            s.kdi(*kd[ch]); s.ambient(*amb[ch]); s.cos_nl(cos_nl); s.specular(*spec[ch]);
+            s.ca(ca[ch]); s.cb(cb[ch]); s.cc(cc[ch]); s.cd(cd[ch]); s.qa(qa[ch]); s.qb(qb[ch]); s.qc(qc[ch]);
+            eval_channel& e = *ev[ch];
+            e.clk(clk); e.start(ev_start); e.deg_sel(deg_sel);
+            e.ca(ca[ch]); e.cb(cb[ch]); e.cc(cc[ch]); e.cd(cd[ch]); e.qa(qa[ch]); e.qb(qb[ch]); e.qc(qc[ch]);
+            e.px(*px[ch]);
+            if constexpr (horner) {
+                e.deg2(deg2); e.t(t);
+                e.done(ev_done[ch]); e.busy(ev_busy[ch]);
+            } else {
+                e.len(ev_len);
+                e.valid(ev_done[ch]); e.last(ev_busy[ch]);
+            }
+        }
+        out_valid.x(ev_done[0]); out_valid.y(px_valid);
+
+        ctl_sample.clk(clk); ctl_sample.start(start); ctl_sample.load_frame(load_frame);
+        ctl_sample.len(len); ctl_sample.m(m); ctl_sample.deg2(deg2_job); ctl_sample.ld_e(ld_e);
+        ctl_sample.ready(ready); ctl_sample.ld_job(ld_job);
+        ctl_sample.ctl15(ctl15); ctl_sample.ctl17(ctl17); ctl_sample.ctl20(ctl20); ctl_sample.ctl22(ctl22);
+        ctl_sample.ctl24(ctl24); ctl_sample.ld_k(ld_k);
+        ctl_sample.smp_sel(smp_sel);
+        ctl_sample.ld_i1(ld_i1); ctl_sample.ld_i2(ld_i2); ctl_sample.ld_i3(ld_i3); ctl_sample.ld_i4(ld_i4);
+        ctl_sample.samples_ready(samples_ready);
+
+        ctl_pixel.clk(clk); ctl_pixel.samples_ready(samples_ready);
+        ctl_pixel.y(y); ctl_pixel.x0(x0); ctl_pixel.deg2_in(deg2_job);
+        ctl_pixel.ld_e(ld_e); ctl_pixel.start(ev_start); ctl_pixel.deg_sel(deg_sel);
+        ctl_pixel.px_x(px_x); ctl_pixel.px_y(px_y);
+        if constexpr (horner) {
+            ctl_pixel.len(len); ctl_pixel.m(m);
+            ctl_pixel.busy(ev_busy[0]); ctl_pixel.done(ev_done[0]);
+            ctl_pixel.deg2(deg2); ctl_pixel.t(t);
+        } else {
+            ctl_pixel.len_in(len);
+            ctl_pixel.valid(ev_done[0]); ctl_pixel.last(ev_busy[0]);
+            ctl_pixel.len(ev_len);
+        }
+    }
+
+    // Nothing taken and not yet written out.
+    bool idle() const { return ctl_sample.idle() && ctl_pixel.idle(); }
+
+private:
+    // Per-channel nets named <base>_r, _g, _b.
+    template <class T>
+    static sc_core::sc_signal<T>* rgb_net(const char* generated, std::size_t i) {
+        std::string n(generated);
+        n = n.substr(0, n.rfind('_') + 1) + "rgb"[i];
+        return new sc_core::sc_signal<T>(n.c_str());
+    }
+};
+
+}  // namespace shading

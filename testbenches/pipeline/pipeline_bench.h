@@ -1,0 +1,262 @@
+// Testbench of the SystemC shading pipeline, in three parts around the device under test:
+//   geometry_source - the geometry side: loads the frame constants, then presents every job of a
+//                     plan on the pins through the start/ready handshake (sample_ctrl.h);
+//   monitor         - the frame buffer's write port: every pixel stored at a valid edge;
+//   checker         - golden_interval per job (pipeline.h): every written pixel against its job's
+//                     golden codes; missing and unexpected pixels count as mismatches too.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <systemc>
+#include <vector>
+
+#include "core/report_ids.h"
+#include "pipeline/frame_buffer.h"
+#include "pipeline/pipeline.h"
+#include "pipeline/shading_pipeline.h"
+
+namespace shading::pipeline {
+
+inline sc_core::sc_time pipeline_period() { return sc_core::sc_time(20, sc_core::SC_NS); }
+
+// Which jobs the hardware takes (sample_ctrl.h's rule, written here independently): m 0 or
+// m_min..m_max, len 1..2^m, an exact pixel cubic, and with forward differences built for fd_m only
+// that m (or an exact pixel).
+inline bool job_ok(const interval_job& j, unsigned fd_m) {
+    const bool exact = j.m == 0;
+    if (!exact && (j.m < interp::m_min || j.m > interp::m_max)) return false;
+    if (j.len < 1 || j.len > (1u << j.m) || (exact && j.deg2)) return false;
+    return fd_m == 0 || exact || j.m == fd_m;
+}
+
+// Expected pixels and the verdict (the checker).
+class pipeline_checker {
+public:
+    pipeline_checker(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
+                     unsigned fd_m)
+        : w_(p.width), h_(p.height), expected_(std::size_t(p.width) * p.height), wanted_(expected_.size(), 0) {
+        for (const auto& j : p.jobs) {
+            if (!job_ok(j, fd_m)) {
+                ++dropped_;
+                continue;
+            }
+            const auto px = golden_interval(j, k, dev, c.eval, c.set, c.div);
+            for (unsigned i = 0; i < j.len; ++i) {
+                const unsigned x = j.x0 + i;
+                if (x >= w_ || j.y >= h_) continue;  // the frame buffer drops it (reported)
+                const std::size_t at = std::size_t(j.y) * w_ + x;
+                expected_[at] = px[i];
+                ++wanted_[at];
+                ++pixels_;
+            }
+        }
+    }
+
+    void check(unsigned x, unsigned y, const frame_buffer::rgb& got) {
+        const std::size_t at = std::size_t(y) * w_ + x;
+        order_.push_back(at);
+        const rgb_codes g{got[0], got[1], got[2]};
+        if (wanted_[at] == 0) {
+            mismatch(x, y, g, "no job covers this pixel (or it was written already)");
+            return;
+        }
+        --wanted_[at];
+        if (g != expected_[at]) mismatch(x, y, g, "differs from golden_interval");
+    }
+
+    // After the run: pixels never written.
+    void finish() {
+        for (std::size_t i = 0; i < wanted_.size(); ++i)
+            if (wanted_[i] != 0) {
+                mismatches_ += wanted_[i];
+                if (reported_++ < 10) {
+                    std::ostringstream os;
+                    os << "pixel (" << i % w_ << ", " << i / w_ << ") was never written";
+                    SC_REPORT_WARNING(msg::mismatch, os.str().c_str());
+                }
+            }
+    }
+
+    std::size_t pixels() const { return pixels_; }
+    std::size_t written() const { return order_.size(); }
+    std::size_t mismatches() const { return mismatches_; }
+    std::size_t dropped() const { return dropped_; }
+    const std::vector<std::size_t>& order() const { return order_; }
+
+private:
+    void mismatch(unsigned x, unsigned y, const rgb_codes& got, const char* why) {
+        ++mismatches_;
+        if (reported_++ >= 10) return;
+        const std::size_t at = std::size_t(y) * w_ + x;
+        std::ostringstream os;
+        os << "pixel (" << x << ", " << y << ") at " << sc_core::sc_time_stamp() << ": " << why << ": sim " << std::hex
+           << got[0] << " " << got[1] << " " << got[2] << ", golden " << expected_[at][0] << " " << expected_[at][1]
+           << " " << expected_[at][2] << " [Q8.8 codes]";
+        SC_REPORT_WARNING(msg::mismatch, os.str().c_str());
+    }
+
+    unsigned w_, h_;
+    std::vector<rgb_codes> expected_;
+    std::vector<uint8_t> wanted_;
+    std::vector<std::size_t> order_;
+    std::size_t pixels_ = 0, mismatches_ = 0, dropped_ = 0, reported_ = 0;
+};
+
+// The geometry side: drives the pins at rising edges of clk (sample_ctrl.h's handshake: a request
+// present at a rising edge where ready = 1 is taken at the falling edge after it, so the pins are
+// held until the next rising edge).
+class geometry_source : public sc_core::sc_module {
+public:
+    using coord_t = sc_dt::sc_uint<16>;
+    using cos_t = pipe::cos_t;
+
+    sc_core::sc_in<bool> clk{"clk"}, ready{"ready"};
+    sc_core::sc_out<bool> start{"start"}, load_frame{"load_frame"};
+    sc_core::sc_out<coord_t> y{"y"}, x0{"x0"};
+    sc_core::sc_out<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
+    sc_core::sc_out<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
+    sc_core::sc_out<sc_dt::sc_uint<1>> deg2{"deg2"};
+    sc_core::sc_vector<sc_core::sc_out<cos_t>> nh{"nh", 4}, nl{"nl", 4};
+    sc_core::sc_out<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
+    sc_core::sc_vector<sc_core::sc_out<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3}, kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_out<pipe::sample_t>> amb{"amb", 3};
+
+    SC_HAS_PROCESS(geometry_source);
+    geometry_source(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
+                    std::function<bool()> drained)
+        : sc_module(name), p_(p), k_(k), drained_(std::move(drained)) {
+        SC_THREAD(run);
+        sensitive << clk.pos();
+    }
+
+    bool finished() const { return finished_; }
+    uint64_t frame_loaded_at_edge() const { return frame_edge_; }
+
+private:
+    void take() {  // hold the request until a rising edge with ready = 1, then one more edge
+        while (!ready.read()) wait();
+        wait();
+    }
+
+    void run() {
+        wait();
+        n.write(k_.n);
+        for (int c = 0; c < 3; ++c) {
+            ksi[c].write(k_.ksi[c]);
+            kdi[c].write(k_.kdi[c]);
+            amb[c].write(k_.ambient[c]);
+        }
+        load_frame.write(true);
+        take();
+        load_frame.write(false);
+        frame_edge_ = static_cast<uint64_t>(sc_core::sc_time_stamp() / pipeline_period());
+        for (const auto& j : p_.jobs) {
+            y.write(j.y);
+            x0.write(j.x0);
+            len.write(j.len);
+            m.write(j.m);
+            deg2.write(j.deg2 ? 1 : 0);
+            for (int i = 0; i < 4; ++i) {
+                nh[i].write(j.s[i].cos_nh);
+                nl[i].write(j.s[i].cos_nl);
+            }
+            start.write(true);
+            take();
+        }
+        start.write(false);
+        do wait();
+        while (!drained_());
+        wait();
+        wait();
+        finished_ = true;
+        sc_core::sc_stop();
+    }
+
+    const plan& p_;
+    frame_constants k_;
+    std::function<bool()> drained_;
+    bool finished_ = false;
+    uint64_t frame_edge_ = 0;
+};
+
+// The bench: clock, pins, the pipeline, the frame buffer, the geometry source and the checker.
+template <class AGen, pipe_eval EVAL>
+class pipeline_bench : public sc_core::sc_module {
+public:
+    using dut_t = shading_pipeline<AGen, EVAL>;
+    using coord_t = sc_dt::sc_uint<16>;
+
+    sc_core::sc_clock clk{"clk", pipeline_period()};
+    sc_core::sc_signal<bool> start{"start"}, load_frame{"load_frame"}, ready{"ready"};
+    sc_core::sc_signal<coord_t> y{"y"}, x0{"x0"};
+    sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
+    sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
+    sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
+    sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
+    sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
+    sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3}, kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
+    sc_core::sc_signal<bool> px_valid{"px_valid"};
+    sc_core::sc_signal<coord_t> px_x{"px_x"}, px_y{"px_y"};
+    sc_core::sc_signal<pipe::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
+
+    dut_t dut;
+    frame_buffer fb;
+    geometry_source src;
+    pipeline_checker checker;
+
+    pipeline_bench(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
+                   const scene::device_config& dev, const plan_config& c, const typename AGen::config& gen,
+                   std::function<void(std::size_t, std::size_t)> progress)
+        : sc_module(name), dut("dut", dev.mode, gen, c.set, c.div, c.m), fb("fb", p.width, p.height),
+          src("src", p, k, [this] { return dut.idle(); }),
+          checker(p, k, dev, c, EVAL == pipe_eval::fd ? c.m : 0), progress_(std::move(progress)) {
+        dut.clk(clk); dut.start(start); dut.load_frame(load_frame); dut.ready(ready);
+        dut.in_y(y); dut.in_x0(x0); dut.in_len(len); dut.in_m(m); dut.in_deg2(deg2);
+        sc_core::sc_in<pipe::cos_t>* pnh[] = {&dut.in_nh1, &dut.in_nh2, &dut.in_nh3, &dut.in_nh4};
+        sc_core::sc_in<pipe::cos_t>* pnl[] = {&dut.in_nl1, &dut.in_nl2, &dut.in_nl3, &dut.in_nl4};
+        for (int i = 0; i < 4; ++i) {
+            (*pnh[i])(nh[i]);
+            (*pnl[i])(nl[i]);
+        }
+        dut.in_n(n);
+        dut.in_ksi_r(ksi[0]); dut.in_ksi_g(ksi[1]); dut.in_ksi_b(ksi[2]);
+        dut.in_kdi_r(kdi[0]); dut.in_kdi_g(kdi[1]); dut.in_kdi_b(kdi[2]);
+        dut.in_amb_r(amb[0]); dut.in_amb_g(amb[1]); dut.in_amb_b(amb[2]);
+        dut.px_valid(px_valid); dut.px_x(px_x); dut.px_y(px_y);
+        dut.px_r(px_r); dut.px_g(px_g); dut.px_b(px_b);
+
+        fb.clk(clk); fb.valid(px_valid); fb.x(px_x); fb.y(px_y); fb.r(px_r); fb.g(px_g); fb.b(px_b);
+        fb.on_write([this](unsigned px, unsigned py, const frame_buffer::rgb& v) {
+            checker.check(px, py, v);
+            last_write_ = sc_core::sc_time_stamp();
+            const std::size_t done = checker.written();
+            if (progress_ && (done % 4096 == 0 || done == checker.pixels())) progress_(done, checker.pixels());
+        });
+
+        src.clk(clk); src.ready(ready); src.start(start); src.load_frame(load_frame);
+        src.y(y); src.x0(x0); src.len(len); src.m(m); src.deg2(deg2);
+        for (int i = 0; i < 4; ++i) {
+            src.nh[i](nh[i]);
+            src.nl[i](nl[i]);
+        }
+        src.n(n);
+        for (int c = 0; c < 3; ++c) {
+            src.ksi[c](ksi[c]);
+            src.kdi[c](kdi[c]);
+            src.amb[c](amb[c]);
+        }
+    }
+
+    bool finished() const { return src.finished(); }
+    const sc_core::sc_time& last_write() const { return last_write_; }
+
+private:
+    std::function<void(std::size_t, std::size_t)> progress_;
+    sc_core::sc_time last_write_;
+};
+
+}  // namespace shading::pipeline

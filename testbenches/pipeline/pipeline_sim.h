@@ -1,0 +1,43 @@
+// The SystemC shading pipeline (modules/pipeline/shading_pipeline.h) run over a planned frame, for
+// the render program and the tests. One elaboration per process: simulate_frame() may be called
+// once (SystemC cannot elaborate twice); a second call reports shading/config and returns an empty
+// frame with every pixel counted as a mismatch.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pipeline/pipeline.h"
+
+namespace shading::pipeline {
+
+struct sim_options {
+    std::string vcd_path;  // empty: no trace; else a VCD there (".vcd" appended unless given)
+    std::function<void(std::size_t done, std::size_t total)> progress;  // pixels written / expected
+};
+
+struct sim_result {
+    frame f;                     // the frame buffer's content (covered = written)
+    uint64_t clocks = 0;         // clock cycles from the first rising edge to the last pixel's write
+    double seconds = 0.0;        // wall time of the simulation (elaboration excluded)
+    std::size_t mismatches = 0;  // pixels that differ from golden_interval, or missing, or unexpected
+    // For the tests.
+    std::vector<std::size_t> write_order;  // frame index of every frame-buffer write, in order
+    std::size_t jobs_dropped = 0;          // jobs the hardware refused (bad input, reported)
+    uint64_t frame_load_clocks = 0;        // clocks until the frame constants were latched
+    double period_ns = 0.0;                // the clock period
+};
+
+// Elaborates the pipeline for dev.device (patent, minimax, rom_matched, ua22802) and c.eval (the
+// forward differences built for c.m), c.set and c.div, runs every job of p, returns the frame
+// buffer's content, the clocks taken, wall time, and the mismatches against golden_interval.
+sim_result simulate_frame(const plan& p, const frame_constants& k, const scene::device_config& dev,
+                          const plan_config& c, const sim_options& o = {});
+
+// The clock period of the simulated pipeline.
+double sim_period_ns();
+
+}  // namespace shading::pipeline

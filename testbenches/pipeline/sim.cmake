@@ -1,0 +1,10 @@
+# The SystemC shading pipeline (modules/pipeline/): simulate_frame() for the render program and the
+# tests (pipeline_sim.h), and its GoogleTest suite (one elaboration per test process).
+if(TARGET shading_pipeline)
+  add_library(shading_pipeline_sim STATIC ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim.cpp)
+  target_include_directories(shading_pipeline_sim PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+  target_link_libraries(shading_pipeline_sim PUBLIC shading_pipeline shading_modules shading_ua22802 shading_tb_common)
+endif()
+if(TARGET shading_pipeline_sim)
+  shading_add_gtest(test_pipeline_sim SOURCES test_pipeline_sim.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
+endif()

@@ -1,0 +1,319 @@
+// The SystemC shading pipeline (modules/pipeline/) against the golden model (src/pipeline): hand-made
+// intervals (an exact pixel, cubic case 1 and 2, quadratic, every length 4..32, saturating samples),
+// then small renders planned by make_plan for every device and both evaluators; the pixel stream's
+// count and order, the clocks per pixel against the design (hardware_ops), and bad input. Every test
+// elaborates once (its own process, gtest_discover_tests); SHADING_TRACE=<dir> writes its VCD there
+// as <Suite.Test>.vcd.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "common/report_log.h"
+#include "common/sim_guard.h"
+#include "core/report_ids.h"
+#include "pipeline_sim.h"
+
+using namespace shading;
+using namespace shading::pipeline;
+
+namespace {
+
+// Frame constants chosen by hand: distinct per channel, a visible highlight (n = 32).
+frame_constants hand_constants() {
+    frame_constants k;
+    k.n = 32;
+    k.ksi = {200, 180, 90};
+    k.kdi = {150, 100, 60};
+    k.ambient = {10 * 256, 8 * 256 + 77, 12 * 256 + 3};
+    return k;
+}
+
+sim_options traced() {
+    sim_options o;
+    if (const char* dir = std::getenv("SHADING_TRACE"); dir != nullptr && *dir != '\0')
+        o.vcd_path = std::string(dir) + "/" + tb::current_test_name();
+    return o;
+}
+
+// A job whose samples follow a smooth highlight across the interval (N.H peaking in the middle).
+interval_job job(unsigned y, unsigned x0, unsigned m, unsigned len, bool deg2, uint32_t base = 0) {
+    interval_job j;
+    j.y = y;
+    j.x0 = x0;
+    j.m = m;
+    j.len = len;
+    j.deg2 = deg2;
+    const uint32_t nh[4] = {30000, 32600, 32200, 29000}, nl[4] = {20000, 22000, 24000, 26000};
+    for (int i = 0; i < 4; ++i) j.s[i] = {nh[i] - base, nl[i] - base};
+    if (m == 0) j.s[1] = j.s[2] = j.s[3] = j.s[0];
+    if (deg2) j.s[3] = j.s[2];
+    return j;
+}
+
+plan make_hand_plan(unsigned w, unsigned h, std::vector<interval_job> jobs) {
+    plan p;
+    p.width = w;
+    p.height = h;
+    p.jobs = std::move(jobs);
+    for (const auto& j : p.jobs) p.pixels += j.len;
+    return p;
+}
+
+plan_config config(evaluator e, unsigned m = 4, interp::sample_set set = interp::sample_set::case1) {
+    plan_config c;
+    c.eval = e;
+    c.m = m;
+    c.set = set;
+    return c;
+}
+
+// Every written pixel in the order the jobs list them.
+std::vector<std::size_t> job_order(const plan& p) {
+    std::vector<std::size_t> o;
+    for (const auto& j : p.jobs)
+        for (unsigned i = 0; i < j.len; ++i) o.push_back(std::size_t(j.y) * p.width + j.x0 + i);
+    return o;
+}
+
+// The frame's pixels against golden_frame, bit for bit (independent of the bench's own checker).
+void expect_golden_frame(const sim_result& r, const plan& p, const frame_constants& k, const scene::device_config& dev,
+                         const plan_config& c) {
+    const frame g = golden_frame(p, k, dev, c);
+    ASSERT_EQ(r.f.px.size(), g.px.size());
+    std::size_t diff = 0;
+    for (std::size_t i = 0; i < g.px.size(); ++i)
+        if (r.f.px[i] != g.px[i] || r.f.covered[i] != g.covered[i]) ++diff;
+    EXPECT_EQ(diff, 0u) << "pixels differing from golden_frame";
+}
+
+const scene::device_config patent{};
+
+}  // namespace
+
+// ---- Hand-made intervals ----
+
+// An exact pixel is its sample: the codes golden_sample gives (Q8.8 through the output clamp
+// unchanged), written once.
+TEST(PipelineSimHand, ExactPixelIsItsSampleHorner) {
+    const auto k = hand_constants();
+    const plan p = make_hand_plan(8, 2, {job(1, 5, 0, 1, false)});
+    const sim_result r = simulate_frame(p, k, patent, config(evaluator::horner), traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    ASSERT_EQ(r.write_order.size(), 1u);
+    EXPECT_EQ(r.write_order[0], 1u * 8 + 5);
+    EXPECT_EQ(r.f.px[13], golden_sample(patent, k, p.jobs[0].s[0]));
+    EXPECT_EQ(r.f.degree[13], 1);
+}
+
+TEST(PipelineSimHand, ExactPixelIsItsSampleFd) {
+    const auto k = hand_constants();
+    const plan p = make_hand_plan(8, 2, {job(0, 2, 0, 1, false)});
+    const sim_result r = simulate_frame(p, k, patent, config(evaluator::fd), traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    ASSERT_EQ(r.write_order.size(), 1u);
+    EXPECT_EQ(r.f.px[2], golden_sample(patent, k, p.jobs[0].s[0]));
+}
+
+// One of each kind on a line and the next, back to back: cubic (full and short), quadratic, exact.
+struct mix_case {
+    evaluator e;
+    interp::sample_set set;
+    interp::div3_mode div;
+    const char* name;
+};
+void PrintTo(const mix_case& c, std::ostream* os) { *os << c.name; }
+class PipelineSimMix : public ::testing::TestWithParam<mix_case> {};
+
+TEST_P(PipelineSimMix, MixedIntervalsBitExact) {
+    const auto mc = GetParam();
+    const auto k = hand_constants();
+    plan_config c = config(mc.e, 4, mc.set);
+    c.div = mc.div;
+    const plan p = make_hand_plan(48, 2, {job(0, 0, 4, 16, false), job(0, 16, 4, 16, true, 500), job(0, 32, 4, 7, false, 900),
+                                          job(0, 39, 0, 1, false, 100), job(0, 40, 4, 8, true, 300),
+                                          job(1, 3, 0, 1, false, 2000), job(1, 4, 4, 16, false, 50)});
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(r.write_order, job_order(p));
+    expect_golden_frame(r, p, k, patent, c);
+}
+
+INSTANTIATE_TEST_SUITE_P(Evaluators, PipelineSimMix,
+                         ::testing::Values(mix_case{evaluator::horner, interp::sample_set::case1, interp::div3_mode::shift_add, "HornerCase1"},
+                                           mix_case{evaluator::horner, interp::sample_set::case2, interp::div3_mode::exact, "HornerCase2Exact"},
+                                           mix_case{evaluator::fd, interp::sample_set::case1, interp::div3_mode::shift_add, "FdCase1"},
+                                           mix_case{evaluator::fd, interp::sample_set::case2, interp::div3_mode::exact, "FdCase2Exact"}),
+                         [](const ::testing::TestParamInfo<mix_case>& i) { return std::string(i.param.name); });
+
+// Every interval length 4..32 (m = 2..5), full and one short of full, cubic and quadratic (Horner:
+// any m in one run).
+TEST(PipelineSimHand, EveryLengthHorner) {
+    const auto k = hand_constants();
+    std::vector<interval_job> jobs;
+    unsigned y = 0;
+    for (unsigned m = 2; m <= 5; ++m)
+        for (bool q : {false, true})
+            for (unsigned len : {1u << m, (1u << m) - 1}) {
+                jobs.push_back(job(y, 1, m, len, q, 37 * y));
+                ++y;
+            }
+    const plan p = make_hand_plan(40, y, jobs);
+    const plan_config c = config(evaluator::horner);
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(r.write_order, job_order(p));
+    expect_golden_frame(r, p, k, patent, c);
+}
+
+class PipelineSimFdLength : public ::testing::TestWithParam<unsigned> {};
+TEST_P(PipelineSimFdLength, EveryLengthOfItsM) {
+    const unsigned m = GetParam();
+    const auto k = hand_constants();
+    std::vector<interval_job> jobs;
+    unsigned y = 0;
+    for (bool q : {false, true})
+        for (unsigned len = 1; len <= (1u << m); len += (m > 3 ? 3 : 1)) jobs.push_back(job(y++, 0, m, len, q, 11 * len));
+    const plan p = make_hand_plan(1u << m, y, jobs);
+    const plan_config c = config(evaluator::fd, m);
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(r.write_order, job_order(p));
+    expect_golden_frame(r, p, k, patent, c);
+}
+INSTANTIATE_TEST_SUITE_P(M, PipelineSimFdLength, ::testing::Values(2u, 3u, 4u, 5u));
+
+namespace shading::pipeline {
+void PrintTo(evaluator e, std::ostream* os) { *os << evaluator_name(e); }
+}  // namespace shading::pipeline
+
+// Samples that saturate the colour adder (ambient + diffuse + specular > 255.996) and the output
+// clamp (the cubic overshoots above 0xFFFF and below 0 between bright and dark samples).
+class PipelineSimSaturate : public ::testing::TestWithParam<evaluator> {};
+TEST_P(PipelineSimSaturate, SaturatingSamplesAndClampedPixels) {
+    frame_constants k;
+    k.n = 4;
+    k.ksi = {255, 255, 255};
+    k.kdi = {255, 255, 40};
+    k.ambient = {200 * 256, 10 * 256, 0};
+    interval_job bright = job(0, 0, 4, 16, false);
+    bright.s = {sample_geometry{32768, 32768}, sample_geometry{0, 0}, sample_geometry{32768, 32768}, sample_geometry{0, 0}};
+    interval_job q = job(1, 0, 4, 16, true);
+    q.s = {sample_geometry{0, 0}, sample_geometry{32768, 32768}, sample_geometry{0, 0}, sample_geometry{0, 0}};
+    const plan p = make_hand_plan(17, 2, {bright, q, job(1, 16, 0, 1, false)});
+    // The adder saturates: the hand-worked sum of the first sample exceeds 0xFFFF in R and G.
+    EXPECT_EQ(golden_sample(patent, k, bright.s[0])[0], 0xFFFFu);
+    const plan_config c = config(GetParam());
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    std::size_t at_max = 0, at_zero = 0;
+    for (std::size_t i = 0; i < 16; ++i) {
+        at_max += r.f.px[i][0] == 0xFFFF;
+        at_zero += r.f.px[i][2] == 0;
+    }
+    EXPECT_GT(at_max, 0u) << "some pixels clamp at 0xFFFF";
+    expect_golden_frame(r, p, k, patent, c);
+}
+INSTANTIATE_TEST_SUITE_P(Evaluators, PipelineSimSaturate, ::testing::Values(evaluator::horner, evaluator::fd),
+                         [](const ::testing::TestParamInfo<evaluator>& i) { return std::string(evaluator_name(i.param)); });
+
+// ---- Clocks per pixel, as designed ----
+
+// Fill latency, from the rising edge where the geometry side sees the frame load taken to the edge
+// where the evaluators take the first pixel: the first job is taken 1.5 clocks later (ready returns
+// with the frame strobes' fall), checked a clock later where its first sample starts, four samples
+// take 8 clocks, the hand-over (ld_e) 1.5 clocks and the coefficient units 1: 12 clocks.
+constexpr uint64_t fill_clocks = 12;
+
+// Horner: 6 clocks per cubic pixel and 4 per quadratic one (hardware_ops' count), back to back
+// across intervals and exact pixels: the run takes that plus the fill latency, whatever the number
+// of intervals. (The sample stage needs 10 clocks per cubic job, 8 per quadratic, 4 per exact
+// pixel: here it always has the next interval ready in time.)
+TEST(PipelineSimClocks, HornerBackToBack) {
+    const auto k = hand_constants();
+    std::vector<interval_job> jobs;
+    for (unsigned i = 0; i < 6; ++i) jobs.push_back(job(0, 16 * i, 4, 16, i % 2 == 1, 10 * i));
+    jobs.push_back(job(1, 0, 2, 4, false, 5));
+    jobs.push_back(job(1, 4, 0, 1, false));
+    jobs.push_back(job(1, 5, 0, 1, false, 5));
+    const plan p = make_hand_plan(96, 2, jobs);
+    const plan_config c = config(evaluator::horner);
+    const hardware_counts hw = hardware_ops(p, c);
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(hw.clocks, 3u * 16 * 6 + 3u * 16 * 4 + 4 * 6 + 2 * 6);
+    EXPECT_EQ(r.clocks, r.frame_load_clocks + fill_clocks + hw.clocks) << "frame loaded at clock " << r.frame_load_clocks;
+}
+
+// An exact pixel after a short cubic interval: the sample stage's 10 clocks for the four samples
+// are more than the exact pixel's 6, so the Horner units wait 4 clocks.
+TEST(PipelineSimClocks, HornerWaitsForASlowSampleStage) {
+    const auto k = hand_constants();
+    const plan p = make_hand_plan(8, 1, {job(0, 0, 0, 1, false), job(0, 1, 2, 4, false)});
+    const plan_config c = config(evaluator::horner);
+    const hardware_counts hw = hardware_ops(p, c);
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(hw.clocks, 5u * 6);
+    // The exact pixel's fill is 6 clocks shorter (one sample, not four); the cubic's samples are
+    // ready 10 clocks after the exact pixel's, so its first pixel is taken 10 clocks after the exact
+    // pixel, not 6: a wait of 4 clocks.
+    EXPECT_EQ(r.clocks, r.frame_load_clocks + (fill_clocks - 6) + 10 + 4 * 6);
+}
+
+// Forward differences: one pixel per clock while the sample stage keeps up (2^4 pixels per
+// interval take longer than its four samples), no clock lost between intervals.
+TEST(PipelineSimClocks, FdOnePixelPerClock) {
+    const auto k = hand_constants();
+    std::vector<interval_job> jobs;
+    for (unsigned i = 0; i < 6; ++i) jobs.push_back(job(0, 16 * i, 4, 16, i % 2 == 1, 10 * i));
+    const plan p = make_hand_plan(96, 1, jobs);
+    const plan_config c = config(evaluator::fd);
+    const hardware_counts hw = hardware_ops(p, c);
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(hw.clocks, 96u);
+    EXPECT_EQ(r.clocks, r.frame_load_clocks + fill_clocks + hw.clocks) << "frame loaded at clock " << r.frame_load_clocks;
+}
+
+// ---- Bad input ----
+
+// Jobs the units cannot take are reported (shading/input) and dropped; the others still come out
+// bit-exact and in order.
+TEST(PipelineSimBad, InvalidJobsReportedAndDropped) {
+    tb::report_log::get().expect(msg::input);
+    const auto k = hand_constants();
+    interval_job len0 = job(0, 0, 3, 0, false), too_long = job(0, 0, 2, 5, false), m7 = job(0, 0, 7, 4, false),
+                 m1 = job(0, 0, 1, 2, false), exact_q = job(0, 0, 0, 1, true);
+    const plan p = make_hand_plan(32, 2, {len0, job(0, 0, 4, 16, false), too_long, m7, m1, exact_q, job(1, 5, 3, 8, true)});
+    const sim_result r = simulate_frame(p, k, patent, config(evaluator::horner), traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(r.jobs_dropped, 5u);
+    EXPECT_EQ(tb::report_log::get().count(msg::input), 5u);
+    EXPECT_EQ(r.write_order.size(), 24u);
+}
+
+// The forward differences are built for one m: an interval of another m is refused (exact pixels
+// pass), a write beyond the frame is dropped by the frame buffer; both reported.
+TEST(PipelineSimBad, FdOtherMAndOutsideTheFrame) {
+    tb::report_log::get().expect(msg::input);
+    const auto k = hand_constants();
+    const plan p = make_hand_plan(20, 1, {job(0, 0, 3, 8, false), job(0, 0, 4, 16, false), job(0, 16, 0, 1, false),
+                                          job(0, 17, 4, 5, false)});
+    const sim_result r = simulate_frame(p, k, patent, config(evaluator::fd, 4), traced());
+    EXPECT_EQ(r.jobs_dropped, 1u);
+    EXPECT_EQ(tb::report_log::get().count(msg::input), 1u + 2u);  // m = 3 refused; x = 20, 21 dropped
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(r.write_order.size(), 16u + 1u + 3u);
+}
+
+// A forward-difference evaluator for an m it cannot be built for: a configuration error, no run.
+TEST(PipelineSimBad, FdBuiltForAnImpossibleM) {
+    tb::report_log::get().expect(msg::config);
+    const plan p = make_hand_plan(4, 1, {job(0, 0, 0, 1, false)});
+    const sim_result r = simulate_frame(p, hand_constants(), patent, config(evaluator::fd, 7), traced());
+    EXPECT_EQ(tb::report_log::get().count(msg::config), 1u);
+    EXPECT_EQ(r.write_order.size(), 0u);
+    EXPECT_EQ(r.mismatches, 1u);
+}
