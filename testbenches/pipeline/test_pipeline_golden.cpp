@@ -566,9 +566,11 @@ TEST(PipelineOps, FdHandSums) {
 // ---- With the geometry side's plan ----
 
 // make_plan + golden_frame on the sphere, against per_pixel_frame (which reads geometry_at itself):
-// every covered pixel is some interval's, nothing else is; an interval's first pixel (t = 0: the
-// evaluators return D = I1 exactly) and every exact pixel equal the per-pixel frame bit for bit; the
-// counts cover every pixel once; the interpolated pixels stay near the per-pixel ones.
+// every covered pixel is some interval's, nothing else is; each job's samples are sample_of at the
+// pixels pipeline.h names (case 1: x0 + 0, N/4, N/2, N; case 2: x0 + 0, N/2, 3N/4, N; quadratic
+// x0 + 0, N/2, N); an interval's first pixel (t = 0: the evaluators return D = I1 exactly) and every
+// exact pixel equal the per-pixel frame bit for bit; the counts cover every pixel once; the
+// interpolated pixels stay near the per-pixel ones.
 TEST(PipelineFrame, PlannedFrameAgainstPerPixel) {
     const scene::world w = scene::builtin_scene("sphere", SHADING_SOURCE_DIR, 64, 64);
     const scene::rasterised r = scene::rasterise(w);
@@ -580,16 +582,30 @@ TEST(PipelineFrame, PlannedFrameAgainstPerPixel) {
             c.m = 3;
             c.degree = d;
             c.eval = e;
+            c.set = e == evaluator::fd ? interp::sample_set::case2 : interp::sample_set::case1;
             const plan p = make_plan(r, k, patent, c);
             const frame f = golden_frame(p, k, patent, c);
             const std::string what = std::string(evaluator_name(e)) + " " + degree_policy_name(d);
             EXPECT_EQ(f.covered, ref.covered) << what;
-            std::size_t starts = 0;
+            std::size_t starts = 0, samples = 0;
             for (const interval_job& job : p.jobs) {
                 const std::size_t at = r.index(job.x0, job.y);
                 EXPECT_EQ(f.px[at], ref.px[at]) << what << " interval at (" << job.x0 << ", " << job.y << ")";
                 ++starts;
+                if (job.m == 0) continue;
+                const unsigned n = 1u << job.m;
+                const std::array<unsigned, 4> at_case1{0, n / 4, n / 2, n}, at_case2{0, n / 2, 3 * n / 4, n};
+                const std::array<unsigned, 4> at_quad{0, n / 2, n, n};
+                const auto& pos = job.deg2 ? at_quad : (c.set == interp::sample_set::case1 ? at_case1 : at_case2);
+                for (unsigned i = 0; i < (job.deg2 ? 3u : 4u); ++i) {
+                    const unsigned x = job.x0 + pos[i];
+                    ASSERT_TRUE(x < r.width && r.covered(x, job.y)) << what << " sample " << i << " off the surface";
+                    EXPECT_EQ(job.s[i], sample_of(scene::geometry_at(r, x, job.y, nullptr)))
+                        << what << " sample " << i << " of the interval at (" << job.x0 << ", " << job.y << ")";
+                    ++samples;
+                }
             }
+            EXPECT_GT(samples, 0u) << what;
             EXPECT_GT(starts, 100u);
             const hardware_counts h = hardware_ops(p, c);
             EXPECT_EQ(h.pixels, r.covered_pixels()) << what;
