@@ -112,10 +112,10 @@ struct plan_config {
     unsigned m = 4;                        // fixed: N = 2^m
     unsigned m_min = interp::m_min;        // adaptive: range of m tried, longest first
     unsigned m_max = 5;
-    double length_tol = 0.25;              // adaptive length: largest accepted error estimate, 8-bit levels
+    double length_tol = 0.5;               // adaptive length: largest accepted error estimate, 8-bit levels
     bool exact_fallback = true;            // adaptive length: where even 2^m_min fails, 2^m_min exact pixels
     degree_policy degree = degree_policy::cubic;
-    double degree_tol = 0.25;              // adaptive degree: largest accepted quadratic error estimate
+    double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
     double depth_step = 0.02;              // world units: a depth jump that ends a segment (raster.h)
     bool surface_breaks = true;            // also end segments where neighbours' triangles share no vertex (a fold)
     evaluator eval = evaluator::horner;    // fd needs length = fixed (one m per evaluator)
@@ -132,8 +132,9 @@ void validate(const plan_config& c);
 // straddle one; pieces too short for an interval of 2^m_min are exact pixels. With surface_breaks,
 // segments also end where the visible surface jumps to a part of the mesh not connected to the pixel
 // before (neighbouring pixels' triangles share no vertex: an eyelid or ear fold in front of skin at
-// nearly the same depth). Adaptive length tries m_max down to m_min and takes the first m whose
-// estimate is within length_tol; with exact_fallback, where even m_min fails, its 2^m_min pixels are exact.
+// nearly the same depth). Adaptive length tries m from min(m_max, the previous interval's m + 1) down
+// to m_min and takes the first whose estimate is within length_tol; with exact_fallback, where even
+// m_min fails, its 2^m_min pixels are exact.
 struct plan {
     unsigned width = 0, height = 0;
     std::vector<interval_job> jobs;

@@ -221,21 +221,33 @@ private:
 
     // Pixels xa..xb (inclusive) with no discontinuity inside.
     void segment(line_geometry& lg, unsigned y, unsigned xa, unsigned xb) {
-        const unsigned lowest = c_.length == length_policy::fixed ? interp::m_min : c_.m_min;
+        // The forward-difference evaluator is built for one m (fd_eval<M>): its intervals are all 2^m,
+        // what is left of a segment is exact pixels.
+        const unsigned lowest = c_.length != length_policy::fixed ? c_.m_min
+                                : c_.eval == evaluator::fd     ? c_.m
+                                                               : interp::m_min;
         unsigned pos = xa;
+        // Adaptive length grows by at most one level per interval (the segment's first tries m_max):
+        // after a short interval the next is likely short too, so the long candidates' checks (and
+        // their geometry) are not paid again and again across a highlight; flat skin still reaches
+        // m_max within a few intervals. On the head at 512 this gives the same NMSE for about 5 %
+        // fewer long operations, and a lower largest error (test_pipeline_plan, the figures in the report).
+        unsigned grow_to = c_.m_max;
         for (;;) {
             const unsigned room = xb - pos;  // the t = 1 sample, pixel pos + 2^m, must be <= xb
             if (room < (1u << lowest)) break;
             unsigned top = lowest;
-            const unsigned highest = c_.length == length_policy::fixed ? c_.m : c_.m_max;
+            const unsigned highest = c_.length == length_policy::fixed ? c_.m : grow_to;
             while (top < highest && (1u << (top + 1)) <= room) ++top;
             if (const auto job = choose(lg, y, pos, lowest, top)) {
                 pos += job->len;
                 p_.pixels += job->len;
                 p_.jobs.push_back(*job);
+                grow_to = std::min(job->m + 1, c_.m_max);
             } else {
                 // Even the shortest interval misses its check: its pixels are exact.
                 for (unsigned i = 0; i < (1u << lowest); ++i) exact(lg, y, pos++);
+                grow_to = std::min(lowest + 1, c_.m_max);
             }
         }
         // The tail: exact pixels (the last one's geometry is the last interval's t = 1 sample).

@@ -452,27 +452,46 @@ TEST(PipelinePlan, AdaptiveLengthZeroToleranceTakesTheShortest) {
     EXPECT_GT(shortest, 4 * longer) << "tolerance 0 should leave almost every interval at m_min";
 }
 
-// In between, the longest accepted m is the first whose estimate is within the tolerance: each
-// interval longer than m_min has its hand-worked estimate within it.
+// In between: each interval is the longest the policy may try whose hand-worked estimate is within
+// the tolerance. It may try up to m_max at a segment's start, then at most one level above the previous
+// interval, and only lengths whose t = 1 pixel lies in the segment; every longer candidate it could try
+// misses its check.
 TEST(PipelinePlan, AdaptiveLengthAcceptsWithinTolerance) {
     const auto& f = sphere();
     const plan_config c = adaptive_length(2, 6, 1.0);
     const plan p = make_plan(f.r, f.k, patent, c);
     expect_valid_plan(f.r, p, c);
-    std::map<unsigned, std::size_t> by_m;
-    for (const auto& j : p.jobs) {
-        ++by_m[j.m];
-        if (j.m <= c.m_min) continue;
-        const unsigned n = 1u << j.m;
-        const auto i0 = colour(f, j.x0, j.y), i1 = colour(f, j.x0 + n / 4, j.y), i2 = colour(f, j.x0 + n / 2, j.y),
-                   i3 = colour(f, j.x0 + n, j.y), e = colour(f, j.x0 + 3 * n / 4, j.y);
+    auto error = [&f](unsigned y, unsigned x0, unsigned n) {
+        const auto i0 = colour(f, x0, y), i1 = colour(f, x0 + n / 4, y), i2 = colour(f, x0 + n / 2, y),
+                   i3 = colour(f, x0 + n, y), e = colour(f, x0 + 3 * n / 4, y);
+        double worst = 0.0;
         for (int ch = 0; ch < 3; ++ch)
-            EXPECT_LE(std::abs(cubic_at_three_quarters(double(i0[ch]), double(i1[ch]), double(i2[ch]), double(i3[ch])) -
-                               double(e[ch])),
-                      c.length_tol * 256.0);
+            worst = std::max(worst, std::abs(cubic_at_three_quarters(double(i0[ch]), double(i1[ch]), double(i2[ch]),
+                                                                     double(i3[ch])) - double(e[ch])));
+        return worst / 256.0;  // 8-bit levels
+    };
+    std::map<unsigned, std::size_t> by_m;
+    std::size_t grew = 0;
+    unsigned line = ~0u, seg_end = 0, allowed = c.m_max;
+    for (const auto& j : p.jobs) {
+        if (j.m == 0) continue;  // tails only (no fallback here)
+        const unsigned end = segment_end(cuts(f.r, j.y, c), j.x0);
+        if (j.y != line || end != seg_end) allowed = c.m_max;  // a new segment
+        line = j.y;
+        seg_end = end;
+        ++by_m[j.m];
+        EXPECT_LE(j.m, allowed);
+        if (j.m > c.m_min) {
+            EXPECT_LE(error(j.y, j.x0, 1u << j.m), c.length_tol) << "line " << j.y << ", x " << j.x0;
+        }
+        for (unsigned m = j.m + 1; m <= allowed && (1u << m) <= end - j.x0; ++m)
+            EXPECT_GT(error(j.y, j.x0, 1u << m), c.length_tol) << "a longer interval passes, line " << j.y;
+        grew += j.m == allowed && allowed < c.m_max;
+        allowed = std::min(j.m + 1, c.m_max);
     }
     EXPECT_GT(by_m[2] + by_m[3], 0u);
     EXPECT_GT(by_m[4] + by_m[5] + by_m[6], 0u) << "a mix of lengths at tolerance 1 level";
+    EXPECT_GT(grew, 0u) << "intervals limited by the growth of one level";
 }
 
 // With the exact fallback, where even an interval of 2^m_min misses its check, its pixels are exact:
