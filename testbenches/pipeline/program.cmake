@@ -35,6 +35,18 @@ if(TARGET shading_pipeline)
                    ${rp_out}/head48)
   set_tests_properties(pipeline.render.head48.report PROPERTIES DEPENDS pipeline.render.head48)
   list(APPEND rp_tests pipeline.render.head48 pipeline.render.head48.report)
+  if(TARGET shading_pipeline_sim)
+    # The bit-exact check can fail: one golden pixel corrupted (hidden --inject-mismatch) must give
+    # exit 1 and no report.
+    add_test(NAME pipeline.render.inject_mismatch
+             COMMAND sh -c "rm -rf \"$1\"; \"$0\" --scene head --size 32 --sim --inject-mismatch --out \"$1\"; test $? -eq 1 && test ! -e \"$1/report.json\""
+                     $<TARGET_FILE:render_pipeline> ${rp_out}/inject)
+    # --vcd writes the SystemC pipeline's trace.
+    add_test(NAME pipeline.render.vcd
+             COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene sphere --size 16 --sim --no-images --vcd \"$1/pipeline.vcd\" --out \"$1\" && test -s \"$1/pipeline.vcd\""
+                     $<TARGET_FILE:render_pipeline> ${rp_out}/vcd)
+    list(APPEND rp_tests pipeline.render.inject_mismatch pipeline.render.vcd)
+  endif()
   # A tiny sweep (one device, the small grid, 2 processes) merges one CSV row per configuration.
   add_test(NAME pipeline.sweep.tiny
            COMMAND sh -c "\"$0\" --sweep --scene head --size 32 --device patent --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 33"

@@ -46,6 +46,7 @@
 #if SHADING_PIPELINE_SIM
 #include <systemc>
 
+#include "common/report_log.h"
 #include "pipeline_sim.h"
 #endif
 
@@ -83,6 +84,7 @@ struct options {
     std::string vcd, json_name = "report.json", md_name = "report.md";
     double error_scale = 2.0, error_scale_total = 16.0;
     // --sweep
+    bool inject_mismatch = false;       // (hidden, for the tests) corrupt one golden pixel before the comparison
     bool sweep = false;
     unsigned jobs = 0;
     std::string grid = "small", csv;
@@ -352,6 +354,7 @@ int render(const options& o) {
 #if SHADING_PIPELINE_SIM
         sim_options so;
         so.vcd_path = o.vcd;
+        if (!o.vcd.empty() && fs::path(o.vcd).has_parent_path()) fs::create_directories(fs::path(o.vcd).parent_path());
         const bool tty = ::isatty(2);
         auto last = std::chrono::steady_clock::now();
         const auto t_sim = last;
@@ -376,24 +379,38 @@ int render(const options& o) {
         };
         const sim_result sr = simulate_frame(p, k, dev, cfg, so);
         wall["sim"] = sr.seconds;
-        // Bit for bit: every pixel's codes and coverage.
+        // A SystemC warning or error during the run is a failure too (the project's rule), reported
+        // by report_log as it happened.
+        if (tb::report_log::get().unexpected() != 0) {
+            std::fprintf(stderr, "render_pipeline: the SystemC pipeline reported %u warnings or errors\n",
+                         tb::report_log::get().unexpected());
+            return 1;
+        }
+        // Bit for bit: every pixel's codes and coverage. (--inject-mismatch: the check must fail.)
+        frame golden = hw;
+        if (o.inject_mismatch)
+            for (std::size_t i = 0; i < golden.px.size(); ++i)
+                if (golden.covered[i]) {
+                    golden.px[i][1] ^= 1u;
+                    break;
+                }
         std::size_t diff = 0, first = 0;
-        const bool same_size = sr.f.width == hw.width && sr.f.height == hw.height && sr.f.px.size() == hw.px.size();
+        const bool same_size = sr.f.width == golden.width && sr.f.height == golden.height && sr.f.px.size() == golden.px.size();
         if (same_size)
-            for (std::size_t i = 0; i < hw.px.size(); ++i)
-                if (sr.f.px[i] != hw.px[i] || (!sr.f.covered.empty() && sr.f.covered[i] != hw.covered[i]))
+            for (std::size_t i = 0; i < golden.px.size(); ++i)
+                if (sr.f.px[i] != golden.px[i] || (!sr.f.covered.empty() && sr.f.covered[i] != golden.covered[i]))
                     if (diff++ == 0) first = i;
         if (!same_size || diff != 0 || sr.mismatches != 0) {
             if (!same_size)
                 std::fprintf(stderr, "render_pipeline: the SystemC frame is %ux%u, the golden frame %ux%u\n", sr.f.width,
-                             sr.f.height, hw.width, hw.height);
+                             sr.f.height, golden.width, golden.height);
             else if (diff != 0) {
                 const auto& a = sr.f.px[first];
-                const auto& b = hw.px[first];
+                const auto& b = golden.px[first];
                 std::fprintf(stderr,
                              "render_pipeline: the SystemC pipeline differs from the golden frame at %zu pixels; first "
                              "at (%zu, %zu): sim %04llx %04llx %04llx, golden %04llx %04llx %04llx\n",
-                             diff, first % hw.width, first / hw.width, (unsigned long long)a[0], (unsigned long long)a[1],
+                             diff, first % golden.width, first / golden.width, (unsigned long long)a[0], (unsigned long long)a[1],
                              (unsigned long long)a[2], (unsigned long long)b[0], (unsigned long long)b[1],
                              (unsigned long long)b[2]);
             }
@@ -647,8 +664,10 @@ int render(const options& o) {
     if (sim_j["ran"].get<bool>())
         std::printf("  sim: bit-exact, %.3f clocks/pixel, %.0f pixels/s, %.2f s\n", sim_clocks_per_px, sim_px_per_s,
                     wall["sim"]);
-    std::printf("  wall %.2f s; wrote %s/{%s%s%s}\n", wall["total"], o.out.c_str(),
-                written.empty() ? "" : "*.png,", o.md_name.c_str(), (", " + o.json_name).c_str());
+    std::string files = written.empty() ? "" : "*.png";
+    for (const std::string& n : {o.md_name, o.json_name})
+        if (!n.empty()) files += (files.empty() ? "" : ", ") + n;
+    std::printf("  wall %.2f s; wrote %s/{%s}\n", wall["total"], o.out.c_str(), files.c_str());
     return 0;
 }
 
@@ -848,7 +867,12 @@ int run(const options& o) {
 }  // namespace
 
 #if SHADING_PIPELINE_SIM
-int sc_main(int, char*[]) { return run(g_options); }
+// SystemC's reports through the testbenches' log: info (the kernel's "stopped by user") silent,
+// warnings and errors shown with their ids and counted.
+int sc_main(int, char*[]) {
+    shading::tb::report_log::install();
+    return run(g_options);
+}
 #endif
 
 int main(int argc, char* argv[]) {
@@ -897,6 +921,7 @@ int main(int argc, char* argv[]) {
     app.add_option("--jobs", o.jobs, "--sweep: parallel processes (default: the hardware's cores)");
     app.add_option("--grid", o.grid, "--sweep: small or full")->check(CLI::IsMember({"small", "full"}));
     app.add_option("--csv", o.csv, "--sweep: CSV path (default: <out>/sweep.csv)");
+    app.add_flag("--inject-mismatch", o.inject_mismatch, "")->group("");
     bool sim_available = false;
     app.add_flag("--sim-available", sim_available, "exit 0 if this build has the SystemC pipeline (--sim), 1 if not");
     try {
