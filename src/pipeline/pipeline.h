@@ -31,10 +31,10 @@ namespace shading::pipeline {
 // ---- Formats of the sample stage (decisions: seed 004 leaves them open) ----
 // k_d * I_l per channel: an 8-bit code like the device's k_s * I (spec::ksi_fmt), a frame constant.
 inline constexpr qfmt kdi_fmt = spec::ksi_fmt;
-// Diffuse multiplier: k_d*I (8.0) x N.L (Q1.15) -> Q9.23, the 15 low wires dropped (floor) -> Q9.8,
+// Diffuse multiplier: k_d*I (8.0) x N.L (Q1.15) -> Q9.15, the 7 low wires dropped (floor) -> Q9.8,
 // in 8-bit image units like the device's out25..27 (spec::out_fmt).
 inline constexpr qfmt diffuse_fmt = spec::out_fmt;
-inline constexpr unsigned diffuse_drop = spec::cos_fmt.frac + kdi_fmt.frac - diffuse_fmt.frac;  // 15
+inline constexpr unsigned diffuse_drop = spec::cos_fmt.frac + kdi_fmt.frac - diffuse_fmt.frac;  // 7
 // Ambient term per channel: 255 * ambient as an unsigned Q8.8 code (rounded), a frame constant.
 inline constexpr qfmt ambient_fmt = interp::sample_fmt;
 // Colour sample: ambient + diffuse + specular, saturated to interp::sample_fmt (Q8.8 unsigned,
@@ -68,7 +68,7 @@ struct sample_geometry {
 sample_geometry sample_of(const scene::pixel_geometry& g);
 
 // One colour sample (colour_fmt codes per channel):
-//   sat(ambient + floor(kdi * cos_nl >> 15) + device_specular(n, cos_nh, ksi)).
+//   sat(ambient + floor(kdi * cos_nl >> 7) + device_specular(n, cos_nh, ksi)).
 rgb_codes golden_sample(const scene::device_config& dev, const frame_constants& k, sample_geometry g);
 
 // ---- One interval ----
