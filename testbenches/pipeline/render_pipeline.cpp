@@ -76,8 +76,7 @@ struct options {
     int n = -1;                         // -1: the scene's material
     std::string kd, ks, ambient;        // "v" or "r,g,b" in [0, 1]; empty: the scene's material
     std::string length = "fixed", degree = "cubic", eval = "horner", set = "case1", div3 = "shift_add";
-    unsigned m = 4, m_min = interp::m_min, m_max = 5;
-    double length_tol = 0.5, degree_tol = 0.25, depth_step = 0.02;
+    plan_config pc;                     // the numeric and boolean settings, defaults from pipeline.h
     std::string device = "patent", mode = "saturate";
     bool device_given = false;          // --sweep: without --device, the grid's devices
     bool sim = true, images = true;
@@ -135,20 +134,14 @@ glm::dvec3 parse_light(const std::string& s) {
 }
 
 plan_config plan_config_of(const options& o) {
-    plan_config c;
+    plan_config c = o.pc;
     c.set = o.set == "case2" ? interp::sample_set::case2 : interp::sample_set::case1;
     c.div = o.div3 == "exact" ? interp::div3_mode::exact : interp::div3_mode::shift_add;
     c.length = o.length == "adaptive" ? length_policy::adaptive : length_policy::fixed;
-    c.m = o.m;
-    c.m_min = o.m_min;
-    c.m_max = o.m_max;
-    c.length_tol = o.length_tol;
     c.degree = o.degree == "quadratic" ? degree_policy::quadratic
                : o.degree == "zones"   ? degree_policy::zones
                : o.degree == "adaptive" ? degree_policy::adaptive
                                         : degree_policy::cubic;
-    c.degree_tol = o.degree_tol;
-    c.depth_step = o.depth_step;
     c.eval = o.eval == "fd" ? evaluator::fd : evaluator::horner;
     return c;
 }
@@ -495,6 +488,8 @@ int render(const options& o) {
                      {"m_min", cfg.m_min},
                      {"m_max", cfg.m_max},
                      {"length_tol", cfg.length_tol},
+                     {"exact_fallback", cfg.exact_fallback},
+                     {"surface_breaks", cfg.surface_breaks},
                      {"degree", degree_policy_name(cfg.degree)},
                      {"degree_tol", cfg.degree_tol},
                      {"eval", evaluator_name(cfg.eval)},
@@ -506,6 +501,7 @@ int render(const options& o) {
     rep["plan"] = {{"intervals", p.jobs.size()},
                    {"pixels", p.pixels},
                    {"geometry_points", p.geometry_points},
+                   {"check_samples", p.check_samples},
                    {"samples", hc.samples},
                    {"mean_interval_pixels", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()},
                    {"exact_pixels", n_deg[1]},
@@ -576,11 +572,12 @@ int render(const options& o) {
     if (cfg.length == length_policy::fixed)
         md << " (m = " << cfg.m << ", " << (1u << cfg.m) << " pixels)";
     else
-        md << " (m " << cfg.m_min << ".." << cfg.m_max << ", tolerance " << cfg.length_tol << " levels)";
+        md << " (m " << cfg.m_min << ".." << cfg.m_max << ", tolerance " << cfg.length_tol << " levels, exact fallback "
+           << (cfg.exact_fallback ? "on" : "off") << ")";
     md << ", degree " << degree_policy_name(cfg.degree);
     if (cfg.degree == degree_policy::adaptive) md << " (tolerance " << cfg.degree_tol << ")";
     md << ", evaluator " << evaluator_name(cfg.eval) << ", sample set " << o.set << ", /3 " << o.div3
-       << ", depth step " << cfg.depth_step << ".\n\n";
+       << ", depth step " << cfg.depth_step << (cfg.surface_breaks ? ", segments also end at folds" : "") << ".\n\n";
     md << "Plan: " << p.jobs.size() << " intervals over " << p.pixels << " covered pixels (mean "
        << fmt("%.2f", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()) << " pixels), " << hc.samples
        << " samples through the sample stage; pixels exact " << n_deg[1] << ", quadratic " << n_deg[2] << ", cubic "
@@ -684,13 +681,13 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
     if (!only_device.empty()) devices = {only_device};
     const std::vector<unsigned> ms = grid == "full" ? std::vector<unsigned>{2, 3, 4, 5, 6} : std::vector<unsigned>{3, 4, 5};
     const std::vector<double> ltols = grid == "full" ? std::vector<double>{0.125, 0.25, 0.5, 1.0, 2.0}
-                                                     : std::vector<double>{0.25, 1.0};
+                                                     : std::vector<double>{0.25, 0.5, 1.0};
     const std::vector<std::pair<std::string, double>> degrees =
-        grid == "full" ? std::vector<std::pair<std::string, double>>{{"cubic", 0.25},    {"quadratic", 0.25},
-                                                                     {"zones", 0.25},    {"adaptive", 0.125},
-                                                                     {"adaptive", 0.25}, {"adaptive", 0.5}}
+        grid == "full" ? std::vector<std::pair<std::string, double>>{{"cubic", 0.5},     {"quadratic", 0.5},
+                                                                     {"zones", 0.5},    {"adaptive", 0.25},
+                                                                     {"adaptive", 0.5},  {"adaptive", 1.0}}
                        : std::vector<std::pair<std::string, double>>{
-                             {"cubic", 0.25}, {"quadratic", 0.25}, {"zones", 0.25}, {"adaptive", 0.25}};
+                             {"cubic", 0.5}, {"quadratic", 0.5}, {"zones", 0.5}, {"adaptive", 0.5}};
     std::vector<sweep_point> g;
     for (const auto& d : devices)
         for (const auto& [deg, dtol] : degrees) {
@@ -729,11 +726,13 @@ int run_sweep(const options& o) {
         const sweep_point& sp = grid[i];
         std::vector<std::string> a = {self, "--scene", o.scene, "--data-dir", o.data_dir, "--size", std::to_string(o.size),
                                       "--device", sp.device, "--mode", o.mode, "--length", sp.length, "--m",
-                                      std::to_string(sp.m), "--m-min", std::to_string(o.m_min), "--m-max",
-                                      std::to_string(sp.length == "adaptive" ? std::max(o.m_max, 6u) : o.m_max),
+                                      std::to_string(sp.m), "--m-min", std::to_string(o.pc.m_min), "--m-max",
+                                      std::to_string(o.pc.m_max),
                                       "--length-tol", num(sp.length_tol), "--degree", sp.degree, "--degree-tol",
                                       num(sp.degree_tol), "--eval", sp.eval, "--set", o.set, "--div3", o.div3,
-                                      "--depth-step", num(o.depth_step), "--no-sim", "--no-images", "--md", "",
+                                      "--depth-step", num(o.pc.depth_step),
+                                      o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
+                                      o.pc.surface_breaks ? "--surface-breaks" : "--no-surface-breaks", "--no-sim", "--no-images", "--md", "",
                                       "--json", "report.json", "--out", (tmp / std::to_string(i)).string()};
         if (!o.light.empty()) a.insert(a.end(), {"--light", o.light});
         if (o.n != -1) a.insert(a.end(), {"--n", std::to_string(o.n)});
@@ -768,7 +767,7 @@ int run_sweep(const options& o) {
         if (tty)
             std::fprintf(stderr, "\rsweep: %zu/%zu configurations done, %zu running, %zu failed, %.0f s%s", done,
                          grid.size(), running.size(), failed.size(), seconds_since(t0), final ? "\n" : "");
-        else if (final || done % std::max<std::size_t>(1, grid.size() / 10) == 0)
+        else if (final || (done < grid.size() && done % std::max<std::size_t>(1, grid.size() / 10) == 0))
             std::fprintf(stderr, "sweep: %zu/%zu configurations done, %zu failed, %.0f s\n", done, grid.size(),
                          failed.size(), seconds_since(t0));
     };
@@ -890,13 +889,17 @@ int main(int argc, char* argv[]) {
     app.add_option("--ks", o.ks, "k_s: one value or r,g,b in [0, 1]");
     app.add_option("--ambient", o.ambient, "ambient: one value or r,g,b in [0, 1]");
     app.add_option("--length", o.length, "interval length policy")->check(CLI::IsMember({"fixed", "adaptive"}));
-    app.add_option("--m", o.m, "fixed length: intervals of 2^m pixels");
-    app.add_option("--m-min", o.m_min, "adaptive length: shortest interval 2^m_min");
-    app.add_option("--m-max", o.m_max, "adaptive length: longest interval 2^m_max");
-    app.add_option("--length-tol", o.length_tol, "adaptive length: largest accepted error estimate (8-bit levels)");
+    app.add_option("--m", o.pc.m, "fixed length: intervals of 2^m pixels");
+    app.add_option("--m-min", o.pc.m_min, "adaptive length: shortest interval 2^m_min");
+    app.add_option("--m-max", o.pc.m_max, "adaptive length: longest interval 2^m_max");
+    app.add_option("--length-tol", o.pc.length_tol, "adaptive length: largest accepted error estimate (8-bit levels)");
+    app.add_flag("--exact-fallback,!--no-exact-fallback", o.pc.exact_fallback,
+                 "adaptive length: exact pixels where even 2^m_min misses the tolerance (default on)");
+    app.add_flag("--surface-breaks,!--no-surface-breaks", o.pc.surface_breaks,
+                 "also end segments at folds (neighbouring pixels' triangles share no vertex; default on)");
     app.add_option("--degree", o.degree, "degree policy")
         ->check(CLI::IsMember({"cubic", "quadratic", "zones", "adaptive"}));
-    app.add_option("--degree-tol", o.degree_tol, "adaptive degree: largest accepted quadratic error estimate");
+    app.add_option("--degree-tol", o.pc.degree_tol, "adaptive degree: largest accepted quadratic error estimate");
     app.add_option("--eval", o.eval, "evaluator: the Fig. 4 Horner unit or our forward differences")
         ->check(CLI::IsMember({"horner", "fd"}));
     app.add_option("--set", o.set, "cubic sample points: case1 (0, 1/4, 1/2, 1) or case2 (0, 1/2, 3/4, 1)")
@@ -904,7 +907,7 @@ int main(int argc, char* argv[]) {
     app.add_option("--div3", o.div3, "division by 3 in the coefficient unit")->check(CLI::IsMember({"shift_add", "exact"}));
     app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802 (--sweep: default all of the grid's)");
     app.add_option("--mode", o.mode, "overflow mode of the device's ADD11")->check(CLI::IsMember({"saturate", "wrap"}));
-    app.add_option("--depth-step", o.depth_step, "depth jump (world units) that ends a segment of a raster line")
+    app.add_option("--depth-step", o.pc.depth_step, "depth jump (world units) that ends a segment of a raster line")
         ->check(CLI::PositiveNumber);
     app.add_option("--out", o.out, "output folder");
     app.add_flag("--sim,!--no-sim", o.sim, "run the SystemC pipeline and require its frame to equal the golden one "
