@@ -92,10 +92,13 @@ def main():
             ax.grid(True, which="both", lw=0.3)
             if col == 1:
                 ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+            else:  # the reference lines only; the markers are explained beside the right panel
+                lines = [h for h in ax.get_lines() if not h.get_label().startswith("_")]
+                ax.legend(handles=lines, fontsize=7, loc="upper right")
     r0 = rows[0]
     fig.suptitle(f"Shading pipeline sweep: {r0['scene']} {r0['size']}x{r0['size']}, n = {r0['n']}, "
                  f"{len(rows)} configurations (golden model)", fontsize=11)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.98))
     fig.savefig(stem + ".png", dpi=100)
     with open(stem + "_pareto.csv", "w", newline="") as f:
         w = csv.writer(f)
