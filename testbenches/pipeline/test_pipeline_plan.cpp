@@ -611,13 +611,49 @@ TEST(PipelinePlan, Case2SamplePoints) {
     c.degree_tol = 0.25;
     const plan p = make_plan(f.r, f.k, patent, c);
     expect_valid_plan(f.r, p, c);
-    bool any_quad = false, any_cubic = false;
+    // Hand-worked weights: the cubic through t = 0, 1/2, 3/4, 1 at t = 1/4 is (I0 + 6 I1/2 - 4 I3/4 + I1)/4;
+    // the quadratic through 0, 1/2, 1 at 3/4 is (-I0 + 6 I1/2 + 3 I1)/8 and at 1/4 (3 I0 + 6 I1/2 - I1)/8.
+    auto worst = [&f](const interval_job& j, auto value_at) {
+        const unsigned n = 1u << j.m;
+        double w = 0.0;
+        const auto i0 = colour(f, j.x0, j.y), ih = colour(f, j.x0 + n / 2, j.y), i3 = colour(f, j.x0 + 3 * n / 4, j.y),
+                   i1 = colour(f, j.x0 + n, j.y), iq = colour(f, j.x0 + n / 4, j.y);
+        for (int ch = 0; ch < 3; ++ch) {
+            const auto [poly, exact] = value_at(double(i0[ch]), double(ih[ch]), double(i3[ch]), double(i1[ch]),
+                                                double(iq[ch]), double(i3[ch]));
+            w = std::max(w, std::abs(poly - exact));
+        }
+        return w / 256.0;
+    };
+    auto quad_three_quarters = [](double a, double h, double, double b, double, double e3) {
+        return std::pair<double, double>{(-a + 6 * h + 3 * b) / 8, e3};
+    };
+    auto quad_quarter = [](double a, double h, double, double b, double eq, double) {
+        return std::pair<double, double>{(3 * a + 6 * h - b) / 8, eq};
+    };
+    auto cubic_quarter = [](double a, double h, double t3, double b, double eq, double) {
+        return std::pair<double, double>{(a + 6 * h - 4 * t3 + b) / 4, eq};
+    };
+    std::size_t quad = 0, cubic = 0;
     for (const auto& j : p.jobs) {
         if (j.m == 0) continue;
-        (j.deg2 ? any_quad : any_cubic) = true;
+        SCOPED_TRACE("line " + std::to_string(j.y) + ", x " + std::to_string(j.x0) + ", m " + std::to_string(j.m));
+        if (j.deg2) {
+            ++quad;
+            EXPECT_LE(worst(j, quad_three_quarters), c.degree_tol);
+            if (j.m > c.m_min) {
+                EXPECT_LE(worst(j, quad_quarter), c.length_tol);
+            }
+        } else {
+            ++cubic;
+            EXPECT_GT(worst(j, quad_three_quarters), c.degree_tol);
+            if (j.m > c.m_min) {
+                EXPECT_LE(worst(j, cubic_quarter), c.length_tol);
+            }
+        }
     }
-    EXPECT_TRUE(any_quad);
-    EXPECT_TRUE(any_cubic);
+    EXPECT_GT(quad, 0u);
+    EXPECT_GT(cubic, 0u);
 }
 
 // ---- Zones ----
