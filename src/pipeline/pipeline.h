@@ -112,7 +112,7 @@ struct plan_config {
     unsigned m = 4;                        // fixed: N = 2^m
     unsigned m_min = interp::m_min;        // adaptive: range of m tried, longest first
     unsigned m_max = 5;
-    double length_tol = 0.5;               // adaptive length: largest accepted error estimate, 8-bit levels
+    double length_tol = 1.0;               // adaptive length: largest accepted error estimate, 8-bit levels
     bool exact_fallback = true;            // adaptive length: where even 2^m_min fails, 2^m_min exact pixels
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
@@ -133,8 +133,10 @@ void validate(const plan_config& c);
 // segments also end where the visible surface jumps to a part of the mesh not connected to the pixel
 // before (neighbouring pixels' triangles share no vertex: an eyelid or ear fold in front of skin at
 // nearly the same depth). Adaptive length tries m from min(m_max, the previous interval's m + 1) down
-// to m_min and takes the first whose estimate is within length_tol; with exact_fallback, where even
-// m_min fails, its 2^m_min pixels are exact.
+// to m_min and takes the first whose polynomial misses the exact colour at the middle of its widest
+// gap (case 1 t = 3/4, case 2 t = 1/4: a check point) by at most length_tol and, for a cubic, whose
+// quadratic through t = 0, 1/2, 1 misses the cubic's fourth sample by at most 2 x length_tol; with
+// exact_fallback, where even m_min fails, its 2^m_min pixels are exact.
 struct plan {
     unsigned width = 0, height = 0;
     std::vector<interval_job> jobs;
