@@ -105,6 +105,7 @@ public:
             p_.geometry += scratch;
             smp_[x] = sample_of(geo_[x]);
             charge_dots(geo_[x]);
+            uncount(geo_[x]);  // the scratch count dies here: the kept values charge nothing
             ++p_.geometry_points;
             have_geo_[x] = 1;
         }
@@ -125,6 +126,14 @@ public:
     }
 
 private:
+    static void uncount(scene::pixel_geometry& g) {
+        auto plain = [](cvec3& v) { v = {cnum(v.x.value(), nullptr), cnum(v.y.value(), nullptr), cnum(v.z.value(), nullptr)}; };
+        plain(g.p);
+        plain(g.n);
+        plain(g.v);
+        for (auto& v : g.l) plain(v);
+        for (auto& v : g.h) plain(v);
+    }
     // N.L, the N.L > 0 gate, and N.H clamped at 0 where the light reaches (sample_of, shade.cpp).
     void charge_dots(const scene::pixel_geometry& g) {
         op_counts* ops = &p_.geometry;

@@ -88,7 +88,9 @@ void expect_valid_plan(const scene::rasterised& r, const plan& p, const plan_con
     ASSERT_EQ(p.height, r.height);
     std::vector<int> hits(static_cast<std::size_t>(r.width) * r.height, 0);
     std::size_t pixels = 0;
-    const unsigned lowest = c.length == length_policy::fixed ? interp::m_min : c.m_min;
+    // Fixed length: tails take shorter intervals down to the units' m_min, except for the forward-
+    // difference evaluator, built for one m (its tails are exact pixels).
+    const unsigned lowest = c.length != length_policy::fixed ? c.m_min : c.eval == evaluator::fd ? c.m : interp::m_min;
     const unsigned highest = c.length == length_policy::fixed ? c.m : c.m_max;
     std::map<unsigned, std::set<unsigned>> line_cuts;
     unsigned prev_y = 0, prev_end = 0;
@@ -330,6 +332,26 @@ TEST(PipelinePlan, FixedLengthTilesEverySegment) {
             EXPECT_GT(full * 16, p.pixels / 2) << "most pixels in full intervals of 16";
         }
     }
+}
+
+// The forward-difference evaluator takes one m per frame: every interval is 2^m, tails are exact.
+TEST(PipelinePlan, ForwardDifferencesTakeOneLength) {
+    const auto& f = sphere();
+    plan_config c = fixed(4);
+    c.eval = evaluator::fd;
+    const plan p = make_plan(f.r, f.k, patent, c);
+    expect_valid_plan(f.r, p, c);
+    std::size_t intervals = 0, exact = 0;
+    for (const auto& j : p.jobs) {
+        EXPECT_TRUE(j.m == 0 || j.m == 4) << "line " << j.y << ", x " << j.x0 << ", m " << j.m;
+        (j.m ? intervals : exact) += 1;
+    }
+    EXPECT_GT(intervals, 0u);
+    // The Horner unit takes the shorter tails instead: fewer exact pixels.
+    c.eval = evaluator::horner;
+    std::size_t exact_horner = 0;
+    for (const auto& j : make_plan(f.r, f.k, patent, c).jobs) exact_horner += j.m == 0;
+    EXPECT_LT(exact_horner, exact);
 }
 
 // A segment of 22 pixels xa .. xa + 21 with m = 4: an interval of 16 at xa (samples at xa + 0, 4, 8,
