@@ -156,7 +156,9 @@ plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene
 inline constexpr unsigned zone_count = 8;
 const char* zone_name(unsigned zone);
 bool zone_is_quadratic(unsigned zone);
-// The zone of a surface point of the head scan, from its position relative to the mesh's bounds.
+// The zone of a surface point of the head scan, from its position (g.p) relative to its mesh's nose
+// tip (the most forward vertex, +z) and top, in units of their height difference; boxes calibrated on
+// the scan (zones.cpp). 0 where geometry_at gives no position (orthographic camera, directional light).
 unsigned head_zone(const scene::rasterised& r, const scene::pixel_geometry& g);
 
 // ---- A whole frame ----
