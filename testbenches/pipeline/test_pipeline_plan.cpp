@@ -739,6 +739,30 @@ TEST(PipelineZones, LandmarksOfTheHead) {
     EXPECT_STREQ(zone_name(zone_at(front(0.0, tip.y - 0.3 * h, tip.y - 0.12 * h))), "mouth");
 }
 
+// Without a position (an orthographic camera and a directional light: geometry_at leaves g.p at 0)
+// there is no zone, rather than the zone of the origin.
+TEST(PipelineZones, NoPositionNoZone) {
+    scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 48, 48);
+    w.cam.fov_y_deg = 0.0;
+    w.cam.ortho_height = 0.6;
+    const scene::rasterised r = scene::rasterise(w);
+    std::size_t covered = 0;
+    for (unsigned y = 0; y < r.height; ++y)
+        for (unsigned x = 0; x < r.width; ++x)
+            if (r.covered(x, y)) {
+                ++covered;
+                EXPECT_EQ(head_zone(r, scene::geometry_at(r, x, y, nullptr)), 0u);
+            }
+    EXPECT_GT(covered, 0u);
+    // The same head in perspective has face zones.
+    const auto& f = head();
+    std::size_t face = 0;
+    for (unsigned y = 0; y < f.r.height; ++y)
+        for (unsigned x = 0; x < f.r.width; ++x)
+            if (f.r.covered(x, y)) face += head_zone(f.r, scene::geometry_at(f.r, x, y, nullptr)) != 0;
+    EXPECT_GT(face, 0u);
+}
+
 // Every zone is on the rendered head, the face's zones in the face's pixels; writes the zone map over
 // the shaded head (build/out/pipeline/zones_head.png) to look at.
 TEST(PipelineZones, ZoneMapOfTheHead) {
