@@ -19,11 +19,28 @@ public:
         opt.spawn_method();
         opt.set_sensitivity(&settle_);
         opt.dont_initialize();
-        sc_core::sc_spawn([this] { out_.write(pending_); }, "settle", &opt);
+        sc_core::sc_spawn(
+            [this] {
+                out_.write(pending_);
+                written_ = pending_;
+                in_flight_ = false;
+            },
+            "settle", &opt);
     }
 
     void drive(const T& v) {
+        // The output already carries v: nothing to schedule, and a change still in flight is a pulse
+        // shorter than the delay, swallowed. (Saves the simulator a timed event per unchanged
+        // recomputation, e.g. a clocked register latching the value it holds; the first drive always
+        // goes out, so an output starts as the block computes it.)
+        if (!first_ && v == written_) {
+            if (in_flight_) settle_.cancel();
+            in_flight_ = false;
+            return;
+        }
+        first_ = false;
         pending_ = v;
+        in_flight_ = true;
         settle_.cancel();
         settle_.notify(delay_);
     }
@@ -34,7 +51,8 @@ private:
     sc_core::sc_out<T>& out_;
     sc_core::sc_time delay_;
     sc_core::sc_event settle_;
-    T pending_{};
+    T pending_{}, written_{};
+    bool first_ = true, in_flight_ = false;
 };
 
 // Default propagation delays (documented in the README): a 16x16 array multiplier, a 32-bit
