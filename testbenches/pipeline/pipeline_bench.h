@@ -6,6 +6,7 @@
 //                     golden codes; missing and unexpected pixels count as mismatches too.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <sstream>
@@ -58,7 +59,8 @@ public:
     void check(unsigned x, unsigned y, const frame_buffer::rgb& got) {
         const std::size_t at = std::size_t(y) * w_ + x;
         order_.push_back(at);
-        const rgb_codes g{got[0], got[1], got[2]};
+        rgb_codes g{got[0], got[1], got[2]};
+        if (order_.size() - 1 == inject_) g[0] ^= 1;  // as if the golden codes differed
         if (wanted_[at] == 0) {
             mismatch(x, y, g, "no job covers this pixel (or it was written already)");
             return;
@@ -80,6 +82,7 @@ public:
             }
     }
 
+    void inject_mismatch(std::size_t k) { inject_ = k; }
     std::size_t pixels() const { return pixels_; }
     std::size_t written() const { return order_.size(); }
     std::size_t mismatches() const { return mismatches_; }
@@ -102,7 +105,7 @@ private:
     std::vector<rgb_codes> expected_;
     std::vector<uint8_t> wanted_;
     std::vector<std::size_t> order_;
-    std::size_t pixels_ = 0, mismatches_ = 0, dropped_ = 0, reported_ = 0;
+    std::size_t pixels_ = 0, mismatches_ = 0, dropped_ = 0, reported_ = 0, inject_ = SIZE_MAX;
 };
 
 // The geometry side: drives the pins at rising edges of clk (sample_ctrl.h's handshake: a request
@@ -136,8 +139,15 @@ public:
     uint64_t frame_loaded_at_edge() const { return frame_edge_; }
 
 private:
-    void take() {  // hold the request until a rising edge with ready = 1, then one more edge
-        while (!ready.read()) wait();
+    // Hold the request until it is taken, then return at the next rising edge. Ready at this rising
+    // edge: taken at the falling edge after it. Else ready rises at some falling edge F and the
+    // request is taken at F + 1 clock; the next rising edge after that is F + 1.5 clocks. (Waiting on
+    // ready's event, not polling every clock: the source sleeps through a long interval.)
+    void take() {
+        if (!ready.read()) {
+            wait(ready.posedge_event());
+            wait();
+        }
         wait();
     }
 

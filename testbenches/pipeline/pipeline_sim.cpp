@@ -1,108 +1,13 @@
 // simulate_frame(): elaborates the bench for the device and evaluator asked for, runs it, and reads
-// the frame buffer back (pipeline_sim.h).
+// the frame buffer back (pipeline_sim.h; the runs in pipeline_sim_run.h).
 #include "pipeline_sim.h"
 
-#include <chrono>
-#include <memory>
-#include <sstream>
+#include <string>
 
 #include "core/report_ids.h"
-#include "core/trace.h"
-#include "pipeline_bench.h"
-#include "tuned/a_gen_tuned.h"
-#include "ua22802/a_gen_rom.h"
-#include "ua60553/a_gen_linear.h"
+#include "pipeline_sim_run.h"
 
 namespace shading::pipeline {
-
-namespace {
-
-frame empty_frame(const plan& p) {
-    frame f;
-    f.width = p.width;
-    f.height = p.height;
-    const std::size_t n = std::size_t(p.width) * p.height;
-    f.px.assign(n, rgb_codes{});
-    f.covered.assign(n, 0);
-    f.degree.assign(n, 0);
-    f.log2_len.assign(n, 0);
-    f.zone.assign(n, 0);
-    return f;
-}
-
-// A watchdog far beyond any plan: 12 clocks per job plus 6 per pixel, and the frame load.
-sc_core::sc_time time_limit(const plan& p) {
-    uint64_t clocks = 100;
-    for (const auto& j : p.jobs) clocks += 12 + 6ull * std::min(j.len, 64u);
-    return pipeline_period() * static_cast<double>(clocks);
-}
-
-template <class AGen, pipe_eval EVAL>
-sim_result run(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
-               const typename AGen::config& gen, const sim_options& o) {
-    sim_result res;
-    res.period_ns = pipeline_period().to_seconds() * 1e9;
-    res.f = empty_frame(p);
-    auto bench = std::make_unique<pipeline_bench<AGen, EVAL>>("tb", p, k, dev, c, gen, o.progress);
-    std::unique_ptr<vcd_file> vcd;
-    if (!o.vcd_path.empty()) {
-        std::string path = o.vcd_path;
-        if (path.size() > 4 && path.compare(path.size() - 4, 4, ".vcd") == 0) path.resize(path.size() - 4);
-        vcd = std::make_unique<vcd_file>(path);
-        vcd->trace(*bench);
-    }
-    const auto t0 = std::chrono::steady_clock::now();
-    sc_core::sc_start(time_limit(p));
-    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!bench->finished()) {
-        SC_REPORT_WARNING(msg::mismatch, "simulate_frame: the pipeline did not drain within the watchdog's time");
-    }
-    bench->checker.finish();
-    res.mismatches = bench->checker.mismatches();
-    res.write_order = bench->checker.order();
-    res.jobs_dropped = bench->checker.dropped();
-    res.clocks = static_cast<uint64_t>(bench->last_write() / pipeline_period());
-    res.frame_load_clocks = bench->src.frame_loaded_at_edge();
-    for (const auto& j : p.jobs) {
-        const uint8_t degree = j.m == 0 ? 1 : (j.deg2 ? 2 : 3);
-        for (unsigned i = 0; i < j.len; ++i) {
-            const unsigned x = j.x0 + i;
-            if (x >= p.width || j.y >= p.height) continue;
-            if (!bench->fb.written(x, j.y)) continue;
-            const std::size_t at = std::size_t(j.y) * p.width + x;
-            res.f.degree[at] = degree;
-            res.f.log2_len[at] = static_cast<uint8_t>(j.m);
-            res.f.zone[at] = j.zone;
-        }
-    }
-    for (unsigned yy = 0; yy < p.height; ++yy)
-        for (unsigned xx = 0; xx < p.width; ++xx) {
-            if (!bench->fb.written(xx, yy)) continue;
-            const std::size_t at = std::size_t(yy) * p.width + xx;
-            const auto& v = bench->fb.pixel(xx, yy);
-            res.f.px[at] = {v[0], v[1], v[2]};
-            res.f.covered[at] = 1;
-        }
-    // The bench stays elaborated (SystemC cannot tear a design down): released with the process.
-    bench.release();
-    return res;
-}
-
-template <pipe_eval EVAL>
-sim_result run_device(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
-                      const sim_options& o) {
-    switch (dev.device) {
-        case scene::specular_device::patent: return run<a_gen_linear, EVAL>(p, k, dev, c, ua60553::patent, o);
-        case scene::specular_device::minimax: return run<a_gen_tuned, EVAL>(p, k, dev, c, ua60553::minimax, o);
-        case scene::specular_device::rom_matched:
-            return run<a_gen_tuned, EVAL>(p, k, dev, c, ua60553::rom_matched, o);
-        case scene::specular_device::ua22802:
-            return run<a_gen_rom, EVAL>(p, k, dev, c, a_gen_rom::default_config(), o);
-    }
-    return {};
-}
-
-}  // namespace
 
 double sim_period_ns() { return pipeline_period().to_seconds() * 1e9; }
 
@@ -116,13 +21,13 @@ sim_result simulate_frame(const plan& p, const frame_constants& k, const scene::
               ", outside " + std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max);
     if (!bad.empty()) {
         sim_result r;
-        r.f = empty_frame(p);
+        r.f = sim_detail::empty_frame(p);
         r.mismatches = p.pixels;
         SC_REPORT_ERROR(msg::config, bad.c_str());
         return r;
     }
-    return c.eval == evaluator::horner ? run_device<pipe_eval::horner>(p, k, dev, c, o)
-                                       : run_device<pipe_eval::fd>(p, k, dev, c, o);
+    return c.eval == evaluator::horner ? sim_detail::run_device<pipe_eval::horner>(p, k, dev, c, o)
+                                       : sim_detail::run_device<pipe_eval::fd>(p, k, dev, c, o);
 }
 
 }  // namespace shading::pipeline

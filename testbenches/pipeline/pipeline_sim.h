@@ -17,6 +17,9 @@ namespace shading::pipeline {
 struct sim_options {
     std::string vcd_path;  // empty: no trace; else a VCD there (".vcd" appended unless given)
     std::function<void(std::size_t done, std::size_t total)> progress;  // pixels written / expected
+    // For the tests of the verdict: the golden codes of the k-th pixel written are corrupted (one
+    // LSB of R), so the checker must count exactly one mismatch.
+    std::size_t inject_mismatch = SIZE_MAX;
 };
 
 struct sim_result {

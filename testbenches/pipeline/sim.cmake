@@ -1,7 +1,8 @@
 # The SystemC shading pipeline (modules/pipeline/): simulate_frame() for the render program and the
 # tests (pipeline_sim.h), and its GoogleTest suite (one elaboration per test process).
 if(TARGET shading_pipeline)
-  add_library(shading_pipeline_sim STATIC ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim.cpp)
+  add_library(shading_pipeline_sim STATIC ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim.cpp
+              ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_horner.cpp ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_fd.cpp)
   target_include_directories(shading_pipeline_sim PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(shading_pipeline_sim PUBLIC shading_pipeline shading_modules shading_ua22802 shading_tb_common)
 endif()

@@ -6,6 +6,7 @@
 // as <Suite.Test>.vcd.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -218,6 +219,17 @@ TEST_P(PipelineSimSaturate, SaturatingSamplesAndClampedPixels) {
 INSTANTIATE_TEST_SUITE_P(Evaluators, PipelineSimSaturate, ::testing::Values(evaluator::horner, evaluator::fd),
                          [](const ::testing::TestParamInfo<evaluator>& i) { return std::string(evaluator_name(i.param)); });
 
+// The checker can fail: one corrupted golden pixel is one mismatch, reported (shading/mismatch).
+TEST(PipelineSimHand, CheckerCatchesOneWrongPixel) {
+    tb::report_log::get().expect(msg::mismatch);
+    const plan p = make_hand_plan(16, 1, {job(0, 0, 4, 16, false)});
+    sim_options o = traced();
+    o.inject_mismatch = 5;
+    const sim_result r = simulate_frame(p, hand_constants(), patent, config(evaluator::horner), o);
+    EXPECT_EQ(r.mismatches, 1u);
+    EXPECT_EQ(tb::report_log::get().count(msg::mismatch), 1u);
+}
+
 // ---- Clocks per pixel, as designed ----
 
 // Fill latency, from the rising edge where the geometry side sees the frame load taken to the edge
@@ -317,3 +329,68 @@ TEST(PipelineSimBad, FdBuiltForAnImpossibleM) {
     EXPECT_EQ(r.write_order.size(), 0u);
     EXPECT_EQ(r.mismatches, 1u);
 }
+
+// ---- Small renders: make_plan on the built-in scenes, every device, both evaluators ----
+
+struct render_case {
+    const char* scene;
+    unsigned size;
+    scene::specular_device device;
+    evaluator e;
+};
+void PrintTo(const render_case& c, std::ostream* os) {
+    *os << c.scene << c.size << " " << scene::device_name(c.device) << " " << evaluator_name(c.e);
+}
+class PipelineSimRender : public ::testing::TestWithParam<render_case> {};
+
+// The SystemC frame equals golden_frame bit for bit (and the bench's own per-job check finds no
+// mismatch); every planned pixel is written once, in the plan's order (line by line, left to
+// right); the clocks are the evaluator's own (hardware_ops) plus the fill and the clocks the
+// evaluators wait for the sample stage, which the plan's mix of exact pixels and short intervals
+// bounds.
+TEST_P(PipelineSimRender, BitExactAgainstTheGoldenFrame) {
+    const auto rc = GetParam();
+    const scene::world w = scene::builtin_scene(rc.scene, SHADING_SOURCE_DIR, rc.size, rc.size);
+    const scene::rasterised r = scene::rasterise(w);
+    const frame_constants k = frame_constants_of(w);
+    scene::device_config dev;
+    dev.device = rc.device;
+    plan_config c;
+    c.eval = rc.e;
+    c.m = std::string(rc.scene) == "head" ? 4 : 3;
+    c.degree = std::string(rc.scene) == "head" ? degree_policy::zones : degree_policy::adaptive;
+    const plan p = make_plan(r, k, dev, c);
+    ASSERT_GT(p.pixels, 100u);
+    std::size_t quad = 0, exact = 0;
+    for (const auto& j : p.jobs) {
+        quad += j.deg2;
+        exact += j.m == 0;
+    }
+    const sim_result s = simulate_frame(p, k, dev, c, traced());
+    EXPECT_EQ(s.mismatches, 0u);
+    EXPECT_EQ(s.write_order, job_order(p));
+    expect_golden_frame(s, p, k, dev, c);
+    const hardware_counts hw = hardware_ops(p, c);
+    EXPECT_GE(s.clocks, s.frame_load_clocks + hw.clocks);
+    // Waits: at most the sample stage's 10 clocks per job beyond the evaluator's clocks for it.
+    EXPECT_LE(s.clocks, s.frame_load_clocks + fill_clocks + hw.clocks + 10 * p.jobs.size());
+    std::printf("%s%u %s %s: %zu pixels, %zu jobs (%zu quadratic, %zu exact), %llu clocks (evaluator %llu), "
+                "%.2f clocks/pixel, %.0f pixels/s\n",
+                rc.scene, rc.size, scene::device_name(rc.device), evaluator_name(rc.e), p.pixels, p.jobs.size(), quad,
+                exact, (unsigned long long)s.clocks, (unsigned long long)hw.clocks, double(s.clocks) / p.pixels,
+                p.pixels / s.seconds);
+}
+
+std::vector<render_case> render_cases() {
+    std::vector<render_case> v;
+    for (auto sc : {std::pair<const char*, unsigned>{"sphere", 32}, {"head", 48}})
+        for (auto d : {scene::specular_device::patent, scene::specular_device::minimax, scene::specular_device::rom_matched,
+                       scene::specular_device::ua22802})
+            for (auto e : {evaluator::horner, evaluator::fd}) v.push_back({sc.first, sc.second, d, e});
+    return v;
+}
+INSTANTIATE_TEST_SUITE_P(Scenes, PipelineSimRender, ::testing::ValuesIn(render_cases()),
+                         [](const ::testing::TestParamInfo<render_case>& i) {
+                             return std::string(i.param.scene) + std::to_string(i.param.size) + "_" +
+                                    scene::device_name(i.param.device) + "_" + evaluator_name(i.param.e);
+                         });
