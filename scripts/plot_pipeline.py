@@ -14,6 +14,9 @@ counted long operations -- multiplications, divisions, square roots -- per pixel
                 against Phong, and the best one at >= 3x fewer long operations than Phong. Our target
                 (NMSE <= 1e-5 with Phong's long ops / 3) and seed 004's claim (NMSE <= 1e-4) are drawn
                 as lines.
+A CSV over several n (render_pipeline --sweep --grid exponents) gives instead <stem>.png with the
+errors against n per device (the total against Phong beside the device BRDF's own error) and the
+table in <stem>_claims.txt.
 """
 import csv
 import os
@@ -47,6 +50,43 @@ def pareto(rows, key):
     return front
 
 
+def plot_exponents(rows, stem, devices):
+    """A sweep over n (--grid exponents): the errors against n per device, and a table of them."""
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+    table = ["device n nmse_interp nmse_phong nmse_brdf long_per_px ratio_long"]
+    for dev in devices:
+        sel = sorted((r for r in rows if r["device"] == dev), key=lambda r: int(r["n"]))
+        ns = [int(r["n"]) for r in sel]
+        line, = axes[1].plot(ns, [float(r["nmse_phong"]) for r in sel], "o-", label=f"{dev}: hardware vs Phong")
+        axes[1].plot(ns, [float(r["nmse_brdf"]) for r in sel], ":", color=line.get_color(),
+                     label=f"{dev}: device reference vs Phong")
+        axes[0].plot(ns, [max(float(r["nmse_interp"]), 1e-12) for r in sel], "o-", color=line.get_color(), label=dev)
+        for r in sel:
+            table.append(f"{dev} {r['n']} {float(r['nmse_interp']):.2e} {float(r['nmse_phong']):.2e} "
+                         f"{float(r['nmse_brdf']):.2e} {float(r['long_per_px']):.1f} {float(r['ratio_long']):.2f}")
+    axes[0].axhline(1e-5, color="tab:red", ls="--", lw=1, label="our target 1e-5")
+    axes[0].axhline(1e-4, color="tab:brown", ls="--", lw=1, label="seed 004: 1e-4")
+    axes[1].axhline(1e-4, color="tab:brown", ls="--", lw=1, label="seed 004: 1e-4")
+    axes[0].set_title("interpolation: hardware vs per-pixel device", fontsize=10)
+    axes[1].set_title("total: hardware vs exact Phong, and the device BRDF alone", fontsize=10)
+    for ax in axes:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("exponent n")
+        ax.set_ylabel("NMSE")
+        ax.grid(True, which="both", lw=0.3)
+        ax.legend(fontsize=7)
+    r0 = rows[0]
+    fig.suptitle(f"Shading pipeline against n: {r0['scene']} {r0['size']}x{r0['size']}, length {r0['length']}, "
+                 f"degree {r0['degree']}, {r0['eval']} (golden model)", fontsize=11)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    fig.savefig(stem + ".png", dpi=100)
+    with open(stem + "_claims.txt", "w") as f:
+        f.write("\n".join(table) + "\n")
+    print("\n".join(table))
+    print(f"plot_pipeline: wrote {stem}.png and {stem}_claims.txt")
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: plot_pipeline.py SWEEP_CSV")
@@ -57,6 +97,8 @@ def main():
         sys.exit(f"plot_pipeline: {path} has no rows")
     stem = os.path.splitext(path)[0]
     devices = sorted({r["device"] for r in rows})
+    if len({r["n"] for r in rows}) > 1:
+        return plot_exponents(rows, stem, devices)
     phong_long = float(rows[0]["phong_long_per_px"])
     fig, axes = plt.subplots(len(devices), 2, figsize=(15, 4.6 * len(devices)), squeeze=False)
     fronts = []

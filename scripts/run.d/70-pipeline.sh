@@ -4,9 +4,10 @@
 # each through the golden model and the SystemC pipeline (which must agree bit for bit), PNGs and
 # report.md/report.json in $SHADING_OUT/pipeline/<case>/; then the small sweep over interval and
 # degree policies, evaluators and two devices on the golden model (parallel processes), its CSV and
-# plot in $SHADING_OUT/pipeline/sweep/. One summary row per render: samples = covered pixels,
-# mismatches = SystemC vs golden, max_error = the interpolation's NMSE (vs per-pixel shading through
-# the same device), cycles_per_pixel = simulated clocks per pixel.
+# plot in $SHADING_OUT/pipeline/sweep/, and every device against n in $SHADING_OUT/pipeline/exponents/.
+# One summary row per render: samples = covered pixels, mismatches = SystemC vs golden, max_error =
+# the interpolation's NMSE (vs per-pixel shading through the same device), cycles_per_pixel =
+# simulated clocks per pixel.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin="$SHADING_BIN/render_pipeline"
@@ -49,3 +50,6 @@ render zones_fd --degree zones --eval fd --m 3 --device rom_matched
 # The small sweep at the same size on the golden model (bit-exact to SystemC by the tests).
 "$bin" --sweep --scene head --size "$size" --grid small --out "$out/sweep"
 /usr/bin/python3 scripts/plot_pipeline.py "$out/sweep/sweep.csv"
+# The total error against Phong for every device and n (2..500) with adaptive length and degree.
+"$bin" --sweep --scene head --size "$size" --grid exponents --length adaptive --degree adaptive --out "$out/exponents"
+/usr/bin/python3 scripts/plot_pipeline.py "$out/exponents/sweep.csv"

@@ -52,7 +52,11 @@ if(TARGET shading_pipeline)
   add_test(NAME pipeline.sweep.tiny
            COMMAND sh -c "\"$0\" --sweep --scene head --size 32 --device patent --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 37"
                    $<TARGET_FILE:render_pipeline> ${rp_out}/sweep)
-  list(APPEND rp_tests pipeline.sweep.tiny)
+  # The exponents grid: one device x 8 exponents.
+  add_test(NAME pipeline.sweep.exponents
+           COMMAND sh -c "\"$0\" --sweep --grid exponents --scene head --size 24 --device minimax --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 9 && grep -q ',500,minimax,' \"$1/sweep.csv\""
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/sweep_n)
+  list(APPEND rp_tests pipeline.sweep.tiny pipeline.sweep.exponents)
   # Bad input: a clear message and exit status 1, nothing written. Each case: name, then arguments.
   set(rp_bad
       "m0|--m 0"

@@ -674,11 +674,23 @@ struct sweep_point {
     std::string device, length, degree, eval;
     unsigned m = 4;
     double length_tol = 0.5, degree_tol = 0.25;
+    int n = -1;  // -1: --n or the scene's
 };
 
-std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& only_device) {
-    std::vector<std::string> devices = grid == "full" ? scene::device_names() : std::vector<std::string>{"patent", "minimax"};
+// small: two devices x the degree policies x fixed m = 3..5 (Horner, FD) and three adaptive-length
+// tolerances; full: every device, m = 2..6, five tolerances, three adaptive-degree tolerances;
+// exponents: every device x n = 2..500 with the command line's own plan settings (the total error
+// against Phong per device and n).
+std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& only_device, const options& o) {
+    std::vector<std::string> devices = grid != "small" ? scene::device_names() : std::vector<std::string>{"patent", "minimax"};
     if (!only_device.empty()) devices = {only_device};
+    if (grid == "exponents") {
+        std::vector<sweep_point> g;
+        for (const auto& d : devices)
+            for (int n : {2, 5, 10, 20, 50, 100, 200, 500})
+                g.push_back({d, o.length, o.degree, o.eval, o.pc.m, o.pc.length_tol, o.pc.degree_tol, n});
+        return g;
+    }
     const std::vector<unsigned> ms = grid == "full" ? std::vector<unsigned>{2, 3, 4, 5, 6} : std::vector<unsigned>{3, 4, 5};
     const std::vector<double> ltols = grid == "full" ? std::vector<double>{0.125, 0.25, 0.5, 1.0, 2.0}
                                                      : std::vector<double>{0.25, 0.5, 1.0};
@@ -706,7 +718,7 @@ std::string num(double v) {
 
 int run_sweep(const options& o) {
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<sweep_point> grid = sweep_grid(o.grid, !o.device_given || o.device == "all" ? "" : o.device);
+    const std::vector<sweep_point> grid = sweep_grid(o.grid, !o.device_given || o.device == "all" ? "" : o.device, o);
     const unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
     // Checked once here, so a bad scene is one message and not one per child.
     {
@@ -735,7 +747,8 @@ int run_sweep(const options& o) {
                                       o.pc.surface_breaks ? "--surface-breaks" : "--no-surface-breaks", "--no-sim", "--no-images", "--md", "",
                                       "--json", "report.json", "--out", (tmp / std::to_string(i)).string()};
         if (!o.light.empty()) a.insert(a.end(), {"--light", o.light});
-        if (o.n != -1) a.insert(a.end(), {"--n", std::to_string(o.n)});
+        const int n = sp.n != -1 ? sp.n : o.n;
+        if (n != -1) a.insert(a.end(), {"--n", std::to_string(n)});
         if (!o.kd.empty()) a.insert(a.end(), {"--kd", o.kd});
         if (!o.ks.empty()) a.insert(a.end(), {"--ks", o.ks});
         if (!o.ambient.empty()) a.insert(a.end(), {"--ambient", o.ambient});
@@ -922,7 +935,8 @@ int main(int argc, char* argv[]) {
         ->check(CLI::PositiveNumber);
     app.add_flag("--sweep", o.sweep, "run the grid of configurations on the golden model, one CSV (--csv)");
     app.add_option("--jobs", o.jobs, "--sweep: parallel processes (default: the hardware's cores)");
-    app.add_option("--grid", o.grid, "--sweep: small or full")->check(CLI::IsMember({"small", "full"}));
+    app.add_option("--grid", o.grid, "--sweep: small, full, or exponents (every device x n = 2..500, this command's plan settings)")
+        ->check(CLI::IsMember({"small", "full", "exponents"}));
     app.add_option("--csv", o.csv, "--sweep: CSV path (default: <out>/sweep.csv)");
     app.add_flag("--inject-mismatch", o.inject_mismatch, "")->group("");
     bool sim_available = false;
