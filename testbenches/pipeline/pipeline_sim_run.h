@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -49,6 +50,11 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
     if (!o.vcd_path.empty()) {
         std::string path = o.vcd_path;
         if (path.size() > 4 && path.compare(path.size() - 4, 4, ".vcd") == 0) path.resize(path.size() - 4);
+        // Its folder is created if missing (as SHADING_TRACE's, core/trace.h); if that fails, SystemC's
+        // own error for the unopenable file names the path.
+        std::error_code ignored;
+        if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty())
+            std::filesystem::create_directories(dir, ignored);
         vcd = std::make_unique<vcd_file>(path);
         vcd->trace(*bench);
     }
