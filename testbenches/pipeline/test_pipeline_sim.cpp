@@ -13,6 +13,7 @@
 
 #include "common/report_log.h"
 #include "common/sim_guard.h"
+#include "common/vcd_names.h"
 #include "core/report_ids.h"
 #include "pipeline_sim.h"
 
@@ -394,3 +395,36 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PipelineSimRender, ::testing::ValuesIn(render_c
                              return std::string(i.param.scene) + std::to_string(i.param.size) + "_" +
                                     scene::device_name(i.param.device) + "_" + evaluator_name(i.param.e);
                          });
+
+// ---- The waveform view ----
+
+// traces/pipeline.gtkw is hand-written for the VCD this test writes (SHADING_TRACE=traces: to
+// traces/pipeline.vcd, else a temporary folder): every net it lists exists, and a user sees it at
+// first sight as intended (vcd_names.h, view_problems): dump file beside the view, marker inside the
+// opening window and off every edge, every bus a number in its format, the pixel stream on top.
+TEST(PipelineSimView, GtkwaveViewMatchesItsVcd) {
+    const char* env = std::getenv("SHADING_TRACE");
+    const std::string dir = env != nullptr && *env != '\0' ? std::string(env) : ::testing::TempDir();
+    const plan p = make_hand_plan(8, 1, {job(0, 0, 2, 4, false), job(0, 4, 0, 1, false)});
+    sim_options o;
+    o.vcd_path = dir + "/pipeline";
+    const sim_result r = simulate_frame(p, hand_constants(), patent, config(evaluator::horner), o);
+    EXPECT_EQ(r.mismatches, 0u);
+    const std::string gtkw = tb::source_path("traces/pipeline.gtkw"), vcd = dir + "/pipeline.vcd";
+    const auto declared = tb::vcd_declared(vcd);
+    const auto shown = tb::gtkw_listed(gtkw);
+    EXPECT_GE(shown.size(), 20u);
+    for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+    tb::view_formats f;
+    for (const char* s : {"tb.px_r", "tb.px_g", "tb.px_b", "tb.dut.smp_r.colour"}) f[s] = colour_fmt;
+    f["tb.px_x"] = f["tb.px_y"] = qfmt{16, false, 0};
+    f["tb.dut.smp_sel"] = qfmt{2, false, 0};
+    f["tb.dut.in18_cos"] = spec::cos_fmt;
+    f["tb.dut.out25_r"] = spec::out_fmt;
+    for (const char* s : {"tb.dut.ca_r", "tb.dut.cd_r", "tb.dut.horner_r.i_t"}) f[s] = interp::coef_fmt;
+    f["tb.dut.t"] = interp::t_fmt;
+    f["tb.dut.horner_r.horner.step"] = qfmt{3, false, 0};
+    const auto problems = tb::view_problems(gtkw, vcd, "pipeline", f,
+                                            {"tb.px_valid", "tb.px_x", "tb.px_y", "tb.px_r", "tb.px_g", "tb.px_b"});
+    EXPECT_TRUE(problems.empty()) << tb::joined(problems);
+}
