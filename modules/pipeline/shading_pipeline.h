@@ -3,6 +3,8 @@
 // instantiates and wires.
 //   job registers  rg_y, rg_x0, rg_len, rg_m, rg_deg2 and the samples' N.H / N.L codes
 //                  rg_nh1..4, rg_nl1..4, latched where ld_job falls (the edge that takes a job)
+//   rg_dy, rg_dx0, rg_dlen, rg_dm, rg_ddeg2  the descriptor of the interval in the sample
+//                  registers (ld_d, at its last sample's latch), read by the pixel controller
 //   mx_nh, mx_nl   the sample being formed (smp_sel)
 //   dev            the specular device of UA 60553, Fig. 1, with the generator of `a` AGen
 //                  (a_gen_linear: the patent's constants; a_gen_tuned: minimax / rom_matched;
@@ -81,7 +83,7 @@ public:
     sc_core::sc_out<sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
 
     // Nets.
-    sc_core::sc_signal<bool> ld_job{"ld_job"}, ld_k{"ld_k"}, samples_ready{"samples_ready"}, ld_e{"ld_e"};
+    sc_core::sc_signal<bool> ld_job{"ld_job"}, ld_d{"ld_d"}, ld_k{"ld_k"}, samples_ready{"samples_ready"}, ld_e{"ld_e"};
     sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
     sc_core::sc_signal<bool> out29_valid{"out29_valid"};
     sc_core::sc_signal<bool> ld_i1{"ld_i1"}, ld_i2{"ld_i2"}, ld_i3{"ld_i3"}, ld_i4{"ld_i4"};
@@ -89,6 +91,10 @@ public:
     sc_core::sc_signal<len_t> len{"len"};
     sc_core::sc_signal<m_t> m{"m"};
     sc_core::sc_signal<bit_t> deg2_job{"deg2_job"};
+    sc_core::sc_signal<coord_t> d_y{"d_y"}, d_x0{"d_x0"};  // the descriptor of the interval in I1..I4
+    sc_core::sc_signal<len_t> d_len{"d_len"};
+    sc_core::sc_signal<m_t> d_m{"d_m"};
+    sc_core::sc_signal<bit_t> d_deg2{"d_deg2"};
     sc_core::sc_signal<cos_t> nh1{"nh1"}, nh2{"nh2"}, nh3{"nh3"}, nh4{"nh4"}, nl1{"nl1"}, nl2{"nl2"}, nl3{"nl3"},
         nl4{"nl4"};
     sc_core::sc_signal<sample_ctrl::sel_t> smp_sel{"smp_sel"};
@@ -112,6 +118,9 @@ public:
     reg<16> rg_y, rg_x0, rg_len;
     reg<sample_ctrl::m_bits> rg_m;
     reg<1> rg_deg2;
+    reg<16> rg_dy, rg_dx0, rg_dlen;
+    reg<sample_ctrl::m_bits> rg_dm;
+    reg<1> rg_ddeg2;
     reg<WCOS> rg_nh1, rg_nh2, rg_nh3, rg_nh4, rg_nl1, rg_nl2, rg_nl3, rg_nl4;
     mux<WCOS, 4> mx_nh, mx_nl;
     specular_device<AGen> dev;
@@ -128,7 +137,8 @@ public:
                      interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4, const block_delays& bd = {},
                      const interp_delays& dl = {})
         : sc_module(name), rg_y("rg_y", dl.reg), rg_x0("rg_x0", dl.reg), rg_len("rg_len", dl.reg),
-          rg_m("rg_m", dl.reg), rg_deg2("rg_deg2", dl.reg), rg_nh1("rg_nh1", dl.reg), rg_nh2("rg_nh2", dl.reg),
+          rg_m("rg_m", dl.reg), rg_deg2("rg_deg2", dl.reg), rg_dy("rg_dy", dl.reg), rg_dx0("rg_dx0", dl.reg),
+          rg_dlen("rg_dlen", dl.reg), rg_dm("rg_dm", dl.reg), rg_ddeg2("rg_ddeg2", dl.reg), rg_nh1("rg_nh1", dl.reg), rg_nh2("rg_nh2", dl.reg),
           rg_nh3("rg_nh3", dl.reg), rg_nh4("rg_nh4", dl.reg), rg_nl1("rg_nl1", dl.reg), rg_nl2("rg_nl2", dl.reg),
           rg_nl3("rg_nl3", dl.reg), rg_nl4("rg_nl4", dl.reg), mx_nh("mx_nh", dl.mux), mx_nl("mx_nl", dl.mux),
           dev("dev", mode, gen, bd), rg_kd_r("rg_kd_r", dl.reg), rg_kd_g("rg_kd_g", dl.reg), rg_kd_b("rg_kd_b", dl.reg),
@@ -143,6 +153,13 @@ public:
         rg_len.ctl(ld_job); rg_len.d(in_len); rg_len.q(len);
         rg_m.ctl(ld_job); rg_m.d(in_m); rg_m.q(m);
         rg_deg2.ctl(ld_job); rg_deg2.d(in_deg2); rg_deg2.q(deg2_job);
+        // Descriptor registers: the job's y, x0, len, m, deg2 travel with its samples (ld_d falls at
+        // the last sample's latch), so the job registers are free for the next job.
+        rg_dy.ctl(ld_d); rg_dy.d(y); rg_dy.q(d_y);
+        rg_dx0.ctl(ld_d); rg_dx0.d(x0); rg_dx0.q(d_x0);
+        rg_dlen.ctl(ld_d); rg_dlen.d(len); rg_dlen.q(d_len);
+        rg_dm.ctl(ld_d); rg_dm.d(m); rg_dm.q(d_m);
+        rg_ddeg2.ctl(ld_d); rg_ddeg2.d(deg2_job); rg_ddeg2.q(d_deg2);
         reg<WCOS>* rnh[] = {&rg_nh1, &rg_nh2, &rg_nh3, &rg_nh4};
         reg<WCOS>* rnl[] = {&rg_nl1, &rg_nl2, &rg_nl3, &rg_nl4};
         sc_core::sc_in<cos_t>* pnh[] = {&in_nh1, &in_nh2, &in_nh3, &in_nh4};
@@ -198,7 +215,7 @@ public:
 
         ctl_sample.clk(clk); ctl_sample.start(start); ctl_sample.load_frame(load_frame);
         ctl_sample.len(len); ctl_sample.m(m); ctl_sample.deg2(deg2_job); ctl_sample.ld_e(ld_e);
-        ctl_sample.ready(ready); ctl_sample.ld_job(ld_job);
+        ctl_sample.ready(ready); ctl_sample.ld_job(ld_job); ctl_sample.ld_d(ld_d);
         ctl_sample.ctl15(ctl15); ctl_sample.ctl17(ctl17); ctl_sample.ctl20(ctl20); ctl_sample.ctl22(ctl22);
         ctl_sample.ctl24(ctl24); ctl_sample.ld_k(ld_k);
         ctl_sample.smp_sel(smp_sel);
@@ -206,15 +223,15 @@ public:
         ctl_sample.samples_ready(samples_ready);
 
         ctl_pixel.clk(clk); ctl_pixel.samples_ready(samples_ready);
-        ctl_pixel.y(y); ctl_pixel.x0(x0); ctl_pixel.deg2_in(deg2_job);
+        ctl_pixel.y(d_y); ctl_pixel.x0(d_x0); ctl_pixel.deg2_in(d_deg2);
         ctl_pixel.ld_e(ld_e); ctl_pixel.start(ev_start); ctl_pixel.deg_sel(deg_sel);
         ctl_pixel.px_x(px_x); ctl_pixel.px_y(px_y);
         if constexpr (horner) {
-            ctl_pixel.len(len); ctl_pixel.m(m);
+            ctl_pixel.len(d_len); ctl_pixel.m(d_m);
             ctl_pixel.busy(ev_busy[0]); ctl_pixel.done(ev_done[0]);
             ctl_pixel.deg2(deg2); ctl_pixel.t(t);
         } else {
-            ctl_pixel.len_in(len);
+            ctl_pixel.len_in(d_len);
             ctl_pixel.valid(ev_done[0]); ctl_pixel.last(ev_busy[0]);
             ctl_pixel.len(ev_len);
         }

@@ -241,7 +241,7 @@ constexpr uint64_t fill_clocks = 12;
 
 // Horner: 6 clocks per cubic pixel and 4 per quadratic one (hardware_ops' count), back to back
 // across intervals and exact pixels: the run takes that plus the fill latency, whatever the number
-// of intervals. (The sample stage needs 10 clocks per cubic job, 8 per quadratic, 4 per exact
+// of intervals. (The sample stage needs 8 clocks per cubic job, 6 per quadratic, 2 per exact
 // pixel: here it always has the next interval ready in time.)
 TEST(PipelineSimClocks, HornerBackToBack) {
     const auto k = hand_constants();
@@ -259,8 +259,8 @@ TEST(PipelineSimClocks, HornerBackToBack) {
     EXPECT_EQ(r.clocks, r.frame_load_clocks + fill_clocks + hw.clocks) << "frame loaded at clock " << r.frame_load_clocks;
 }
 
-// An exact pixel after a short cubic interval: the sample stage's 10 clocks for the four samples
-// are more than the exact pixel's 6, so the Horner units wait 4 clocks.
+// A short cubic interval after an exact pixel: the sample stage's 8 clocks for the four samples are
+// more than the exact pixel's 6, so the Horner units wait 2 clocks.
 TEST(PipelineSimClocks, HornerWaitsForASlowSampleStage) {
     const auto k = hand_constants();
     const plan p = make_hand_plan(8, 1, {job(0, 0, 0, 1, false), job(0, 1, 2, 4, false)});
@@ -269,10 +269,10 @@ TEST(PipelineSimClocks, HornerWaitsForASlowSampleStage) {
     const sim_result r = simulate_frame(p, k, patent, c, traced());
     EXPECT_EQ(r.mismatches, 0u);
     EXPECT_EQ(hw.clocks, 5u * 6);
-    // The exact pixel's fill is 6 clocks shorter (one sample, not four); the cubic's samples are
-    // ready 10 clocks after the exact pixel's, so its first pixel is taken 10 clocks after the exact
-    // pixel, not 6: a wait of 4 clocks.
-    EXPECT_EQ(r.clocks, r.frame_load_clocks + (fill_clocks - 6) + 10 + 4 * 6);
+    // The exact pixel's fill is 6 clocks shorter (one sample, not four); the cubic job is taken at
+    // the exact pixel's sample latch, checked a clock later, and its four samples take 8 clocks, so
+    // its first pixel is taken 8 clocks after the exact pixel, not 6: a wait of 2 clocks.
+    EXPECT_EQ(r.clocks, r.frame_load_clocks + (fill_clocks - 6) + 8 + 4 * 6);
 }
 
 // Forward differences: one pixel per clock while the sample stage keeps up (2^4 pixels per
