@@ -23,6 +23,7 @@
 #include "core/timing_graph.h"
 #include "formats/interp_formats.h"
 #include "interp/fd_ctrl.h"
+#include "interp/fd_setup.h"
 #include "interp/interp_delays.h"
 #include "monitors/phase_checker.h"
 
@@ -33,8 +34,7 @@ class fd_eval : public sc_core::sc_module {
     static_assert(M >= interp::m_min && M <= interp::m_max, "interval of 2^M pixels, M in 2..6");
     static constexpr unsigned WC = interp::coef_fmt.width;  // 32
     static constexpr unsigned WF = interp::fd_fmt.width;    // 56
-    static constexpr int S = interp::fd_fmt.frac - interp::coef_fmt.frac;  // 18: Q.16 -> Q.34
-    static constexpr int SM = static_cast<int>(M);
+    static constexpr int S = fd_setup::align;  // 18: Q.16 -> Q.34
     using coef_t = sc_dt::sc_uint<WC>;
     using fd_t = sc_dt::sc_uint<WF>;
 
@@ -59,12 +59,9 @@ public:
 
     // Set-up: shifts and adds of the Q16.16 coefficients onto Q22.34 (inputs: 0 = A, 1 = B, 2 = C).
     shifter<WC, WF, true> setup_p{"setup_p", S};  // D: Q16.16 -> Q22.34
-    shift_add_network<WC, WF, true> setup_d1{"setup_d1", 3,
-        {{0, S - 3 * SM, false}, {1, S - 2 * SM, false}, {2, S - SM, false}}};          // A/N^3 + B/N^2 + C/N
-    shift_add_network<WC, WF, true> setup_d2{"setup_d2", 2,
-        {{0, S - 3 * SM + 2, false}, {0, S - 3 * SM + 1, false}, {1, S - 2 * SM + 1, false}}};  // (4A + 2A)/N^3 + 2B/N^2
-    shift_add_network<WC, WF, true> setup_d3{"setup_d3", 1,
-        {{0, S - 3 * SM + 2, false}, {0, S - 3 * SM + 1, false}}};                      // (4A + 2A)/N^3
+    shift_add_network<WC, WF, true> setup_d1{"setup_d1", 3, fd_setup::d1_terms(M)};  // A/N^3 + B/N^2 + C/N
+    shift_add_network<WC, WF, true> setup_d2{"setup_d2", 2, fd_setup::d2_terms(M)};  // (4A + 2A)/N^3 + 2B/N^2
+    shift_add_network<WC, WF, true> setup_d3{"setup_d3", 1, fd_setup::d3_terms(M)};  // (4A + 2A)/N^3
 
     mux<WF, interp::fd_mx_inputs> mx_p, mx_d1, mx_d2, mx_d3;
     reg<WF> rg_p, rg_d1, rg_d2, rg_d3;
