@@ -118,10 +118,10 @@ struct plan_config {
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
     double depth_step = 0.02;              // world units: a depth jump that ends a segment (raster.h)
     bool surface_breaks = true;            // also end segments where neighbours' triangles share no vertex (a fold)
-    evaluator eval = evaluator::horner;    // fd needs length = fixed (one m per evaluator)
+    evaluator eval = evaluator::horner;    // fd: fixed length keeps one m (tails exact); adaptive as Horner
 };
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
-// fd with adaptive length, a negative tolerance).
+// a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
 void validate(const plan_config& c);
 
 // A frame's intervals, line by line, left to right, and what the geometry side spent on them:

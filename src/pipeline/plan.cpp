@@ -42,9 +42,8 @@ void validate(const plan_config& c) {
     if (!(c.length_tol >= 0.0)) fail("the length tolerance must be >= 0 (8-bit levels)");
     if (!(c.degree_tol >= 0.0)) fail("the degree tolerance must be >= 0 (8-bit levels)");
     if (!(c.depth_step > 0.0)) fail("the depth step must be > 0 (world units)");
-    // The forward-difference evaluator is set up for one N per frame (interp_line_unit).
-    if (c.eval == evaluator::fd && c.length != length_policy::fixed)
-        fail("the forward-difference evaluator needs a fixed interval length (length policy 'fixed')");
+    // Any evaluator takes either length policy: fd_eval_var sets the forward differences up per
+    // interval for every m in m_min..m_max, as the Horner unit takes any t.
 }
 
 namespace {
@@ -231,8 +230,9 @@ private:
 
     // Pixels xa..xb (inclusive) with no discontinuity inside.
     void segment(line_geometry& lg, unsigned y, unsigned xa, unsigned xb) {
-        // The forward-difference evaluator is built for one m (fd_eval<M>): its intervals are all 2^m,
-        // what is left of a segment is exact pixels.
+        // A fixed length with forward differences keeps one m per frame, tails exact: the SystemC
+        // pipeline's fd channel is fd_eval<M> (one m) until fd_eval_var is wired in. Adaptive length
+        // takes m_min..m_max for either evaluator (fd_eval_var), the same plan as for Horner.
         const unsigned lowest = c_.length != length_policy::fixed ? c_.m_min
                                 : c_.eval == evaluator::fd     ? c_.m
                                                                : interp::m_min;

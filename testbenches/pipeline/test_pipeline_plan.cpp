@@ -302,8 +302,15 @@ TEST(PipelinePlan, ValidateRejectsBadConfigs) {
     expect_error(c, "depth step");
     c = plan_config{};
     c.eval = evaluator::fd;
+    // fd with adaptive length is fine (fd_eval_var: every m in m_min..m_max), over the units' range;
+    // outside it, it is refused as for Horner.
     c.length = length_policy::adaptive;
-    expect_error(c, "forward-difference");
+    c.m_min = interp::m_min;
+    c.m_max = interp::m_max;
+    EXPECT_NO_THROW(validate(c));
+    c.m_max = interp::m_max + 1;
+    expect_error(c, "outside the units' range");
+    c.m_max = interp::m_max;
     // fd with a fixed length is fine, quadratic or cubic; every m of the units' range is.
     c.length = length_policy::fixed;
     c.degree = degree_policy::quadratic;
@@ -334,8 +341,9 @@ TEST(PipelinePlan, FixedLengthTilesEverySegment) {
     }
 }
 
-// The forward-difference evaluator takes one m per frame: every interval is 2^m, tails are exact.
-TEST(PipelinePlan, ForwardDifferencesTakeOneLength) {
+// With a fixed length the forward-difference evaluator takes one m per frame: every interval is 2^m,
+// tails are exact (the SystemC pipeline's fd channel is still fd_eval<M>).
+TEST(PipelinePlan, ForwardDifferencesTakeOneLengthWhenFixed) {
     const auto& f = sphere();
     plan_config c = fixed(4);
     c.eval = evaluator::fd;
@@ -352,6 +360,29 @@ TEST(PipelinePlan, ForwardDifferencesTakeOneLength) {
     std::size_t exact_horner = 0;
     for (const auto& j : make_plan(f.r, f.k, patent, c).jobs) exact_horner += j.m == 0;
     EXPECT_LT(exact_horner, exact);
+}
+
+// With adaptive length the forward-difference evaluator (fd_eval_var) takes every m in m_min..m_max
+// as the Horner unit does: the same plan, job for job, with intervals of several lengths.
+TEST(PipelinePlan, ForwardDifferencesTakeEveryLengthWhenAdaptive) {
+    const auto& f = sphere();
+    plan_config c = adaptive_length(2, 5, 2.0);
+    c.eval = evaluator::fd;
+    const plan p = make_plan(f.r, f.k, patent, c);
+    expect_valid_plan(f.r, p, c);
+    c.eval = evaluator::horner;
+    const plan q = make_plan(f.r, f.k, patent, c);
+    ASSERT_EQ(p.jobs.size(), q.jobs.size());
+    std::set<unsigned> lengths;
+    for (std::size_t i = 0; i < p.jobs.size(); ++i) {
+        EXPECT_EQ(p.jobs[i].y, q.jobs[i].y);
+        EXPECT_EQ(p.jobs[i].x0, q.jobs[i].x0);
+        EXPECT_EQ(p.jobs[i].m, q.jobs[i].m);
+        EXPECT_EQ(p.jobs[i].len, q.jobs[i].len);
+        EXPECT_EQ(p.jobs[i].deg2, q.jobs[i].deg2);
+        if (p.jobs[i].m) lengths.insert(p.jobs[i].m);
+    }
+    EXPECT_GE(lengths.size(), 3u) << "intervals of several lengths";
 }
 
 // A segment of 22 pixels xa .. xa + 21 with m = 4: an interval of 16 at xa (samples at xa + 0, 4, 8,
