@@ -14,7 +14,8 @@
 //   smp_r/g/b      per channel: diffuse multiplier, adders, sample registers I1..I4, interval
 //                  registers, cubic and quadratic coefficient units (sample_channel.h)
 //   horner_r/g/b   per channel: degree-select multiplexers, the Fig. 4 Horner unit and the output
-//     or fd_r/g/b  clamp (horner_channel.h), or our forward differences (fd_channel.h)
+//     or fd_r/g/b  clamp (horner_channel.h), or our forward differences (fd_channel.h: fd_eval<M>
+//                  for one interval length, or fd_eval_var for any m per interval)
 //   ctl_sample     sample controller (falling edges; the geometry side's handshake, sample_ctrl.h)
 //   ctl_pixel      pixel controller (rising edges; horner_pixel_ctrl.h or fd_pixel_ctrl.h)
 // Pixel stream: at a rising edge of clk where px_valid = 1, px_r/g/b (Q8.8 codes) belong at
@@ -111,6 +112,7 @@ public:
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg_sel{"deg_sel"};
     sc_core::sc_signal<horner_channel::t_t> t{"t"};
     sc_core::sc_signal<fd_channel::len_t> ev_len{"ev_len"};
+    sc_core::sc_signal<fd_channel::m_t> ev_m{"ev_m"};
     // Horner: done, busy; forward differences: valid, last.
     rgb_nets<bool> ev_done{"ev_done", 3, rgb_net<bool>}, ev_busy{"ev_busy", 3, rgb_net<bool>};
 
@@ -132,7 +134,8 @@ public:
     sample_ctrl ctl_sample;
     pixel_ctrl ctl_pixel;
 
-    // fd_m: the interval length 2^fd_m the forward-difference evaluator is built for (ignored for Horner).
+    // fd_m: the interval length 2^fd_m the forward-difference evaluator is built for, 0 for any m per
+    // interval (fd_eval_var); ignored for Horner.
     shading_pipeline(const sc_core::sc_module_name& name, overflow_mode mode, const typename AGen::config& gen,
                      interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4, const block_delays& bd = {},
                      const interp_delays& dl = {})
@@ -207,7 +210,7 @@ public:
                 e.deg2(deg2); e.t(t);
                 e.done(ev_done[ch]); e.busy(ev_busy[ch]);
             } else {
-                e.len(ev_len);
+                e.len(ev_len); e.m(ev_m);
                 e.valid(ev_done[ch]); e.last(ev_busy[ch]);
             }
         }
@@ -231,7 +234,7 @@ public:
             ctl_pixel.busy(ev_busy[0]); ctl_pixel.done(ev_done[0]);
             ctl_pixel.deg2(deg2); ctl_pixel.t(t);
         } else {
-            ctl_pixel.len_in(d_len);
+            ctl_pixel.len_in(d_len); ctl_pixel.m_in(d_m); ctl_pixel.m(ev_m);
             ctl_pixel.valid(ev_done[0]); ctl_pixel.last(ev_busy[0]);
             ctl_pixel.len(ev_len);
         }

@@ -23,6 +23,10 @@ namespace shading::pipeline {
 
 inline sc_core::sc_time pipeline_period() { return sc_core::sc_time(20, sc_core::SC_NS); }
 
+// The m the forward-difference evaluator is built for: c.m with a fixed length, 0 (fd_eval_var, any
+// m per interval) with an adaptive one.
+inline unsigned fd_m(const plan_config& c) { return c.length == length_policy::fixed ? c.m : 0; }
+
 // Which jobs the hardware takes (sample_ctrl.h's rule, written here independently): m 0 or
 // m_min..m_max, len 1..2^m, an exact pixel cubic, and with forward differences built for fd_m only
 // that m (or an exact pixel).
@@ -221,9 +225,9 @@ public:
     pipeline_bench(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
                    const scene::device_config& dev, const plan_config& c, const typename AGen::config& gen,
                    std::function<void(std::size_t, std::size_t)> progress)
-        : sc_module(name), dut("dut", dev.mode, gen, c.set, c.div, c.m), fb("fb", p.width, p.height),
+        : sc_module(name), dut("dut", dev.mode, gen, c.set, c.div, fd_m(c)), fb("fb", p.width, p.height),
           src("src", p, k, [this] { return dut.idle(); }),
-          checker(p, k, dev, c, EVAL == pipe_eval::fd ? c.m : 0), progress_(std::move(progress)) {
+          checker(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
         dut.clk(clk); dut.start(start); dut.load_frame(load_frame); dut.ready(ready);
         dut.in_y(y); dut.in_x0(x0); dut.in_len(len); dut.in_m(m); dut.in_deg2(deg2);
         sc_core::sc_in<pipe::cos_t>* pnh[] = {&dut.in_nh1, &dut.in_nh2, &dut.in_nh3, &dut.in_nh4};

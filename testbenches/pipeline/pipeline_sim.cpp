@@ -16,7 +16,7 @@ sim_result simulate_frame(const plan& p, const frame_constants& k, const scene::
     std::string bad;
     if (sc_core::sc_get_status() != sc_core::SC_ELABORATION || sc_core::sc_get_curr_simcontext()->elaboration_done())
         bad = "simulate_frame: SystemC elaborates once per process; this process has simulated already";
-    else if (c.eval == evaluator::fd && (c.m < interp::m_min || c.m > interp::m_max))
+    else if (c.eval == evaluator::fd && c.length == length_policy::fixed && (c.m < interp::m_min || c.m > interp::m_max))
         bad = "simulate_frame: the forward-difference evaluator is built for m = " + std::to_string(c.m) +
               ", outside " + std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max);
     if (!bad.empty()) {

@@ -35,7 +35,8 @@ struct sim_result {
 };
 
 // Elaborates the pipeline for dev.device (patent, minimax, rom_matched, ua22802) and c.eval (the
-// forward differences built for c.m), c.set and c.div, runs every job of p, returns the frame
+// forward differences built for c.m with c.length fixed, or for any m per interval, fd_eval_var, with
+// c.length adaptive), c.set and c.div, runs every job of p, returns the frame
 // buffer's content, the clocks taken, wall time, and the mismatches against golden_interval.
 sim_result simulate_frame(const plan& p, const frame_constants& k, const scene::device_config& dev,
                           const plan_config& c, const sim_options& o = {});

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -165,6 +166,29 @@ TEST(PipelineSimHand, EveryLengthHorner) {
     const plan_config c = config(evaluator::horner);
     const sim_result r = simulate_frame(p, k, patent, c, traced());
     EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(r.write_order, job_order(p));
+    expect_golden_frame(r, p, k, patent, c);
+}
+
+// Forward differences for any m per interval (fd_eval_var, built when the length is adaptive): every
+// length 4..64 (m = 2..6), cubic and quadratic, exact pixels between, in one run.
+TEST(PipelineSimHand, EveryLengthFdAnyM) {
+    const auto k = hand_constants();
+    std::vector<interval_job> jobs;
+    unsigned y = 0;
+    for (unsigned m = 2; m <= 6; ++m)
+        for (bool q : {false, true})
+            for (unsigned len : {1u << m, (1u << m) - 1}) {
+                jobs.push_back(job(y, 1, m, len, q, 37 * y));
+                jobs.push_back(job(y, 0, 0, 1, false, 3 * y));
+                ++y;
+            }
+    const plan p = make_hand_plan(66, y, jobs);
+    plan_config c = config(evaluator::fd);
+    c.length = length_policy::adaptive;
+    const sim_result r = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_EQ(r.jobs_dropped, 0u);
     EXPECT_EQ(r.write_order, job_order(p));
     expect_golden_frame(r, p, k, patent, c);
 }
@@ -381,6 +405,30 @@ TEST_P(PipelineSimRender, BitExactAgainstTheGoldenFrame) {
                 exact, (unsigned long long)s.clocks, (unsigned long long)hw.clocks, double(s.clocks) / p.pixels,
                 p.pixels / s.seconds);
 }
+
+// The head with adaptive length and degree (the configuration that meets the NMSE target), through
+// forward differences for any m per interval (fd_eval_var) and through Horner.
+class PipelineSimAdaptive : public ::testing::TestWithParam<evaluator> {};
+TEST_P(PipelineSimAdaptive, HeadAdaptiveLengthAndDegree) {
+    const scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 64, 64);
+    const scene::rasterised r = scene::rasterise(w);
+    const frame_constants k = frame_constants_of(w);
+    plan_config c;
+    c.length = length_policy::adaptive;
+    c.degree = degree_policy::adaptive;
+    const plan p = make_plan(r, k, patent, c);  // planned as for Horner: fd's plan needs a fixed length
+    std::set<unsigned> ms;
+    for (const auto& j : p.jobs) ms.insert(j.m);
+    EXPECT_GE(ms.size(), 3u) << "several interval lengths in one frame";
+    c.eval = GetParam();
+    const sim_result s = simulate_frame(p, k, patent, c, traced());
+    EXPECT_EQ(s.mismatches, 0u);
+    EXPECT_EQ(s.jobs_dropped, 0u);
+    EXPECT_EQ(s.write_order, job_order(p));
+    expect_golden_frame(s, p, k, patent, c);
+}
+INSTANTIATE_TEST_SUITE_P(Evaluators, PipelineSimAdaptive, ::testing::Values(evaluator::horner, evaluator::fd),
+                         [](const ::testing::TestParamInfo<evaluator>& i) { return std::string(evaluator_name(i.param)); });
 
 std::vector<render_case> render_cases() {
     std::vector<render_case> v;
