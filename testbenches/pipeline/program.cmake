@@ -71,7 +71,7 @@ if(TARGET shading_pipeline)
       "empty_obj|--scene ${CMAKE_CURRENT_SOURCE_DIR}/data/empty.obj"
       "unknown_device|--device phong"
       "bad_light|--light 30"
-      "fd_adaptive|--eval fd --length adaptive")
+      "fd_adaptive_range|--eval fd --length adaptive --m-min 1")
   foreach(case IN LISTS rp_bad)
     string(REPLACE "|" ";" parts "${case}")
     list(GET parts 0 name)
