@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Seed 004's shading system on the head scan at 512x512 (render_pipeline): the default configuration
-# (fixed 16-pixel intervals, cubic, Horner unit, UA 60553 with the patent's constants) and two others,
+# (fixed 16-pixel intervals, cubic, Horner unit, UA 60553 with the patent's constants), adaptive length
+# and degree through the Horner unit and through the forward differences, and seed 004's zone policy,
 # each through the golden model and the SystemC pipeline (which must agree bit for bit), PNGs and
 # report.md/report.json in $SHADING_OUT/pipeline/<case>/; then the small sweep over interval and
 # degree policies, evaluators and two devices on the golden model (parallel processes), its CSV and
@@ -45,7 +46,9 @@ render() {  # case, then render_pipeline's options
 
 render default
 render adaptive --length adaptive --degree adaptive --device minimax
-render zones_fd --degree zones --eval fd --m 3 --device rom_matched
+render adaptive_fd --length adaptive --degree adaptive --eval fd
+# Seed 004's own policy: quadratic in its zones 2, 4, 7, cubic elsewhere, one interval length.
+render zones --degree zones --m 3 --device ua22802
 
 # The small sweep at the same size on the golden model (bit-exact to SystemC by the tests).
 "$bin" --sweep --scene head --size "$size" --grid small --out "$out/sweep"

@@ -47,10 +47,10 @@ if(TARGET shading_pipeline)
                      $<TARGET_FILE:render_pipeline> ${rp_out}/vcd)
     list(APPEND rp_tests pipeline.render.inject_mismatch pipeline.render.vcd)
   endif()
-  # A tiny sweep (one device, the small grid: 36 configurations, 2 processes) merges one CSV row per
+  # A tiny sweep (one device, the small grid: 48 configurations, 2 processes) merges one CSV row per
   # configuration under the header.
   add_test(NAME pipeline.sweep.tiny
-           COMMAND sh -c "\"$0\" --sweep --scene head --size 32 --device patent --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 37"
+           COMMAND sh -c "\"$0\" --sweep --scene head --size 32 --device patent --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 49"
                    $<TARGET_FILE:render_pipeline> ${rp_out}/sweep)
   # The exponents grid: one device x 8 exponents.
   add_test(NAME pipeline.sweep.exponents

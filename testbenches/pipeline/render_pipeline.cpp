@@ -677,8 +677,8 @@ struct sweep_point {
     int n = -1;  // -1: --n or the scene's
 };
 
-// small: two devices x the degree policies x fixed m = 3..5 (Horner, FD) and three adaptive-length
-// tolerances; full: every device, m = 2..6, five tolerances, three adaptive-degree tolerances;
+// small: two devices x the degree policies x fixed m = 3..5 and three adaptive-length tolerances,
+// each with the Horner unit and the forward differences; full: every device, m = 2..6, five tolerances, three adaptive-degree tolerances;
 // exponents: every device x n = 2..500 with the command line's own plan settings (the total error
 // against Phong per device and n).
 std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& only_device, const options& o) {
@@ -705,7 +705,8 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
         for (const auto& [deg, dtol] : degrees) {
             for (unsigned m : ms)
                 for (const char* ev : {"horner", "fd"}) g.push_back({d, "fixed", deg, ev, m, 0.5, dtol});
-            for (double lt : ltols) g.push_back({d, "adaptive", deg, "horner", 4, lt, dtol});
+            for (double lt : ltols)
+                for (const char* ev : {"horner", "fd"}) g.push_back({d, "adaptive", deg, ev, 4, lt, dtol});
         }
     return g;
 }
