@@ -551,8 +551,9 @@ int render(const options& o) {
         save(im_marked, "interval_map.png");
         save(zm, "zone_map.png");
         char l_hw[96], l_e1[64], l_e2[64];
-        std::snprintf(l_hw, sizeof l_hw, "HARDWARE: %s %s, %s", o.length.c_str(),
-                      cfg.length == length_policy::fixed ? ("M=" + std::to_string(cfg.m)).c_str() : "", o.degree.c_str());
+        std::snprintf(l_hw, sizeof l_hw, "HARDWARE: %s%s, %s, %s, %s", o.length.c_str(),
+                      cfg.length == length_policy::fixed ? (" M=" + std::to_string(cfg.m)).c_str() : "", o.degree.c_str(),
+                      o.eval.c_str(), o.device.c_str());
         std::snprintf(l_e1, sizeof l_e1, "VS PER-PIXEL (WHITE = %g)", o.error_scale);
         std::snprintf(l_e2, sizeof l_e2, "VS PHONG (WHITE = %g)", o.error_scale_total);
         save(stack_rows({scene::side_by_side({a, b, dm}, {"PHONG N=" + std::to_string(mat.n), l_hw, "DEGREE"}),
