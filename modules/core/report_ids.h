@@ -7,4 +7,5 @@ inline constexpr const char* input = "shading/input";        // input outside it
 inline constexpr const char* timing = "shading/timing";      // strobe phase shorter than a path
 inline constexpr const char* mismatch = "shading/mismatch";  // DUT differs from the golden model
 inline constexpr const char* config = "shading/config";      // bad elaboration-time parameter
+inline constexpr const char* tlm = "shading/tlm";            // bad TLM-2.0 access to a wrapper
 }  // namespace shading::msg
