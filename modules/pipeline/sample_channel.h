@@ -23,6 +23,7 @@
 #include "blocks/reg.h"
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
+#include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
 #include "interp/coef_unit_cubic.h"
 #include "interp/coef_unit_quad.h"
@@ -31,14 +32,13 @@
 namespace shading {
 
 namespace pipe {
-// Bus formats of the sample stage (src/pipeline/pipeline.h: kdi_fmt, diffuse_fmt, ambient_fmt,
-// colour_fmt), from the same tables.
-inline constexpr qfmt kdi_fmt = spec::ksi_fmt;                        // 8.0
-inline constexpr qfmt diffuse_fmt = spec::out_fmt;                    // Q9.8
-inline constexpr unsigned diffuse_drop = spec::cos_fmt.frac + kdi_fmt.frac - diffuse_fmt.frac;  // 7
-inline constexpr qfmt ambient_fmt = interp::sample_fmt;               // Q8.8
-inline constexpr qfmt colour_fmt = interp::sample_fmt;                // Q8.8, saturated
-inline constexpr qfmt ad_fmt{diffuse_fmt.width + 1, false, 8};        // ambient + diffuse, Q10.8
+// Bus formats of the sample stage: src/formats/pipeline_formats.h (the golden pipeline reads the same).
+using pipeline::kdi_fmt;
+using pipeline::diffuse_fmt;
+using pipeline::diffuse_drop;
+using pipeline::ambient_fmt;
+using pipeline::colour_fmt;
+using pipeline::ad_fmt;
 using kdi_t = sc_dt::sc_uint<kdi_fmt.width>;
 using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
 using spec_t = sc_dt::sc_uint<spec::out_fmt.width>;

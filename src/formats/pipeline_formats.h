@@ -1,0 +1,29 @@
+// Number formats of the shading pipeline's sample stage (seed 004 leaves them open): one table, read
+// by the golden pipeline (src/pipeline/pipeline.h) and the SystemC sample channel
+// (modules/pipeline/sample_channel.h). Notation: Qi.f = i integer bits, f fraction bits.
+#pragma once
+
+#include "formats/fixed_point.h"
+#include "formats/interp_formats.h"
+#include "formats/specular_formats.h"
+
+namespace shading::pipeline {
+
+// k_d * I_l per channel: an 8-bit code like the device's k_s * I (spec::ksi_fmt), a frame constant.
+inline constexpr qfmt kdi_fmt = spec::ksi_fmt;
+// Diffuse multiplier: k_d*I (8.0) x N.L (Q1.15) -> Q9.15, the 7 low wires dropped (floor) -> Q9.8,
+// in 8-bit image units like the device's out25..27 (spec::out_fmt).
+inline constexpr qfmt diffuse_fmt = spec::out_fmt;
+inline constexpr unsigned diffuse_drop = spec::cos_fmt.frac + kdi_fmt.frac - diffuse_fmt.frac;  // 7
+// Ambient term per channel: 255 * ambient as an unsigned Q8.8 code (rounded), a frame constant.
+inline constexpr qfmt ambient_fmt = interp::sample_fmt;
+// ambient + diffuse: Q8.8 + Q9.8 -> Q10.8, one bit wider, never overflows.
+inline constexpr qfmt ad_fmt{diffuse_fmt.width + 1, false, diffuse_fmt.frac};
+// Colour sample: ambient + diffuse + specular, saturated to interp::sample_fmt (Q8.8 unsigned,
+// largest code 0xFFFF = 255.996): the coefficient units' input format.
+inline constexpr qfmt colour_fmt = interp::sample_fmt;
+// Output stage: the evaluator's Q16.16 signed pixel clamped to [0, 0xFFFF] of Q8.8 unsigned (the
+// 8 low fraction wires dropped, floor). The frame buffer stores these; PNGs round them to 8 bits.
+inline constexpr qfmt pixel_fmt = interp::sample_fmt;
+
+}  // namespace shading::pipeline
