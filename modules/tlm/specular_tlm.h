@@ -1,0 +1,428 @@
+// TLM-2.0 wrapper of the UA 60553 device family (specular/specular_device.h with any generator of
+// `a`): a tlm_utils::simple_target_socket `socket` with b_transport and transport_dbg over the
+// register map below, in one of two timing modes chosen at construction:
+//   pin_accurate   - the wrapper owns the signal-level devices and drives UA 60553, Fig. 3's
+//                    strobes from the b_transport caller's thread with wait(): an access costs the
+//                    model's real time and the waveform shows it;
+//   loosely_timed  - the golden model (src/golden) computes the result; the access is annotated
+//                    with the same delay (added to b_transport's delay argument, no wait).
+// Both give bit-identical data (testbenches/tlm). One class template per device, as the devices
+// are (AGen is a_gen_linear, a_gen_rom or a_gen_tuned); aliases at the end of the file.
+//
+// Register map (byte addresses; registers are 32-bit words in host byte order, little-endian on
+// the supported hosts; reserved bits read 0, writes to them are ignored):
+//   0x000 N        RW  bits 9:0   n, RG1 (strobe 15). Clears READY, invalidates the result window.
+//   0x004 KSI_R    RW  bits 7:0   k_s*I red, RG3 (strobe 20). Same side effects as N.
+//   0x008 KSI_G    RW  bits 7:0   k_s*I green, RG4 (strobe 22).
+//   0x00C KSI_B    RW  bits 7:0   k_s*I blue, RG5 (strobe 24).
+//   0x010 COS      RW  bits 15:0  cos gamma, Q1.15 (0x8000 = 1.0). A write shades one pixel
+//                                 (strobe 17 falls and rises) into RESULT_R..B and sets READY.
+//   0x014 RESULT_R RO  bits 16:0  output 25, Q9.8 \  valid while STATUS.READY; a read before
+//   0x018 RESULT_G RO  bits 16:0  output 26, Q9.8  > that is a TLM_GENERIC_ERROR_RESPONSE
+//   0x01C RESULT_B RO  bits 16:0  output 27, Q9.8 /   (nothing to return yet)
+//   0x020 STATUS   RO  bit 0 READY; bits 5:1 sticky bus-error log (bit 1 address, 2 size or
+//                      alignment, 3 byte enables, 4 command, 5 read before ready), cleared by
+//                      CONTROL.CLEAR_ERR. The log is the wrapper's, not the device's state.
+//   0x024 CONTROL  RW  bit 0 OVF: 0 saturate, 1 wrap (ADD11's overflow mode; a change clears
+//                      READY and invalidates the result window); bits 5:4 VARIANT, read-only
+//                      (0 UA 60553, 1 UA 22802 ROM, 2 tuned UA 60553); bit 8 TIMING, read-only
+//                      (0 loosely timed, 1 pin-accurate); bit 31 CLEAR_ERR, write 1 to clear
+//                      STATUS bits 5:1, reads 0.
+//   0x1000-0x17FF COS_BLOCK    RW  1024 cos codes, 16 bits each (pixel i at 0x1000 + 2i). A write
+//                      of L bytes at offset 2i shades pixels i .. i+L/2-1 (a raster line per
+//                      access) into RESULT_BLOCK; a read returns the codes last written.
+//   0x2000-0x5FFF RESULT_BLOCK RO  1024 pixels x 16 bytes: words R, G, B (Q9.8) and the cos code
+//                      they were shaded from, pixel i at 0x2000 + 16i. Any 4-aligned read of a
+//                      multiple of 4 bytes; every pixel it touches must have been shaded since
+//                      the last change of N, KSI_* or OVF, else TLM_GENERIC_ERROR_RESPONSE.
+// Access rules and errors (each also an SC_REPORT_WARNING with id shading/tlm; the device's
+// registers, results and the windows are unchanged):
+//   byte-enable pointer set                             -> TLM_BYTE_ENABLE_ERROR_RESPONSE
+//   start address outside the map                       -> TLM_ADDRESS_ERROR_RESPONSE
+//   register access not exactly 4 bytes at a 4-aligned address, a window access misaligned, of a
+//   bad length, running past the window's end, or streaming width != length
+//                                                       -> TLM_BURST_ERROR_RESPONSE
+//   write to a read-only register or window             -> TLM_COMMAND_ERROR_RESPONSE
+//   read of RESULT_* or RESULT_BLOCK before it is ready -> TLM_GENERIC_ERROR_RESPONSE
+// TLM_IGNORE_COMMAND completes with TLM_OK_RESPONSE and does nothing.
+// Access time (both modes): a write of N or KSI_* costs one load pulse pair, 2 x load_pulse
+// (8 ns by default); a COS write t_high + t_low (20 ns) per pixel, as Fig. 3's strobe 17;
+// everything else 0. In pin-accurate mode b_transport first waits the incoming delay.
+// Debug transport: reads of any byte range within one region (registers 0x000-0x027, COS_BLOCK,
+// RESULT_BLOCK) without side effects, readiness checks or time; debug writes are not supported
+// (0 bytes transferred).
+#pragma once
+
+#include <tlm>
+#include <tlm_utils/simple_target_socket.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <systemc>
+#include <vector>
+
+#include "core/report_ids.h"
+#include "formats/specular_formats.h"
+#include "golden/specular_golden.h"
+#include "golden/ua22802_golden.h"
+#include "golden/ua60553_tuned_golden.h"
+#include "specular/specular_device.h"
+#include "tuned/a_gen_tuned.h"
+#include "ua22802/a_gen_rom.h"
+#include "ua60553/a_gen_linear.h"
+
+namespace shading {
+
+enum class tlm_timing { loosely_timed, pin_accurate };
+
+namespace tlm_map {
+inline constexpr uint64_t N = 0x000, KSI_R = 0x004, KSI_G = 0x008, KSI_B = 0x00C, COS = 0x010;
+inline constexpr uint64_t RESULT_R = 0x014, RESULT_G = 0x018, RESULT_B = 0x01C;
+inline constexpr uint64_t STATUS = 0x020, CONTROL = 0x024, REG_END = 0x028;
+inline constexpr uint64_t COS_BLOCK = 0x1000, RESULT_BLOCK = 0x2000;
+inline constexpr std::size_t BLOCK_PIXELS = 1024;
+inline constexpr uint64_t COS_BLOCK_END = COS_BLOCK + 2 * BLOCK_PIXELS;
+inline constexpr uint64_t RESULT_STRIDE = 16;
+inline constexpr uint64_t RESULT_BLOCK_END = RESULT_BLOCK + RESULT_STRIDE * BLOCK_PIXELS;
+inline constexpr uint32_t STATUS_READY = 1u << 0;
+inline constexpr uint32_t ERR_ADDRESS = 1u << 1, ERR_SIZE = 1u << 2, ERR_BYTE_ENABLE = 1u << 3,
+                          ERR_COMMAND = 1u << 4, ERR_NOT_READY = 1u << 5;
+inline constexpr uint32_t CONTROL_OVF = 1u << 0, CONTROL_VARIANT_SHIFT = 4, CONTROL_VARIANT_MASK = 3u << 4,
+                          CONTROL_TIMING = 1u << 8, CONTROL_CLEAR_ERR = 1u << 31;
+}  // namespace tlm_map
+
+// Strobe timing of Fig. 3 the wrapper drives (the defaults of testbenches/specular's stimulus).
+struct tlm_strobe_timing {
+    sc_core::sc_time t_low{15, sc_core::SC_NS};      // strobe 17 low: the settling phase T
+    sc_core::sc_time t_high{5, sc_core::SC_NS};      // strobe 17 high; cos changes in its middle
+    sc_core::sc_time load_pulse{4, sc_core::SC_NS};  // each half of a ctl15/20/22/24 pulse
+    sc_core::sc_time load_time() const { return load_pulse * 2.0; }
+    sc_core::sc_time pixel_time() const { return t_high + t_low; }
+};
+
+// Per generator of `a`: the variant code in CONTROL and the golden a(n) the loosely-timed path uses.
+template <class AGen>
+struct tlm_variant;
+template <>
+struct tlm_variant<a_gen_linear> {
+    static constexpr uint32_t code = 0;
+    static uint64_t a(uint64_t n, const a_gen_linear::config& g) { return golden_a_linear(n, g); }
+};
+template <>
+struct tlm_variant<a_gen_rom> {
+    static constexpr uint32_t code = 1;
+    // The ROM's own words (default: the content generated from seed 001's formula), as the device.
+    static uint64_t a(uint64_t n, const a_gen_rom::config& words) { return n < words.size() ? words[n] : 0; }
+};
+template <>
+struct tlm_variant<a_gen_tuned> {
+    static constexpr uint32_t code = 2;
+    static uint64_t a(uint64_t n, const a_gen_tuned::config& g) { return golden_a_tuned(n, g); }
+};
+
+template <class AGen>
+class specular_tlm : public sc_core::sc_module {
+    using device_t = specular_device<AGen>;
+    using n_t = sc_dt::sc_uint<AGen::n_fmt.width>;
+    using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
+    using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
+    using out_t = sc_dt::sc_uint<spec::out_fmt.width>;
+    template <class T>
+    using net = sc_core::sc_signal<T, sc_core::SC_MANY_WRITERS>;  // driven by whichever caller's thread
+
+public:
+    tlm_utils::simple_target_socket<specular_tlm> socket{"socket"};
+
+    // Pin-accurate mode: the pins of Fig. 1, shared by the two builds of the device (ADD11
+    // saturating or wrapping is fixed in silicon; CONTROL.OVF picks whose outputs are read).
+    net<bool> ctl15{"ctl15", false}, ctl17{"ctl17", true}, ctl20{"ctl20", false}, ctl22{"ctl22", false},
+        ctl24{"ctl24", false};
+    net<n_t> in16_n{"in16_n"};
+    net<cos_t> in18_cos{"in18_cos"};
+    net<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
+    std::array<std::array<sc_core::sc_signal<out_t>, 3>, 2> out;  // [saturate, wrap][R, G, B]
+    std::array<sc_core::sc_signal<bool>, 2> out29;
+    std::unique_ptr<device_t> dev_sat, dev_wrap;  // pin-accurate mode only
+
+    specular_tlm(const sc_core::sc_module_name& name, tlm_timing timing,
+                 const typename AGen::config& gen = AGen::default_config(), const tlm_strobe_timing& t = {},
+                 const block_delays& delays = {})
+        : sc_module(name), timing_(timing), gen_(gen), t_(t), a_(tlm_variant<AGen>::a(0, gen)) {
+        socket.register_b_transport(this, &specular_tlm::b_transport);
+        socket.register_transport_dbg(this, &specular_tlm::transport_dbg);
+        if (timing_ == tlm_timing::pin_accurate) {
+            dev_sat = std::make_unique<device_t>("dev_sat", overflow_mode::saturate, gen, delays);
+            dev_wrap = std::make_unique<device_t>("dev_wrap", overflow_mode::wrap, gen, delays);
+            bind(*dev_sat, 0);
+            bind(*dev_wrap, 1);
+        }
+        for (auto& p : results_) p = {0, 0, 0, 0};
+    }
+
+    tlm_timing timing() const { return timing_; }
+    const tlm_strobe_timing& strobe_timing() const { return t_; }
+
+    void b_transport(tlm::tlm_generic_payload& p, sc_core::sc_time& delay) {
+        if (!check(p)) return;
+        const uint64_t addr = p.get_address();
+        const unsigned len = p.get_data_length();
+        unsigned char* data = p.get_data_ptr();
+        if (p.is_read()) {
+            if (addr < tlm_map::REG_END) {
+                put32(data, reg_read(addr));
+            } else if (addr < tlm_map::COS_BLOCK_END) {
+                std::memcpy(data, reinterpret_cast<const unsigned char*>(cos_.data()) + (addr - tlm_map::COS_BLOCK),
+                            len);
+            } else {
+                std::memcpy(data, reinterpret_cast<const unsigned char*>(results_.data()) +
+                                      (addr - tlm_map::RESULT_BLOCK), len);
+            }
+            p.set_response_status(tlm::TLM_OK_RESPONSE);
+            return;
+        }
+        // Writes: only N, KSI_*, COS and the COS window cost strobe time.
+        if (timing_ == tlm_timing::pin_accurate && costs_time(addr)) {
+            lock_.lock();  // one initiator at a time on the pins
+            wait(delay);
+            delay = sc_core::SC_ZERO_TIME;
+        }
+        if (addr < tlm_map::REG_END) {
+            reg_write(addr, get32(data), delay);
+        } else {
+            const std::size_t first = (addr - tlm_map::COS_BLOCK) / 2, count = len / 2;
+            std::memcpy(reinterpret_cast<unsigned char*>(cos_.data()) + (addr - tlm_map::COS_BLOCK), data, len);
+            shade_block(first, count, delay);
+        }
+        if (timing_ == tlm_timing::pin_accurate && costs_time(addr)) lock_.unlock();
+        p.set_response_status(tlm::TLM_OK_RESPONSE);
+    }
+
+    unsigned transport_dbg(tlm::tlm_generic_payload& p) {
+        const uint64_t addr = p.get_address();
+        const uint64_t len = p.get_data_length();
+        if (!p.is_read()) return 0;
+        unsigned char* data = p.get_data_ptr();
+        if (addr + len <= tlm_map::REG_END) {
+            unsigned char regs[tlm_map::REG_END];
+            for (uint64_t a = 0; a < tlm_map::REG_END; a += 4) put32(regs + a, reg_read(a));
+            std::memcpy(data, regs + addr, len);
+        } else if (addr >= tlm_map::COS_BLOCK && addr + len <= tlm_map::COS_BLOCK_END) {
+            std::memcpy(data, reinterpret_cast<const unsigned char*>(cos_.data()) + (addr - tlm_map::COS_BLOCK), len);
+        } else if (addr >= tlm_map::RESULT_BLOCK && addr + len <= tlm_map::RESULT_BLOCK_END) {
+            std::memcpy(data, reinterpret_cast<const unsigned char*>(results_.data()) + (addr - tlm_map::RESULT_BLOCK),
+                        len);
+        } else {
+            return 0;
+        }
+        return static_cast<unsigned>(len);
+    }
+
+private:
+    static uint32_t get32(const unsigned char* d) {
+        uint32_t v;
+        std::memcpy(&v, d, 4);
+        return v;
+    }
+    static void put32(unsigned char* d, uint32_t v) { std::memcpy(d, &v, 4); }
+    static bool costs_time(uint64_t addr) {
+        return addr <= tlm_map::COS || (addr >= tlm_map::COS_BLOCK && addr < tlm_map::COS_BLOCK_END);
+    }
+
+    void bind(device_t& d, std::size_t i) {
+        d.ctl15(ctl15); d.ctl17(ctl17); d.ctl20(ctl20); d.ctl22(ctl22); d.ctl24(ctl24);
+        d.in16_n(in16_n); d.in18_cos(in18_cos);
+        d.in19_ksi_r(in19_ksi_r); d.in21_ksi_g(in21_ksi_g); d.in23_ksi_b(in23_ksi_b);
+        d.out25_r(out[i][0]); d.out26_g(out[i][1]); d.out27_b(out[i][2]); d.out29_valid(out29[i]);
+    }
+
+    // Rejects a bad access with its response status, a warning and the error log bit; else true.
+    bool check(tlm::tlm_generic_payload& p) {
+        const uint64_t addr = p.get_address();
+        const uint64_t len = p.get_data_length();
+        const bool is_write = p.is_write();
+        if (p.get_command() == tlm::TLM_IGNORE_COMMAND) {
+            p.set_response_status(tlm::TLM_OK_RESPONSE);
+            return false;
+        }
+        if (p.get_byte_enable_ptr() != nullptr)
+            return reject(p, tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, tlm_map::ERR_BYTE_ENABLE, "byte enables are not supported");
+        const bool in_regs = addr < tlm_map::REG_END;
+        const bool in_cos = addr >= tlm_map::COS_BLOCK && addr < tlm_map::COS_BLOCK_END;
+        const bool in_res = addr >= tlm_map::RESULT_BLOCK && addr < tlm_map::RESULT_BLOCK_END;
+        if (!in_regs && !in_cos && !in_res)
+            return reject(p, tlm::TLM_ADDRESS_ERROR_RESPONSE, tlm_map::ERR_ADDRESS, "address outside the register map");
+        bool size_ok = p.get_streaming_width() == len && len > 0;
+        if (in_regs) size_ok = size_ok && len == 4 && addr % 4 == 0;
+        if (in_cos) size_ok = size_ok && len % 2 == 0 && addr % 2 == 0 && addr + len <= tlm_map::COS_BLOCK_END;
+        if (in_res) size_ok = size_ok && len % 4 == 0 && addr % 4 == 0 && addr + len <= tlm_map::RESULT_BLOCK_END;
+        if (!size_ok)
+            return reject(p, tlm::TLM_BURST_ERROR_RESPONSE, tlm_map::ERR_SIZE,
+                          "bad length, alignment or streaming width for this register or window");
+        const bool read_only = in_res || (in_regs && addr >= tlm_map::RESULT_R && addr <= tlm_map::STATUS);
+        if (is_write && read_only)
+            return reject(p, tlm::TLM_COMMAND_ERROR_RESPONSE, tlm_map::ERR_COMMAND, "write to a read-only register");
+        if (!is_write) {
+            bool ready = true;
+            if (in_regs && addr >= tlm_map::RESULT_R && addr <= tlm_map::RESULT_B) ready = ready_;
+            if (in_res) {
+                const std::size_t first = (addr - tlm_map::RESULT_BLOCK) / tlm_map::RESULT_STRIDE;
+                const std::size_t last = (addr + len - 1 - tlm_map::RESULT_BLOCK) / tlm_map::RESULT_STRIDE;
+                for (std::size_t i = first; i <= last && ready; ++i) ready = shaded_[i] == generation_;
+            }
+            if (!ready)
+                return reject(p, tlm::TLM_GENERIC_ERROR_RESPONSE, tlm_map::ERR_NOT_READY,
+                              "result read before it is ready (no pixel shaded since N, KSI or OVF changed)");
+        }
+        return true;
+    }
+
+    bool reject(tlm::tlm_generic_payload& p, tlm::tlm_response_status s, uint32_t bit, const char* why) {
+        errors_ |= bit;
+        std::ostringstream os;
+        os << name() << ": " << (p.is_write() ? "write" : "read") << " of " << p.get_data_length()
+           << " bytes at 0x" << std::hex << p.get_address() << std::dec << ": " << why;
+        SC_REPORT_WARNING(msg::tlm, os.str().c_str());
+        p.set_response_status(s);
+        return false;
+    }
+
+    uint32_t reg_read(uint64_t addr) const {
+        switch (addr) {
+            case tlm_map::N: return n_;
+            case tlm_map::KSI_R: return ksi_[0];
+            case tlm_map::KSI_G: return ksi_[1];
+            case tlm_map::KSI_B: return ksi_[2];
+            case tlm_map::COS: return cos_reg_;
+            case tlm_map::RESULT_R: return rgb_[0];
+            case tlm_map::RESULT_G: return rgb_[1];
+            case tlm_map::RESULT_B: return rgb_[2];
+            case tlm_map::STATUS: return (ready_ ? tlm_map::STATUS_READY : 0u) | errors_;
+            case tlm_map::CONTROL:
+                return (wrap_ ? tlm_map::CONTROL_OVF : 0u) | (tlm_variant<AGen>::code << tlm_map::CONTROL_VARIANT_SHIFT) |
+                       (timing_ == tlm_timing::pin_accurate ? tlm_map::CONTROL_TIMING : 0u);
+            default: return 0;
+        }
+    }
+
+    void invalidate() {
+        ready_ = false;
+        ++generation_;
+    }
+
+    void reg_write(uint64_t addr, uint32_t v, sc_core::sc_time& delay) {
+        switch (addr) {
+            case tlm_map::N:
+                n_ = v & static_cast<uint32_t>(AGen::n_fmt.mask());
+                a_ = tlm_variant<AGen>::a(n_, gen_);
+                load(ctl15, in16_n, n_, delay);
+                invalidate();
+                break;
+            case tlm_map::KSI_R: case tlm_map::KSI_G: case tlm_map::KSI_B: {
+                const std::size_t c = (addr - tlm_map::KSI_R) / 4;
+                ksi_[c] = v & static_cast<uint32_t>(spec::ksi_fmt.mask());
+                auto& ctl = c == 0 ? ctl20 : c == 1 ? ctl22 : ctl24;
+                auto& d = c == 0 ? in19_ksi_r : c == 1 ? in21_ksi_g : in23_ksi_b;
+                load(ctl, d, ksi_[c], delay);
+                invalidate();
+                break;
+            }
+            case tlm_map::COS: {
+                cos_reg_ = v & static_cast<uint32_t>(spec::cos_fmt.mask());
+                rgb_ = shade(cos_reg_, delay);
+                ready_ = true;
+                break;
+            }
+            case tlm_map::CONTROL: {
+                if (v & tlm_map::CONTROL_CLEAR_ERR) errors_ = 0;
+                const bool wrap = (v & tlm_map::CONTROL_OVF) != 0;
+                if (wrap != wrap_) {
+                    wrap_ = wrap;
+                    invalidate();
+                }
+                break;
+            }
+            default: break;
+        }
+    }
+
+    // A ctl15/20/22/24 pulse (Fig. 3): data, strobe high, falling edge latches.
+    template <class T>
+    void load(net<bool>& ctl, net<T>& d, uint64_t value, sc_core::sc_time& delay) {
+        if (timing_ == tlm_timing::loosely_timed) {
+            delay += t_.load_time();
+            return;
+        }
+        d.write(T(value));
+        ctl.write(true);
+        wait(t_.load_pulse);
+        ctl.write(false);
+        wait(t_.load_pulse);
+    }
+
+    // One pixel: golden model (loosely timed) or strobe 17 through the device (pin-accurate).
+    std::array<uint32_t, 3> shade(uint32_t code, sc_core::sc_time& delay) {
+        if (timing_ == tlm_timing::loosely_timed) {
+            delay += t_.pixel_time();
+            const auto nets = golden_datapath(a_, AGen::a_fmt.frac, code, {ksi_[0], ksi_[1], ksi_[2]},
+                                              wrap_ ? overflow_mode::wrap : overflow_mode::saturate);
+            return {static_cast<uint32_t>(nets.out[0]), static_cast<uint32_t>(nets.out[1]),
+                    static_cast<uint32_t>(nets.out[2])};
+        }
+        in18_cos.write(code);  // in the middle of the high phase: half of it is setup time
+        wait(t_.t_high / 2);
+        ctl17.write(false);    // RG2 latches: Fig. 3
+        wait(t_.t_low);
+        ctl17.write(true);   // output 29 rises: outputs 25..27 valid
+        wait(t_.t_high / 2);
+        const auto& o = out[wrap_ ? 1 : 0];
+        return {static_cast<uint32_t>(o[0].read().to_uint64()), static_cast<uint32_t>(o[1].read().to_uint64()),
+                static_cast<uint32_t>(o[2].read().to_uint64())};
+    }
+
+    void shade_block(std::size_t first, std::size_t count, sc_core::sc_time& delay) {
+        if (timing_ == tlm_timing::loosely_timed) {
+            // The hot path: the golden datapath per pixel, one annotation for the whole burst.
+            const std::array<uint64_t, 3> k{ksi_[0], ksi_[1], ksi_[2]};
+            const overflow_mode m = wrap_ ? overflow_mode::wrap : overflow_mode::saturate;
+            for (std::size_t i = first; i < first + count; ++i) {
+                const auto nets = golden_datapath(a_, AGen::a_fmt.frac, cos_[i], k, m);
+                results_[i] = {static_cast<uint32_t>(nets.out[0]), static_cast<uint32_t>(nets.out[1]),
+                               static_cast<uint32_t>(nets.out[2]), cos_[i]};
+                shaded_[i] = generation_;
+            }
+            delay += t_.pixel_time() * static_cast<double>(count);
+            return;
+        }
+        for (std::size_t i = first; i < first + count; ++i) {
+            const auto rgb = shade(cos_[i], delay);
+            results_[i] = {rgb[0], rgb[1], rgb[2], cos_[i]};
+            shaded_[i] = generation_;
+        }
+    }
+
+    tlm_timing timing_;
+    typename AGen::config gen_;
+    tlm_strobe_timing t_;
+    sc_core::sc_mutex lock_;
+
+    // The model's state (registers, latched results, windows).
+    uint32_t n_ = 0, cos_reg_ = 0;
+    std::array<uint32_t, 3> ksi_{}, rgb_{};
+    bool ready_ = false, wrap_ = false;
+    uint64_t a_;  // golden a(n) for the loosely-timed path
+    std::array<uint16_t, tlm_map::BLOCK_PIXELS> cos_{};
+    std::array<std::array<uint32_t, 4>, tlm_map::BLOCK_PIXELS> results_{};
+    std::array<uint64_t, tlm_map::BLOCK_PIXELS> shaded_{};  // generation a pixel was shaded in
+    uint64_t generation_ = 1;
+    uint32_t errors_ = 0;  // STATUS bits 5:1, the bus-error log
+};
+
+using specular_tlm_ua60553 = specular_tlm<a_gen_linear>;
+using specular_tlm_ua22802 = specular_tlm<a_gen_rom>;
+using specular_tlm_ua60553_tuned = specular_tlm<a_gen_tuned>;
+
+}  // namespace shading

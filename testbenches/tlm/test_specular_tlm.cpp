@@ -1,0 +1,364 @@
+// TLM-2.0 wrapper of the UA 60553 device family (modules/tlm/specular_tlm.h): the register map,
+// every error response with the state unchanged, both timing modes against the golden models
+// (src/golden, written independently of the wrapper's own per-pixel path) and against each
+// other on random traffic, the strobe timing of each access, the burst path for a whole line and
+// debug transport. Each TEST elaborates one bench (ctest runs each in its own process).
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "common/report_log.h"
+#include "common/sim_guard.h"
+#include "core/report_ids.h"
+#include "golden/specular_golden.h"
+#include "golden/ua22802_golden.h"
+#include "golden/ua60553_tuned_golden.h"
+#include "tlm/specular_tlm.h"
+#include "tlm_initiator.h"
+
+using namespace shading;
+using namespace shading::tb;
+using sc_core::SC_NS;
+using sc_core::sc_time;
+namespace m = shading::tlm_map;
+
+namespace {
+
+struct ua60553_v {
+    using gen = a_gen_linear;
+    static constexpr uint32_t code = 0;
+    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode md) {
+        return golden_ua60553(n, c, k, md);
+    }
+};
+struct ua22802_v {
+    using gen = a_gen_rom;
+    static constexpr uint32_t code = 1;
+    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode md) {
+        return golden_ua22802(n, c, k, md);
+    }
+};
+struct tuned_v {
+    using gen = a_gen_tuned;
+    static constexpr uint32_t code = 2;
+    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode md) {
+        return golden_ua60553_tuned(n, c, k, md);
+    }
+};
+
+// One initiator bound to one wrapper, or to a pair (LT and pin-accurate) through two sockets.
+template <class AGen>
+struct bench : sc_core::sc_module {
+    specular_tlm<AGen> dut;
+    tlm_initiator init;
+    bench(const sc_core::sc_module_name& name, tlm_timing t, tlm_initiator::script s)
+        : sc_module(name), dut("dut", t), init("init", std::move(s)) {
+        init.socket.bind(dut.socket);
+    }
+    bool finished() const { return init.finished(); }
+};
+
+template <class AGen>
+struct pair_bench : sc_core::sc_module {
+    specular_tlm<AGen> lt, pin;
+    tlm_initiator init_lt, init_pin;
+    std::function<void(tlm_initiator&, tlm_initiator&)> body;
+    bool done = false;
+    pair_bench(const sc_core::sc_module_name& name, std::function<void(tlm_initiator&, tlm_initiator&)> b)
+        : sc_module(name),
+          lt("lt", tlm_timing::loosely_timed),
+          pin("pin", tlm_timing::pin_accurate),
+          init_lt("init_lt", nullptr),
+          init_pin("init_pin", [this](tlm_initiator& p) { body(init_lt, p); done = true; }),
+          body(std::move(b)) {
+        init_lt.socket.bind(lt.socket);
+        init_pin.socket.bind(pin.socket);
+    }
+    bool finished() const { return done; }
+};
+
+const sc_time limit(1, sc_core::SC_SEC);
+
+// Every byte of the model's state visible through debug transport, STATUS's error log masked.
+std::vector<unsigned char> snapshot(tlm_initiator& i) {
+    auto s = i.debug_read(0, m::REG_END);
+    s[m::STATUS] &= m::STATUS_READY;
+    auto c = i.debug_read(m::COS_BLOCK, m::COS_BLOCK_END - m::COS_BLOCK);
+    auto r = i.debug_read(m::RESULT_BLOCK, m::RESULT_BLOCK_END - m::RESULT_BLOCK);
+    s.insert(s.end(), c.begin(), c.end());
+    s.insert(s.end(), r.begin(), r.end());
+    return s;
+}
+
+template <class V>
+class SpecularTlm : public ::testing::Test {};
+using variants = ::testing::Types<ua60553_v, ua22802_v, tuned_v>;
+TYPED_TEST_SUITE(SpecularTlm, variants);
+
+// Register map: reset values, field widths, read-only fields, READY's life, a pixel against golden.
+TYPED_TEST(SpecularTlm, RegisterMap) {
+    using V = TypeParam;
+    bench<typename V::gen> b("b", tlm_timing::loosely_timed, [](tlm_initiator& i) {
+        EXPECT_EQ(i.read32(m::N), 0u);
+        EXPECT_EQ(i.read32(m::STATUS), 0u) << "nothing shaded yet";
+        EXPECT_EQ(i.read32(m::CONTROL), V::code << 4) << "saturate, variant, loosely timed";
+        ASSERT_EQ(i.write32(m::N, 0xFFFFF000u | 37u), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.read32(m::N), 37u) << "n is 10 bits: bits 31:10 ignored";
+        ASSERT_EQ(i.write32(m::KSI_R, 0x1FFu), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(i.write32(m::KSI_G, 128u), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(i.write32(m::KSI_B, 7u), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.read32(m::KSI_R), 0xFFu) << "k_s*I is 8 bits";
+        EXPECT_EQ(i.read32(m::KSI_G), 128u);
+        EXPECT_EQ(i.read32(m::KSI_B), 7u);
+        ASSERT_EQ(i.write32(m::COS, 0x7000u), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.read32(m::COS), 0x7000u);
+        EXPECT_EQ(i.read32(m::STATUS), m::STATUS_READY);
+        const auto g = V::golden(37, 0x7000, {255, 128, 7}, overflow_mode::saturate);
+        EXPECT_EQ(i.read32(m::RESULT_R), g.out[0]);
+        EXPECT_EQ(i.read32(m::RESULT_G), g.out[1]);
+        EXPECT_EQ(i.read32(m::RESULT_B), g.out[2]);
+        // Variant and timing bits are read-only; OVF is writable and clears READY.
+        ASSERT_EQ(i.write32(m::CONTROL, 0x131u), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.read32(m::CONTROL), (V::code << 4) | m::CONTROL_OVF);
+        EXPECT_EQ(i.read32(m::STATUS), 0u) << "OVF changed: READY cleared";
+        ASSERT_EQ(i.write32(m::COS, 0x9000u), tlm::TLM_OK_RESPONSE);  // cos > 1.0 in wrap mode
+        const auto w = V::golden(37, 0x9000, {255, 128, 7}, overflow_mode::wrap);
+        EXPECT_EQ(i.read32(m::RESULT_R), w.out[0]);
+        EXPECT_EQ(i.read32(m::RESULT_B), w.out[2]);
+        ASSERT_EQ(i.write32(m::N, 38u), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.read32(m::STATUS), 0u) << "N written: READY cleared";
+    });
+    ASSERT_TRUE(run_to_completion(b, limit));
+}
+
+// Every error response, its warning, its log bit; the state unchanged; no time charged.
+TEST(SpecularTlmErrors, EveryErrorLeavesStateUnchanged) {
+    report_log::get().expect(msg::tlm);
+    const unsigned before = report_log::get().count(msg::tlm);
+    bench<a_gen_linear> b("b", tlm_timing::pin_accurate, [](tlm_initiator& i) {
+        ASSERT_EQ(i.write32(m::N, 20u), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(i.write32(m::KSI_R, 200u), tlm::TLM_OK_RESPONSE);
+        std::vector<unsigned char> line(64);
+        for (std::size_t k = 0; k < line.size(); k += 2) line[k + 1] = static_cast<unsigned char>(k);
+        ASSERT_EQ(i.access(tlm::TLM_WRITE_COMMAND, m::COS_BLOCK, line.data(), 64), tlm::TLM_OK_RESPONSE);
+        const auto s0 = snapshot(i);
+        unsigned char buf[64] = {};
+        unsigned char be[4] = {0xFF, 0xFF, 0, 0};
+        struct bad {
+            const char* what;
+            tlm::tlm_command cmd;
+            uint64_t addr;
+            unsigned len;
+            bool be;
+            unsigned sw;
+            tlm::tlm_response_status want;
+            uint32_t bit;
+        };
+        const bad cases[] = {
+            {"unmapped register", tlm::TLM_WRITE_COMMAND, 0x028, 4, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
+            {"between windows", tlm::TLM_READ_COMMAND, 0x1800, 4, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
+            {"past the map", tlm::TLM_WRITE_COMMAND, 0x6000, 4, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
+            {"2-byte register", tlm::TLM_WRITE_COMMAND, m::N, 2, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+            {"8-byte register", tlm::TLM_WRITE_COMMAND, m::KSI_R, 8, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+            {"misaligned register", tlm::TLM_WRITE_COMMAND, m::N + 1, 4, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+            {"odd cos burst", tlm::TLM_WRITE_COMMAND, m::COS_BLOCK, 3, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+            {"cos burst past end", tlm::TLM_WRITE_COMMAND, m::COS_BLOCK_END - 2, 4, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+            {"streaming", tlm::TLM_WRITE_COMMAND, m::COS_BLOCK, 8, false, 2, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+            {"misaligned result", tlm::TLM_READ_COMMAND, m::RESULT_BLOCK + 2, 4, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+            {"byte enables", tlm::TLM_WRITE_COMMAND, m::N, 4, true, 0, tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, m::ERR_BYTE_ENABLE},
+            {"write RESULT_R", tlm::TLM_WRITE_COMMAND, m::RESULT_R, 4, false, 0, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND},
+            {"write STATUS", tlm::TLM_WRITE_COMMAND, m::STATUS, 4, false, 0, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND},
+            {"write result window", tlm::TLM_WRITE_COMMAND, m::RESULT_BLOCK, 16, false, 0, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND},
+            {"RESULT_G before a pixel", tlm::TLM_READ_COMMAND, m::RESULT_G, 4, false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_NOT_READY},
+            {"result window past the burst", tlm::TLM_READ_COMMAND, m::RESULT_BLOCK + 16 * 31, 32, false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_NOT_READY},
+        };
+        for (const bad& c : cases) {
+            std::fill(std::begin(buf), std::end(buf), 0xA5);
+            const auto s = i.access(c.cmd, c.addr, buf, c.len, c.be ? be : nullptr, c.sw);
+            EXPECT_EQ(s, c.want) << c.what;
+            EXPECT_EQ(i.last_elapsed, sc_core::SC_ZERO_TIME) << c.what;
+            EXPECT_EQ(i.read32(m::STATUS) & ~m::STATUS_READY, c.bit) << c.what << ": the bus-error log";
+            ASSERT_EQ(i.write32(m::CONTROL, m::CONTROL_CLEAR_ERR), tlm::TLM_OK_RESPONSE);
+            EXPECT_EQ(snapshot(i), s0) << c.what << ": state changed";
+            if (c.cmd == tlm::TLM_READ_COMMAND) {
+                EXPECT_EQ(buf[0], 0xA5) << c.what << ": a failed read returned data";
+            }
+        }
+        // The burst's 32 pixels are readable, the one past it (above) was not.
+        unsigned char ok[32 * 16];
+        EXPECT_EQ(i.access(tlm::TLM_READ_COMMAND, m::RESULT_BLOCK, ok, sizeof ok), tlm::TLM_OK_RESPONSE);
+    });
+    ASSERT_TRUE(run_to_completion(b, limit));
+    EXPECT_EQ(report_log::get().count(msg::tlm) - before, 16u) << "one warning per bad access";
+}
+
+// >= 10^4 random (n, k_s*I, cos) in loosely-timed mode against the device's golden model, both
+// overflow modes, with the annotated delay of every access checked.
+TYPED_TEST(SpecularTlm, LooselyTimedRandomMatchesGolden) {
+    using V = TypeParam;
+    bench<typename V::gen> b("b", tlm_timing::loosely_timed, [](tlm_initiator& i) {
+        const tlm_strobe_timing t;
+        std::mt19937_64 rng(60553 + V::code);
+        unsigned n = 1, ovf = 0;
+        std::array<uint64_t, 3> k{0, 0, 0};
+        std::size_t mismatches = 0;
+        for (int p = 0; p < 12000; ++p) {
+            if (p % 8 == 0) {
+                n = static_cast<unsigned>(rng() % 1000 + 1);
+                ASSERT_EQ(i.write32(m::N, n), tlm::TLM_OK_RESPONSE);
+                ASSERT_EQ(i.last_delay, t.load_time());
+                for (unsigned c = 0; c < 3; ++c) {
+                    k[c] = rng() % 256;
+                    ASSERT_EQ(i.write32(m::KSI_R + 4 * c, static_cast<uint32_t>(k[c])), tlm::TLM_OK_RESPONSE);
+                }
+                ovf = static_cast<unsigned>(rng() % 2);
+                ASSERT_EQ(i.write32(m::CONTROL, ovf), tlm::TLM_OK_RESPONSE);
+                ASSERT_EQ(i.last_delay, sc_core::SC_ZERO_TIME);
+            }
+            const uint32_t c = static_cast<uint32_t>(rng() % (ovf ? 0x10000 : spec::cos_one + 1));
+            ASSERT_EQ(i.write32(m::COS, c), tlm::TLM_OK_RESPONSE);
+            ASSERT_EQ(i.last_delay, t.pixel_time());
+            ASSERT_EQ(i.last_elapsed, sc_core::SC_ZERO_TIME) << "loosely timed: annotated, never waited";
+            const auto g = V::golden(n, c, k, ovf ? overflow_mode::wrap : overflow_mode::saturate);
+            const std::array<uint64_t, 3> got{i.read32(m::RESULT_R), i.read32(m::RESULT_G), i.read32(m::RESULT_B)};
+            if (got != g.out && ++mismatches <= 5)
+                ADD_FAILURE() << "n=" << n << " cos=0x" << std::hex << c << std::dec << " got " << got[0] << ","
+                              << got[1] << "," << got[2] << " golden " << g.out[0] << "," << g.out[1] << "," << g.out[2];
+        }
+        EXPECT_EQ(mismatches, 0u);
+    });
+    ASSERT_TRUE(run_to_completion(b, limit));
+}
+
+// A few hundred random accesses (single pixels and short bursts, reloads, both overflow modes)
+// through the pin-accurate wrapper and the loosely-timed one: identical data, and the pin-accurate
+// access takes exactly the time the loosely-timed one annotates (the Fig. 3 strobe timing).
+TYPED_TEST(SpecularTlm, PinAccurateMatchesLooselyTimed) {
+    using V = TypeParam;
+    pair_bench<typename V::gen> b("b", [](tlm_initiator& lt, tlm_initiator& pin) {
+        std::mt19937_64 rng(22802 + V::code);
+        const tlm_strobe_timing t;
+        auto both_write = [&](uint64_t addr, uint32_t v) {
+            ASSERT_EQ(lt.write32(addr, v), tlm::TLM_OK_RESPONSE);
+            ASSERT_EQ(pin.write32(addr, v), tlm::TLM_OK_RESPONSE);
+            EXPECT_EQ(pin.last_elapsed, lt.last_delay) << "access at 0x" << std::hex << addr;
+            EXPECT_EQ(pin.last_delay, sc_core::SC_ZERO_TIME);
+        };
+        std::size_t pixels = 0;
+        while (pixels < 400) {
+            both_write(m::N, static_cast<uint32_t>(rng() % 1000 + 1));
+            EXPECT_EQ(pin.last_elapsed, t.load_time());
+            for (unsigned c = 0; c < 3; ++c) both_write(m::KSI_R + 4 * c, static_cast<uint32_t>(rng() % 256));
+            both_write(m::CONTROL, static_cast<uint32_t>(rng() % 2));
+            for (int p = 0; p < 4; ++p, ++pixels) {
+                both_write(m::COS, static_cast<uint32_t>(rng() % (spec::cos_one + 1)));
+                EXPECT_EQ(pin.last_elapsed, t.pixel_time());
+                for (uint64_t r = m::RESULT_R; r <= m::RESULT_B; r += 4) EXPECT_EQ(pin.read32(r), lt.read32(r));
+            }
+            const unsigned count = static_cast<unsigned>(rng() % 16 + 1), first = static_cast<unsigned>(rng() % 1000);
+            std::vector<uint16_t> codes(count);
+            for (auto& c : codes) c = static_cast<uint16_t>(rng() % (spec::cos_one + 1));
+            const uint64_t addr = m::COS_BLOCK + 2 * first;
+            auto* d = reinterpret_cast<unsigned char*>(codes.data());
+            ASSERT_EQ(lt.access(tlm::TLM_WRITE_COMMAND, addr, d, 2 * count), tlm::TLM_OK_RESPONSE);
+            ASSERT_EQ(pin.access(tlm::TLM_WRITE_COMMAND, addr, d, 2 * count), tlm::TLM_OK_RESPONSE);
+            EXPECT_EQ(lt.last_delay, t.pixel_time() * count);
+            EXPECT_EQ(pin.last_elapsed, lt.last_delay);
+            std::vector<unsigned char> a(16 * count), c(16 * count);
+            const uint64_t raddr = m::RESULT_BLOCK + 16 * first;
+            ASSERT_EQ(lt.access(tlm::TLM_READ_COMMAND, raddr, a.data(), 16 * count), tlm::TLM_OK_RESPONSE);
+            ASSERT_EQ(pin.access(tlm::TLM_READ_COMMAND, raddr, c.data(), 16 * count), tlm::TLM_OK_RESPONSE);
+            EXPECT_EQ(a, c) << "burst of " << count << " at pixel " << first;
+            pixels += count;
+        }
+    });
+    ASSERT_TRUE(run_to_completion(b, limit));
+}
+
+// The pin-accurate wrapper honours the caller's delay first (it synchronises), then charges the
+// strobes: an N write 2 x load_pulse, a COS write t_high + t_low.
+TEST(SpecularTlmTiming, PinAccurateWaitsIncomingDelayThenStrobes) {
+    bench<a_gen_linear> b("b", tlm_timing::pin_accurate, [](tlm_initiator& i) {
+        i.delay_in = sc_time(7, SC_NS);
+        ASSERT_EQ(i.write32(m::N, 5), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.last_elapsed, sc_time(7 + 8, SC_NS));
+        EXPECT_EQ(i.last_delay, sc_core::SC_ZERO_TIME);
+        ASSERT_EQ(i.write32(m::COS, 0x4000), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.last_elapsed, sc_time(7 + 20, SC_NS));
+        i.delay_in = sc_core::SC_ZERO_TIME;
+        EXPECT_EQ(i.read32(m::RESULT_R), 0u) << "k_s*I still 0";
+        EXPECT_EQ(i.last_elapsed, sc_core::SC_ZERO_TIME) << "a read costs no strobe";
+    });
+    ASSERT_TRUE(run_to_completion(b, limit));
+    EXPECT_EQ(b.dut.dev_sat->chk_timing.violations(), 0u);
+}
+
+// A whole raster line (1024 pixels) in one burst, each mode against the golden model, then the
+// same results by debug transport.
+template <tlm_timing T>
+void whole_line() {
+    bench<a_gen_linear> b("b", T, [](tlm_initiator& i) {
+        const tlm_strobe_timing t;
+        ASSERT_EQ(i.write32(m::N, 300), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(i.write32(m::KSI_R, 255), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(i.write32(m::KSI_G, 90), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(i.write32(m::KSI_B, 3), tlm::TLM_OK_RESPONSE);
+        std::vector<uint16_t> codes(m::BLOCK_PIXELS);
+        for (std::size_t p = 0; p < codes.size(); ++p)  // a highlight across the line: cos rises to 1, falls
+            codes[p] = static_cast<uint16_t>(spec::cos_one - std::abs(static_cast<long>(p) - 512) * 24);
+        ASSERT_EQ(i.access(tlm::TLM_WRITE_COMMAND, m::COS_BLOCK, reinterpret_cast<unsigned char*>(codes.data()),
+                           2 * m::BLOCK_PIXELS),
+                  tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(i.last_delay + i.last_elapsed, t.pixel_time() * 1024.0);
+        std::vector<uint32_t> res(4 * m::BLOCK_PIXELS);
+        ASSERT_EQ(i.access(tlm::TLM_READ_COMMAND, m::RESULT_BLOCK, reinterpret_cast<unsigned char*>(res.data()),
+                           16 * m::BLOCK_PIXELS),
+                  tlm::TLM_OK_RESPONSE);
+        std::size_t bad = 0;
+        for (std::size_t p = 0; p < m::BLOCK_PIXELS; ++p) {
+            const auto g = golden_ua60553(300, codes[p], {255, 90, 3}, overflow_mode::saturate);
+            bad += res[4 * p] != g.out[0] || res[4 * p + 1] != g.out[1] || res[4 * p + 2] != g.out[2] ||
+                   res[4 * p + 3] != codes[p];
+        }
+        EXPECT_EQ(bad, 0u);
+        EXPECT_EQ(res[4 * 512], golden_ua60553(300, spec::cos_one, {255, 90, 3}, overflow_mode::saturate).out[0]);
+        EXPECT_EQ(res[4 * 512], 255u << 8) << "cos = 1: the BRDF is 1.0, R = k_s*I exactly (hand-worked)";
+        const auto dbg = i.debug_read(m::RESULT_BLOCK, 16 * m::BLOCK_PIXELS);
+        ASSERT_EQ(dbg.size(), 16 * m::BLOCK_PIXELS);
+        EXPECT_EQ(0, std::memcmp(dbg.data(), res.data(), dbg.size()));
+    });
+    ASSERT_TRUE(run_to_completion(b, sc_core::sc_time(1, sc_core::SC_SEC)));
+}
+TEST(SpecularTlmBurst, WholeLineLooselyTimed) { whole_line<tlm_timing::loosely_timed>(); }
+TEST(SpecularTlmBurst, WholeLinePinAccurate) { whole_line<tlm_timing::pin_accurate>(); }
+
+// Debug transport: register reads without side effects or time (a not-ready result too, with no
+// warning), reads spanning a region's end refused, debug writes refused.
+TEST(SpecularTlmDebug, DebugReadHasNoSideEffects) {
+    bench<a_gen_rom> b("b", tlm_timing::pin_accurate, [](tlm_initiator& i) {
+        ASSERT_EQ(i.write32(m::N, 9), tlm::TLM_OK_RESPONSE);
+        const sc_time t0 = sc_core::sc_time_stamp();
+        auto regs = i.debug_read(0, m::REG_END);
+        ASSERT_EQ(regs.size(), m::REG_END);
+        uint32_t n, ctl, res;
+        std::memcpy(&n, regs.data() + m::N, 4);
+        std::memcpy(&ctl, regs.data() + m::CONTROL, 4);
+        std::memcpy(&res, regs.data() + m::RESULT_R, 4);
+        EXPECT_EQ(n, 9u);
+        EXPECT_EQ(ctl, (1u << 4) | m::CONTROL_TIMING) << "ROM variant, pin-accurate";
+        EXPECT_EQ(res, 0u);
+        EXPECT_EQ(i.debug_read(m::N + 1, 2).size(), 2u) << "any byte range within the registers";
+        EXPECT_EQ(i.debug_read(m::REG_END - 4, 8).size(), 0u) << "past the register file";
+        EXPECT_EQ(i.debug_read(m::RESULT_BLOCK_END - 4, 8).size(), 0u) << "past the result window";
+        unsigned char w[4] = {1, 0, 0, 0};
+        EXPECT_EQ(i.debug(tlm::TLM_WRITE_COMMAND, m::N, w, 4), 0u) << "debug writes are not supported";
+        EXPECT_EQ(i.read32(m::N), 9u);
+        EXPECT_EQ(i.read32(m::STATUS), 0u) << "no error logged, still not ready";
+        EXPECT_EQ(sc_core::sc_time_stamp(), t0);
+    });
+    ASSERT_TRUE(run_to_completion(b, limit));
+}
+
+}  // namespace
