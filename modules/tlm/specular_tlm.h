@@ -47,7 +47,8 @@
 // TLM_IGNORE_COMMAND completes with TLM_OK_RESPONSE and does nothing.
 // Access time (both modes): a write of N or KSI_* costs one load pulse pair, 2 x load_pulse
 // (8 ns by default); a COS write t_high + t_low (20 ns) per pixel, as Fig. 3's strobe 17;
-// everything else 0. In pin-accurate mode b_transport first waits the incoming delay.
+// everything else 0. In pin-accurate mode an access that drives strobes first waits the incoming
+// delay (and returns it as 0); the others return at once with the delay untouched.
 // Debug transport: reads of any byte range within one region (registers 0x000-0x027, COS_BLOCK,
 // RESULT_BLOCK) without side effects, readiness checks or time; debug writes are not supported
 // (0 bytes transferred).
