@@ -1,0 +1,77 @@
+# The installed package (issue 9): `cmake --install <build> --prefix <p>` gives
+#   <p>/include/shading/...          the include root, as modules/ and src/ are in the tree
+#                                    ("ua60553/ua60553.h", "formats/x.h", "golden/x.h")
+#   <p>/lib/libshading_golden.a      the golden models (no SystemC)
+#   <p>/lib/cmake/shading/           find_package(shading CONFIG): shading::modules, ::golden, ...
+#   <p>/lib/pkgconfig/shading.pc     pkg-config: Requires: systemc
+# Every installed path is relative to <p>, so the tree can be moved. scripts/check_package.sh
+# (ctest package.install_and_consume) installs into a temporary prefix and builds a consumer.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(SHADING_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/shading)
+set(SHADING_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/shading)
+
+# Exported names: shading::formats, shading::golden, shading::modules, shading::ua22802 (the same
+# as shading::modules now that the ROM header sits in the include root), shading::tlm. The same
+# names as aliases in the build tree, so add_subdirectory() users can write them too.
+set_target_properties(shading_formats PROPERTIES EXPORT_NAME formats)
+set_target_properties(shading_golden PROPERTIES EXPORT_NAME golden POSITION_INDEPENDENT_CODE ON)
+set_target_properties(shading_modules PROPERTIES EXPORT_NAME modules)
+set_target_properties(shading_ua22802 PROPERTIES EXPORT_NAME ua22802)
+set(SHADING_EXPORTED shading_formats shading_golden shading_modules shading_ua22802)
+# --- TLM-2.0 wrappers (issue 9, modules/tlm): exported as shading::tlm once the target exists.
+# Its headers are under modules/ and installed below with the rest; its include directories must be
+# wrapped in $<BUILD_INTERFACE:...> (or come from shading_modules) for the export to succeed.
+if(TARGET shading_tlm)
+  set_target_properties(shading_tlm PROPERTIES EXPORT_NAME tlm)
+  list(APPEND SHADING_EXPORTED shading_tlm)
+endif()
+foreach(t IN LISTS SHADING_EXPORTED)
+  get_target_property(name ${t} EXPORT_NAME)
+  if(NOT TARGET shading::${name})
+    add_library(shading::${name} ALIAS ${t})
+  endif()
+endforeach()
+
+# Install rules by default only for the top project (an add_subdirectory() user keeps its own).
+option(SHADING_INSTALL "Install the headers, libraries and the shading package" ${SHADING_TOP_LEVEL})
+if(NOT SHADING_INSTALL)
+  return()
+endif()
+
+install(TARGETS ${SHADING_EXPORTED} EXPORT shadingTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${SHADING_INSTALL_INCLUDEDIR})
+
+# Public headers: modules/** (every block, monitor, device and wrapper), the number formats, the
+# golden models and references, scene.h (compiled into shading_golden) and the generated ROM.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${SHADING_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/formats DESTINATION ${SHADING_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/golden ${PROJECT_SOURCE_DIR}/src/reference
+        DESTINATION ${SHADING_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+install(FILES ${PROJECT_SOURCE_DIR}/src/scene/scene.h DESTINATION ${SHADING_INSTALL_INCLUDEDIR}/scene)
+install(FILES ${UA22802_ROM_HEADER} DESTINATION ${SHADING_INSTALL_INCLUDEDIR})
+
+install(EXPORT shadingTargets NAMESPACE shading:: DESTINATION ${SHADING_INSTALL_CMAKEDIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/shadingConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/package/shadingConfig.cmake
+  INSTALL_DESTINATION ${SHADING_INSTALL_CMAKEDIR})
+# 0.x: SameMajorVersion, so a consumer asking for 0.9 accepts 0.9.y and 0.10 but not 1.0.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/package/shadingConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/package/shadingConfig.cmake
+              ${PROJECT_BINARY_DIR}/package/shadingConfigVersion.cmake
+        DESTINATION ${SHADING_INSTALL_CMAKEDIR})
+
+# shading.pc: prefix relative to the .pc file's own folder (${pcfiledir}), so it stays relocatable.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+  message(FATAL_ERROR "shading.pc needs a relative CMAKE_INSTALL_LIBDIR (got ${CMAKE_INSTALL_LIBDIR})")
+endif()
+file(RELATIVE_PATH SHADING_PC_UP "/p/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/p")
+string(REGEX REPLACE "/$" "" SHADING_PC_UP "${SHADING_PC_UP}")  # "../..", not "../../"
+configure_file(${PROJECT_SOURCE_DIR}/cmake/shading.pc.in ${PROJECT_BINARY_DIR}/package/shading.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/package/shading.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
