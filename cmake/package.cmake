@@ -75,3 +75,11 @@ string(REGEX REPLACE "/$" "" SHADING_PC_UP "${SHADING_PC_UP}")  # "../..", not "
 configure_file(${PROJECT_SOURCE_DIR}/cmake/shading.pc.in ${PROJECT_BINARY_DIR}/package/shading.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/package/shading.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
+# The check CI runs: install this build into a temporary prefix, build and run the consumer project
+# (testbenches/example/installed) against it with find_package, and one file with pkg-config.
+if(SHADING_BUILD_TESTBENCHES)
+  add_test(NAME package.install_and_consume
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/check_package.sh ${PROJECT_BINARY_DIR})
+  set_tests_properties(package.install_and_consume PROPERTIES TIMEOUT 300
+    ENVIRONMENT "CXX=${CMAKE_CXX_COMPILER};SHADING_CXX_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER};SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+endif()
