@@ -2,7 +2,7 @@
 # The installed package, as a user's platform sees it (ctest package.install_and_consume):
 #   1. cmake --install <build> into a temporary prefix; no absolute source or build path may appear in it;
 #   2. configure, build and run testbenches/example/installed against it with find_package(shading)
-#      (CMAKE_PREFIX_PATH=<prefix> only);
+#      (CMAKE_PREFIX_PATH=<prefix> only): the pin-level consumer and the TLM virtual platform;
 #   3. build and run one file with `pkg-config --cflags --libs shading` (PKG_CONFIG_PATH=<prefix>/...).
 # Usage: scripts/check_package.sh [build-dir]   (default: build). Everything temporary is removed.
 # CXX and SHADING_CXX_LAUNCHER (e.g. ccache) are taken from the environment (ctest sets them).
@@ -41,6 +41,7 @@ cmake -S "$src/testbenches/example/installed" -B "$tmp/consumer" -DCMAKE_BUILD_T
   || { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/consumer" -j2
 "$tmp/consumer/consumer"
+"$tmp/consumer/virtual_platform"
 
 echo "== pkg-config --cflags --libs shading"
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
