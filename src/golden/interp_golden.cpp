@@ -119,6 +119,7 @@ std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, 
     fd_setup r = fd_setup_values(k, m, frac);
     const unsigned drop = static_cast<unsigned>(frac - coef_fmt.frac);
     std::vector<uint64_t> out;
+    out.reserve(len);
     for (unsigned i = 0; i < len; ++i) {
         out.push_back(coef_bits(floor_shift(r.p, drop)));
         r.p = fd_wrap(r.p + r.d1);
