@@ -15,6 +15,6 @@ module div3_shift_add #(
     localparam [15:0] T2 = 16'h0100 | ((ALIGN - 5) & 255);
     localparam [15:0] T3 = 16'h0100 | ((ALIGN - 7) & 255);
 
-    shift_add_network #(.WIN(WIN), .W(WOUT), .IN_SIGNED(1), .NIN(1), .NT(4), .TERMS({T3, T2, T1, T0})) net (
+    shift_add_network #(.WIN(WIN), .W(WOUT), .IN_SIGNED(1), .NIN(1), .NT(4), .SLOTS(4), .TERMS({T3, T2, T1, T0})) net (
         .in(x), .y(y));
 endmodule

@@ -5,31 +5,46 @@
 // y = P + ~Q + 1 = P - Q. The trees pair neighbours level by level, an odd one passing to the next
 // level, as the SystemC block's reduce() does. Every adder wraps on W wires.
 // Term k is TERMS[16k +: 16]: [15:12] input index, [8] negative, [7:0] shift (two's complement);
-// the tables come from the generated header (interp_rtl.vh), never typed here.
+// TERMS holds SLOTS terms, of which the first NT are used (so tables of different lengths share
+// one width). The tables come from the generated header (interp_rtl.vh), never typed here.
 module shift_add_network #(
     parameter WIN = 8,
     parameter W = 8,
     parameter IN_SIGNED = 0,
     parameter NIN = 1,
     parameter NT = 2,
-    parameter [16*NT-1:0] TERMS = 0
+    parameter SLOTS = NT,
+    parameter [16*SLOTS-1:0] TERMS = 0
 ) (
     input  wire [NIN*WIN-1:0] in,
     output wire [W-1:0]       y
 );
+    /* verilator lint_off UNUSEDSIGNAL */  // each reader takes its own field of the term word
+    function [15:0] term_word(input integer k);
+        term_word = TERMS[16*k +: 16];
+    endfunction
     function integer term_input(input integer k);
-        term_input = (TERMS >> (16 * k)) >> 12 & 15;
-    endfunction
-    function integer term_negative(input integer k);
-        term_negative = (TERMS >> (16 * k)) >> 8 & 1;
-    endfunction
-    function integer term_shift(input integer k);
-        integer s;
+        reg [15:0] t;
         begin
-            s = (TERMS >> (16 * k)) & 255;
-            term_shift = s >= 128 ? s - 256 : s;
+            t = term_word(k);
+            term_input = {28'd0, t[15:12]};
         end
     endfunction
+    function integer term_negative(input integer k);
+        reg [15:0] t;
+        begin
+            t = term_word(k);
+            term_negative = {31'd0, t[8]};
+        end
+    endfunction
+    function integer term_shift(input integer k);
+        reg [15:0] t;
+        begin
+            t = term_word(k);
+            term_shift = {{24{t[7]}}, t[7:0]};
+        end
+    endfunction
+    /* verilator lint_on UNUSEDSIGNAL */
     // How many terms have this sign, and which term is the k-th of them (table order kept).
     function integer sign_count(input integer neg);
         integer i;
@@ -67,12 +82,12 @@ module shift_add_network #(
         end
     endfunction
     function integer levels(input integer n);
-        integer c;
+        integer cnt;
         begin
             levels = 0;
-            c = n;
-            while (c > 1) begin
-                c = (c + 1) / 2;
+            cnt = n;
+            while (cnt > 1) begin
+                cnt = (cnt + 1) / 2;
                 levels = levels + 1;
             end
         end
@@ -86,8 +101,9 @@ module shift_add_network #(
     localparam Q_NODES = NQ > 0 ? level_offset(NQ, LQ) + 1 : 1;
 
     wire [W-1:0] term [0:NT-1];
-    wire [W-1:0] p_node [0:P_NODES-1];
-    wire [W-1:0] q_node [0:Q_NODES-1];
+    // Every tree node in one array per tree; split_var lets Verilator schedule the nodes one by one.
+    wire [W-1:0] p_node [0:P_NODES-1] /*verilator split_var*/;
+    wire [W-1:0] q_node [0:Q_NODES-1] /*verilator split_var*/;
     wire carry0, carry1;
 
     constant #(.W(1), .VALUE(0)) tie0 (.y(carry0));
@@ -104,12 +120,12 @@ module shift_add_network #(
         end
         for (l = 0; l < LP; l = l + 1) begin : p_level
             for (j = 0; j < level_count(NP, l + 1); j = j + 1) begin : node
+                localparam SRC = level_offset(NP, l) + 2 * j, DST = level_offset(NP, l + 1) + j;
                 if (2 * j + 1 < level_count(NP, l)) begin : add
                     adder #(.WA(W), .WB(W), .WS(W), .ASIGNED(1), .BSIGNED(1)) add (
-                        .a(p_node[level_offset(NP, l) + 2 * j]), .b(p_node[level_offset(NP, l) + 2 * j + 1]),
-                        .cin(carry0), .s(p_node[level_offset(NP, l + 1) + j]));
+                        .a(p_node[SRC]), .b(p_node[SRC + 1]), .cin(carry0), .s(p_node[DST]));
                 end else begin : pass
-                    assign p_node[level_offset(NP, l + 1) + j] = p_node[level_offset(NP, l) + 2 * j];
+                    assign p_node[DST] = p_node[SRC];
                 end
             end
         end
@@ -124,12 +140,12 @@ module shift_add_network #(
             end
             for (l = 0; l < LQ; l = l + 1) begin : q_level
                 for (j = 0; j < level_count(NQ, l + 1); j = j + 1) begin : node
+                    localparam SRC = level_offset(NQ, l) + 2 * j, DST = level_offset(NQ, l + 1) + j;
                     if (2 * j + 1 < level_count(NQ, l)) begin : add
                         adder #(.WA(W), .WB(W), .WS(W), .ASIGNED(1), .BSIGNED(1)) add (
-                            .a(q_node[level_offset(NQ, l) + 2 * j]), .b(q_node[level_offset(NQ, l) + 2 * j + 1]),
-                            .cin(carry0), .s(q_node[level_offset(NQ, l + 1) + j]));
+                            .a(q_node[SRC]), .b(q_node[SRC + 1]), .cin(carry0), .s(q_node[DST]));
                     end else begin : pass
-                        assign q_node[level_offset(NQ, l + 1) + j] = q_node[level_offset(NQ, l) + 2 * j];
+                        assign q_node[DST] = q_node[SRC];
                     end
                 end
             end
