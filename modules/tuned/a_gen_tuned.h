@@ -5,6 +5,7 @@
 // the n -> a interface every specular device binds (specular/specular_device.h).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <systemc>
 
@@ -14,6 +15,7 @@
 #include "blocks/mul.h"
 #include "blocks/reduce_or.h"
 #include "formats/ua60553_formats.h"
+#include "golden/ua60553_tuned_golden.h"
 #include "specular/block_delays.h"
 
 namespace shading {
@@ -36,6 +38,13 @@ public:
     static constexpr const char* n_out_of_range =
         "n = 0 gives a = 0 through the n < 2 special case (q = cos, as for n = 1); n > 1000 extends "
         "the law a = K31*n + K32";
+
+    // For the fast pin-level model (specular/specular_fast.h): the unit's function, from the golden
+    // model, and its n -> a delay (MUL6, ADD15 beside OR, then the key block).
+    static uint64_t a_word(const config& g, uint64_t n_bits) { return golden_a_tuned(n_bits, g); }
+    static sc_core::sc_time path_delay(const block_delays& t) {
+        return std::max(t.multiplier + t.adder, t.gate) + t.gate;
+    }
 
     sc_core::sc_in<sc_dt::sc_uint<n_fmt.width>> n{"n"};
     sc_core::sc_out<sc_dt::sc_uint<a_fmt.width>> a{"a"};

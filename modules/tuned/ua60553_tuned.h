@@ -5,10 +5,13 @@
 #pragma once
 
 #include "specular/specular_device.h"
+#include "specular/specular_fast.h"
 #include "tuned/a_gen_tuned.h"
 
 namespace shading {
 
 using device_ua60553_tuned = specular_device<a_gen_tuned>;
+// The fast pin-level abstraction (specular/specular_fast.h): same pins, timing and constructor.
+using device_ua60553_tuned_fast = specular_fast<a_gen_tuned>;
 
 }  // namespace shading

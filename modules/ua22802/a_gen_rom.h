@@ -26,6 +26,14 @@ public:
         "n = 0 reads ROM word 0 = a 0 (q = cos, as for n = 1); n > 1000 reads words 1001..1023, "
         "programmed with the same formula a(n)";
 
+    // For the fast pin-level model (specular/specular_fast.h): the word the ROM reads at n (a blank
+    // 0 beyond the table, as blocks/rom.h) and its access time.
+    static uint64_t a_word(const config& words, uint64_t n_bits) {
+        const uint64_t i = n_bits & n_fmt.mask();
+        return i < words.size() ? words[i] : 0;
+    }
+    static sc_core::sc_time path_delay(const block_delays& t) { return t.rom; }
+
     sc_core::sc_in<sc_dt::sc_uint<n_fmt.width>> n{"n"};
     sc_core::sc_out<sc_dt::sc_uint<a_fmt.width>> a{"a"};
 

@@ -5,10 +5,13 @@
 #pragma once
 
 #include "specular/specular_device.h"
+#include "specular/specular_fast.h"
 #include "ua22802/a_gen_rom.h"
 
 namespace shading {
 
 using device_ua22802 = specular_device<a_gen_rom>;
+// The fast pin-level abstraction (specular/specular_fast.h): same pins, timing and constructor.
+using device_ua22802_fast = specular_fast<a_gen_rom>;
 
 }  // namespace shading

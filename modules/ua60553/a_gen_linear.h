@@ -10,6 +10,7 @@
 #include "blocks/constant.h"
 #include "blocks/mul.h"
 #include "formats/ua60553_formats.h"
+#include "golden/specular_golden.h"
 #include "specular/block_delays.h"
 
 namespace shading {
@@ -25,6 +26,11 @@ public:
     static constexpr const char* n_out_of_range =
         "n = 0 gives a = K32 (0.5 with the patent's constants); n > 1000 extends the linear law "
         "a = K31*n + K32";
+
+    // For the fast pin-level model (specular/specular_fast.h): the unit's function, from the golden
+    // model, and its n -> a delay (MUL6 then ADD15; core/timing_graph.h derives the same from the wiring).
+    static uint64_t a_word(const config& g, uint64_t n_bits) { return golden_a_linear(n_bits, g); }
+    static sc_core::sc_time path_delay(const block_delays& t) { return t.multiplier + t.adder; }
 
     sc_core::sc_in<sc_dt::sc_uint<n_fmt.width>> n{"n"};
     sc_core::sc_out<sc_dt::sc_uint<a_fmt.width>> a{"a"};

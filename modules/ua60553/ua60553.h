@@ -4,10 +4,13 @@
 #pragma once
 
 #include "specular/specular_device.h"
+#include "specular/specular_fast.h"
 #include "ua60553/a_gen_linear.h"
 
 namespace shading {
 
 using device_ua60553 = specular_device<a_gen_linear>;
+// The fast pin-level abstraction (specular/specular_fast.h): same pins, timing and constructor.
+using device_ua60553_fast = specular_fast<a_gen_linear>;
 
 }  // namespace shading
