@@ -10,12 +10,13 @@
 //   1     -    B    zero    4     -    C    pass
 //   2     A    MUL  pass    5     RG   MUL  zero
 //   3     RG   MUL  zero    6     -    D    pass
-`include "interp_rtl.vh"
+`include "shading_formats.vh"
+`include "interp_terms.vh"
 module horner_ctrl #(
     parameter WT = `INTERP_T_W,
-    parameter W_MX1 = `INTERP_HORNER_MX1_SEL_W,
-    parameter W_MX2 = `INTERP_HORNER_MX2_SEL_W,
-    parameter W_STEP = `INTERP_HORNER_STEP_W
+    parameter W_MX1 = (`INTERP_HORNER_MX1_INPUTS > 2 ? $clog2(`INTERP_HORNER_MX1_INPUTS) : 1),
+    parameter W_MX2 = (`INTERP_HORNER_MX2_INPUTS > 2 ? $clog2(`INTERP_HORNER_MX2_INPUTS) : 1),
+    parameter W_STEP = (`INTERP_HORNER_STEP_CODES > 2 ? $clog2(`INTERP_HORNER_STEP_CODES) : 1)
 ) (
     input  wire              clk,
     input  wire              start,

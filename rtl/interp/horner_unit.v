@@ -4,14 +4,16 @@
 // {0, MUL, B, C, D}; RG <- Sm on the falling edge. The controller ctrl runs one micro-step per
 // clock: 6 clocks per cubic pixel, 4 per quadratic one, back to back.
 // Formats: A..D, RG, MX1, MX2, BK, Sm Q16.16 signed; t Q1.8 unsigned; MUL Q16.16 x Q1.8 ->
-// Q17.24, floor to Q16.16. Widths from interp_rtl.vh. This module only instantiates and wires.
-`include "interp_rtl.vh"
+// Q17.24, floor to Q16.16. Widths from shading_formats.vh (src/formats), select codes from
+// interp_terms.vh (horner_ctrl.h), both generated. This module only instantiates and wires.
+`include "shading_formats.vh"
+`include "interp_terms.vh"
 module horner_unit #(
-    parameter WC = `INTERP_COEF_W,
+    parameter WC = `INTERP_COEF_W,  // Q16.16
     parameter WT = `INTERP_T_W,
-    parameter W_MX1 = `INTERP_HORNER_MX1_SEL_W,
-    parameter W_MX2 = `INTERP_HORNER_MX2_SEL_W,
-    parameter W_STEP = `INTERP_HORNER_STEP_W
+    parameter W_MX1 = (`INTERP_HORNER_MX1_INPUTS > 2 ? $clog2(`INTERP_HORNER_MX1_INPUTS) : 1),
+    parameter W_MX2 = (`INTERP_HORNER_MX2_INPUTS > 2 ? $clog2(`INTERP_HORNER_MX2_INPUTS) : 1),
+    parameter W_STEP = (`INTERP_HORNER_STEP_CODES > 2 ? $clog2(`INTERP_HORNER_STEP_CODES) : 1)
 ) (
     input  wire          clk,
     input  wire          start,
@@ -39,16 +41,26 @@ module horner_unit #(
     wire bk_pass;
     wire [W_STEP-1:0] step;
 
-    // Blocks of Fig. 4 (names from the figure) and the controller. Multiplexer input k is the
-    // controller's select code k (interp_rtl.vh: MX1 A = 0, RG = 1; MX2 0, MUL, B, C, D = 0..4).
+    // The multiplexers' inputs, each at its select code (horner_ctrl.h, via interp_terms.vh).
+    wire [`INTERP_HORNER_MX1_INPUTS*WC-1:0] mx1_in;
+    wire [`INTERP_HORNER_MX2_INPUTS*WC-1:0] mx2_in;
+    assign mx1_in[`INTERP_MX1_A*WC +: WC] = a;
+    assign mx1_in[`INTERP_MX1_RG*WC +: WC] = rg_value;
+    assign mx2_in[`INTERP_MX2_ZERO*WC +: WC] = zero_word;
+    assign mx2_in[`INTERP_MX2_MUL*WC +: WC] = mul_product;
+    assign mx2_in[`INTERP_MX2_B*WC +: WC] = b;
+    assign mx2_in[`INTERP_MX2_C*WC +: WC] = c;
+    assign mx2_in[`INTERP_MX2_D*WC +: WC] = d;
+
+    // Blocks of Fig. 4 (names from the figure) and the controller.
     reg_block #(.W(WC)) rg (.ctl(clk), .d(sm_sum), .q(rg_value));
     mux #(.W(WC), .N(`INTERP_HORNER_MX1_INPUTS), .SW(W_MX1)) mx1 (
-        .in({rg_value, a}), .sel(mx1_sel), .y(mx1_operand));
+        .in(mx1_in), .sel(mx1_sel), .y(mx1_operand));
     mul #(.WA(WC), .WB(WT), .WP(WC), .DROP(`INTERP_HORNER_MUL_DROP), .ASIGNED(1), .BSIGNED(0)) mul (
         .a(mx1_operand), .b(t), .p(mul_product));
     constant #(.W(WC), .VALUE(0)) k_zero (.y(zero_word));
     mux #(.W(WC), .N(`INTERP_HORNER_MX2_INPUTS), .SW(W_MX2)) mx2 (
-        .in({d, c, b, mul_product, zero_word}), .sel(mx2_sel), .y(mx2_operand));
+        .in(mx2_in), .sel(mx2_sel), .y(mx2_operand));
     key_block #(.W(WC)) bk (.x(rg_value), .pass(bk_pass), .y(bk_operand));
     constant #(.W(1), .VALUE(0)) k_carry0 (.y(carry0));
     adder #(.WA(WC), .WB(WC), .WS(WC), .ASIGNED(1), .BSIGNED(1)) sm (

@@ -1,0 +1,69 @@
+# Seed 004's units as RTL (rtl/interp: coef_unit_cubic, horner_unit + horner_ctrl) co-simulated with
+# the SystemC units through verilator --sc. Included by testbenches/rtl/CMakeLists.txt when
+# Verilator is found (cmake/verilator.cmake); nothing here runs without it.
+
+# interp_terms.vh (the Horner controller's select codes and the coefficient networks' term tables)
+# must exist when CMake configures, because verilate() runs Verilator then. Its generator reads
+# SystemC headers, so it is compiled against libsystemc here; a change to it or to the headers it
+# reads re-runs CMake.
+set(_interp_gen_src ${CMAKE_CURRENT_SOURCE_DIR}/gen_interp_rtl.cpp)
+set(_interp_gen_dir ${PROJECT_BINARY_DIR}/CMakeFiles/gen_interp_rtl_configure)
+try_compile(_interp_gen_ok ${_interp_gen_dir} SOURCES ${_interp_gen_src}
+            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src;${PROJECT_SOURCE_DIR}/modules"
+            LINK_LIBRARIES PkgConfig::SYSTEMC
+            CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
+            OUTPUT_VARIABLE _interp_gen_log COPY_FILE ${_interp_gen_dir}/gen_interp_rtl)
+if(NOT _interp_gen_ok)
+  message(FATAL_ERROR "testbenches/rtl/gen_interp_rtl.cpp did not compile:\n${_interp_gen_log}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
+                        ${_interp_gen_dir}/gen_interp_rtl ${_interp_gen_dir}/interp_terms.vh
+                RESULT_VARIABLE _interp_gen_rc)
+if(_interp_gen_rc)
+  message(FATAL_ERROR "gen_interp_rtl failed (${_interp_gen_rc})")
+endif()
+file(MAKE_DIRECTORY ${SHADING_RTL_GENERATED})
+file(COPY_FILE ${_interp_gen_dir}/interp_terms.vh ${SHADING_RTL_GENERATED}/interp_terms.vh ONLY_IF_DIFFERENT)
+set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_interp_gen_src}
+             ${PROJECT_SOURCE_DIR}/modules/interp/coef_unit_cubic.h ${PROJECT_SOURCE_DIR}/modules/interp/horner_ctrl.h
+             ${PROJECT_SOURCE_DIR}/modules/blocks/shift_add_network.h)
+
+set(SHADING_RTL_INTERP_DIRS ${SHADING_RTL_DIR}/interp ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_GENERATED})
+
+# shading_verilate_interp(<target> <prefix> <top> [<-Gparam=value>...]): one RTL unit as the SystemC
+# module <prefix>, pins as sc_uint<W> like our units' (--pins-sc-uint); -Wall warnings fail the build.
+function(shading_verilate_interp target prefix top)
+  verilate(${target} SYSTEMC
+           PREFIX ${prefix}
+           TOP_MODULE ${top}
+           SOURCES ${SHADING_RTL_DIR}/interp/${top}.v
+           INCLUDE_DIRS ${SHADING_RTL_INTERP_DIRS}
+           VERILATOR_ARGS -Wall --pins-sc-uint ${ARGN})
+endfunction()
+
+# The co-simulation suite: the RTL coefficient unit (4 variants) and Horner unit beside ours.
+shading_add_gtest(test_rtl_interp SOURCES test_rtl_interp.cpp TIMEOUT 120)
+target_include_directories(test_rtl_interp PRIVATE ${PROJECT_SOURCE_DIR}/testbenches)
+target_link_libraries(test_rtl_interp PRIVATE Threads::Threads)
+shading_verilate_interp(test_rtl_interp Vrtl_coef_c1sa coef_unit_cubic -GSET=0 -GDIV=0)
+shading_verilate_interp(test_rtl_interp Vrtl_coef_c1ex coef_unit_cubic -GSET=0 -GDIV=1)
+shading_verilate_interp(test_rtl_interp Vrtl_coef_c2sa coef_unit_cubic -GSET=1 -GDIV=0)
+shading_verilate_interp(test_rtl_interp Vrtl_coef_c2ex coef_unit_cubic -GSET=1 -GDIV=1)
+shading_verilate_interp(test_rtl_interp Vrtl_horner_unit horner_unit)
+
+# Lint: every variant under verilator --lint-only -Wall (a warning fails the test).
+set(_interp_ydirs)
+foreach(_d IN LISTS SHADING_RTL_INTERP_DIRS)
+  list(APPEND _interp_ydirs -y ${_d})
+endforeach()
+foreach(_v IN ITEMS "c1sa;0;0" "c1ex;0;1" "c2sa;1;0" "c2ex;1;1")
+  list(GET _v 0 _name)
+  list(GET _v 1 _set)
+  list(GET _v 2 _div)
+  add_test(NAME rtl.lint.coef_unit_cubic.${_name}
+           COMMAND ${VERILATOR_BIN} --lint-only -Wall -GSET=${_set} -GDIV=${_div} --top-module coef_unit_cubic
+                   ${SHADING_RTL_DIR}/interp/coef_unit_cubic.v ${_interp_ydirs})
+endforeach()
+add_test(NAME rtl.lint.horner_unit
+         COMMAND ${VERILATOR_BIN} --lint-only -Wall --top-module horner_unit ${SHADING_RTL_DIR}/interp/horner_unit.v
+                 ${_interp_ydirs})
