@@ -28,7 +28,13 @@ uint64_t horner_add(uint64_t a_bits, uint64_t b_bits) {
 int64_t aligned(int64_t v, int sh) {
     return sh >= 0 ? static_cast<int64_t>(static_cast<uint64_t>(v) << sh) : floor_shift(v, static_cast<unsigned>(-sh));
 }
-int64_t fd_wrap(int64_t v) { return code_value(wrap_bits(v, fd_fmt.width), fd_fmt); }
+// code_value(wrap_bits(v, 56), fd_fmt) without a branch on the sign (the recurrence's hot loop):
+// the bus's top wire moved to bit 63, then shifted back arithmetically.
+int64_t fd_wrap(int64_t v) {
+    static_assert(fd_fmt.is_signed && fd_fmt.width < 64);
+    constexpr unsigned up = 64 - fd_fmt.width;
+    return static_cast<int64_t>(static_cast<uint64_t>(v) << up) >> up;
+}
 
 // The set-up values of the forward differences, codes with `frac` fraction bits.
 struct fd_setup {
@@ -115,28 +121,43 @@ std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code,
     return rg;
 }
 
-std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac) {
+namespace {
+// The recurrence: out[i] = P truncated to coef_fmt bus bits, then P += D1, D1 += D2, D2 += D3.
+template <class T>
+void fd_run(const cubic_coefs& k, unsigned m, unsigned len, int frac, T* out) {
     fd_setup r = fd_setup_values(k, m, frac);
     const unsigned drop = static_cast<unsigned>(frac - coef_fmt.frac);
-    std::vector<uint64_t> out;
-    out.reserve(len);
     for (unsigned i = 0; i < len; ++i) {
-        out.push_back(coef_bits(floor_shift(r.p, drop)));
+        out[i] = static_cast<T>(coef_bits(r.p >> drop));  // floor_shift on 64 bits: drop < 56
         r.p = fd_wrap(r.p + r.d1);
         r.d1 = fd_wrap(r.d1 + r.d2);
         r.d2 = fd_wrap(r.d2 + r.d3);
     }
+}
+}  // namespace
+
+std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac) {
+    std::vector<uint64_t> out(len);
+    fd_run(k, m, len, frac, out.data());
     return out;
+}
+
+void golden_fd_to(const cubic_coefs& k, unsigned m, unsigned len, uint32_t* out, int frac) {
+    static_assert(coef_fmt.width == 32, "golden_fd_to's uint32_t outputs hold coef_fmt codes");
+    fd_run(k, m, len, frac, out);
 }
 
 std::vector<uint64_t> golden_interp_line(const std::vector<interval_samples>& intervals, unsigned m,
                                          sample_set set, div3_mode mode, div3_grouping grouping) {
     const unsigned n = 1u << m;
-    std::vector<uint64_t> out;
+    const auto len_of = [n](const interval_samples& iv) { return (iv.len == 0 || iv.len > n) ? n : iv.len; };
+    std::size_t total = 0;
+    for (const auto& iv : intervals) total += len_of(iv);
+    std::vector<uint64_t> out(total);
+    std::size_t at = 0;
     for (const auto& iv : intervals) {
-        const unsigned len = (iv.len == 0 || iv.len > n) ? n : iv.len;
-        const auto px = golden_fd(golden_cubic_coefs(iv.i, set, mode, grouping), m, len);
-        out.insert(out.end(), px.begin(), px.end());
+        fd_run(golden_cubic_coefs(iv.i, set, mode, grouping), m, len_of(iv), fd_fmt.frac, out.data() + at);
+        at += len_of(iv);
     }
     return out;
 }

@@ -39,6 +39,9 @@ inline uint64_t golden_horner(const cubic_coefs& k, uint64_t t_code, bool degree
 // `frac` fraction bits (fd_fmt.frac in the hardware; fewer to study the error growth), then
 // `len` outputs, each P truncated (floor) to coef_fmt bus bits.
 std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac = fd_fmt.frac);
+// The same outputs written to out[0 .. len) (coef_fmt is 32 bits wide), no allocation: for the
+// loosely-timed line wrapper's per-interval hot path (modules/tlm/line_tlm.h).
+void golden_fd_to(const cubic_coefs& k, unsigned m, unsigned len, uint32_t* out, int frac = fd_fmt.frac);
 
 // The raster-line interpolator (modules/interp_line_unit.h): per interval, I1..I4 (sample_fmt
 // codes) -> golden_cubic_coefs -> golden_fd over its len pixels (len 0 or > 2^m: a full interval of
