@@ -1,7 +1,7 @@
 // TLM-2.0 wrapper of seed 004's raster-line interpolator (interp/interp_line_unit.h, cubic: the
 // degree is fixed for this unit): a tlm_utils::simple_target_socket `socket` with b_transport and
 // transport_dbg over the register map below, in one of two timing modes chosen at construction
-// (tlm_timing, as specular_tlm.h):
+// (tlm_timing, tlm_target_base.h):
 //   pin_accurate   - the wrapper owns the signal-level unit and drives its clock and its
 //                    start/ready handshake from the b_transport caller's thread with wait(): a
 //                    burst costs the unit's real clocks and the waveform shows them;
@@ -57,15 +57,13 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
-#include <sstream>
 #include <systemc>
 #include <vector>
 
-#include "core/report_ids.h"
 #include "formats/interp_formats.h"
 #include "golden/interp_golden.h"
 #include "interp/interp_line_unit.h"
-#include "tlm/specular_tlm.h"  // tlm_timing
+#include "tlm/tlm_target_base.h"
 
 namespace shading {
 
@@ -79,8 +77,9 @@ inline constexpr uint64_t PIXEL_BLOCK = 0x10000;
 inline constexpr std::size_t BLOCK_PIXELS = BLOCK_INTERVALS << interp::m_max;  // 16384
 inline constexpr uint64_t PIXEL_BLOCK_END = PIXEL_BLOCK + 4 * BLOCK_PIXELS;
 inline constexpr uint32_t STATUS_READY = 1u << 0;
-inline constexpr uint32_t ERR_ADDRESS = 1u << 1, ERR_SIZE = 1u << 2, ERR_BYTE_ENABLE = 1u << 3,
-                          ERR_COMMAND = 1u << 4, ERR_NOT_READY = 1u << 5, ERR_LENGTH = 1u << 6;
+inline constexpr uint32_t ERR_ADDRESS = tlm_err::address, ERR_SIZE = tlm_err::size,
+                          ERR_BYTE_ENABLE = tlm_err::byte_enable, ERR_COMMAND = tlm_err::command,
+                          ERR_NOT_READY = tlm_err::not_ready, ERR_LENGTH = 1u << 6;
 inline constexpr uint32_t ERR_MASK = 0x7Eu;
 inline constexpr unsigned STATUS_PIXELS_SHIFT = 16;
 inline constexpr uint32_t CONTROL_M_MASK = 0xFu, CONTROL_SET = 1u << 4, CONTROL_DIV3_EXACT = 1u << 5,
@@ -99,7 +98,7 @@ struct line_tlm_clock {
 
 template <unsigned M, interp::sample_set SET, interp::div3_mode DIV,
           interp::div3_grouping G = interp::div3_grouping::whole_sum>
-class line_tlm : public sc_core::sc_module {
+class line_tlm : public tlm_target_base {
     using unit_t = interp_line_unit<M, SET, DIV, G>;
     using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
     using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
@@ -122,7 +121,7 @@ public:
 
     line_tlm(const sc_core::sc_module_name& name, tlm_timing timing, const line_tlm_clock& ck = {},
              const interp_delays& delays = {})
-        : sc_module(name), timing_(timing), ck_(ck) {
+        : tlm_target_base(name, timing), ck_(ck) {
         socket.register_b_transport(this, &line_tlm::b_transport);
         socket.register_transport_dbg(this, &line_tlm::transport_dbg);
         if (timing_ == tlm_timing::pin_accurate) {
@@ -201,17 +200,6 @@ public:
     }
 
 private:
-    static uint32_t get32(const unsigned char* d) {
-        uint32_t v;
-        std::memcpy(&v, d, 4);
-        return v;
-    }
-    static uint16_t get16(const unsigned char* d) {
-        uint16_t v;
-        std::memcpy(&v, d, 2);
-        return v;
-    }
-    static void put32(unsigned char* d, uint32_t v) { std::memcpy(d, &v, 4); }
 
     // Copies one interval of a burst into INTERVAL_BLOCK slot j (reserved word 0) and decodes it
     // (check() has already refused a LEN outside 1..2^M).
@@ -226,30 +214,20 @@ private:
         return iv;
     }
 
+    // The map's regions for check_access(): registers, INTERVAL_BLOCK (16-byte intervals), PIXEL_BLOCK.
+    static constexpr tlm_region map_[] = {
+        {0, line_tlm_map::REG_END, 4, true},
+        {line_tlm_map::INTERVAL_BLOCK, line_tlm_map::INTERVAL_BLOCK_END, line_tlm_map::INTERVAL_STRIDE, false},
+        {line_tlm_map::PIXEL_BLOCK, line_tlm_map::PIXEL_BLOCK_END, 4, false}};
+
     // Rejects a bad access with its response status, a warning and the error log bit; else true.
     bool check(tlm::tlm_generic_payload& p) {
         namespace m = line_tlm_map;
+        const int region = check_access(p, map_);
+        if (region < 0) return false;
         const uint64_t addr = p.get_address();
         const uint64_t n = p.get_data_length();
-        if (p.get_command() == tlm::TLM_IGNORE_COMMAND) {
-            p.set_response_status(tlm::TLM_OK_RESPONSE);
-            return false;
-        }
-        if (p.get_byte_enable_ptr() != nullptr)
-            return reject(p, tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, m::ERR_BYTE_ENABLE, "byte enables are not supported");
-        const bool in_regs = addr < m::REG_END;
-        const bool in_iv = addr >= m::INTERVAL_BLOCK && addr < m::INTERVAL_BLOCK_END;
-        const bool in_px = addr >= m::PIXEL_BLOCK && addr < m::PIXEL_BLOCK_END;
-        if (!in_regs && !in_iv && !in_px)
-            return reject(p, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS, "address outside the register map");
-        bool size_ok = p.get_streaming_width() == n && n > 0;
-        if (in_regs) size_ok = size_ok && n == 4 && addr % 4 == 0;
-        if (in_iv) size_ok = size_ok && n % m::INTERVAL_STRIDE == 0 && addr % m::INTERVAL_STRIDE == 0 &&
-                             addr + n <= m::INTERVAL_BLOCK_END;
-        if (in_px) size_ok = size_ok && n % 4 == 0 && addr % 4 == 0 && addr + n <= m::PIXEL_BLOCK_END;
-        if (!size_ok)
-            return reject(p, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE,
-                          "bad length, alignment or streaming width for this register or window");
+        const bool in_regs = region == 0, in_iv = region == 1, in_px = region == 2;
         const bool read_only = in_px || (in_regs && addr == m::STATUS);
         if (p.is_write() && read_only)
             return reject(p, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND, "write to a read-only register");
@@ -265,16 +243,6 @@ private:
             }
         }
         return true;
-    }
-
-    bool reject(tlm::tlm_generic_payload& p, tlm::tlm_response_status s, uint32_t bit, const char* why) {
-        errors_ |= bit;
-        std::ostringstream os;
-        os << name() << ": " << (p.is_write() ? "write" : "read") << " of " << p.get_data_length()
-           << " bytes at 0x" << std::hex << p.get_address() << std::dec << ": " << why;
-        SC_REPORT_WARNING(msg::tlm, os.str().c_str());
-        p.set_response_status(s);
-        return false;
     }
 
     uint32_t reg_read(uint64_t addr) const {
@@ -319,16 +287,13 @@ private:
         return total;
     }
 
-    tlm_timing timing_;
     line_tlm_clock ck_;
-    sc_core::sc_mutex lock_;
 
     // The model's state: the windows, READY, the last burst's pixel count, the bus-error log.
     std::array<unsigned char, line_tlm_map::INTERVAL_BLOCK_END - line_tlm_map::INTERVAL_BLOCK> intervals_{};
     std::array<uint32_t, line_tlm_map::BLOCK_PIXELS> pixels_{};
     std::size_t pixel_count_ = 0;
-    bool ready_ = false;
-    uint32_t errors_ = 0;
+    bool ready_ = false;  // (the bus-error log is tlm_target_base's errors_)
 };
 
 }  // namespace shading

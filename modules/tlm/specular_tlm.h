@@ -61,12 +61,8 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
-#include <sstream>
-#include <string>
 #include <systemc>
-#include <vector>
 
-#include "core/report_ids.h"
 #include "formats/specular_formats.h"
 #include "golden/specular_golden.h"
 #include "golden/ua22802_golden.h"
@@ -74,11 +70,10 @@
 #include "specular/specular_device.h"
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
+#include "tlm/tlm_target_base.h"
 #include "ua60553/a_gen_linear.h"
 
 namespace shading {
-
-enum class tlm_timing { loosely_timed, pin_accurate };
 
 namespace tlm_map {
 inline constexpr uint64_t N = 0x000, KSI_R = 0x004, KSI_G = 0x008, KSI_B = 0x00C, COS = 0x010;
@@ -90,8 +85,9 @@ inline constexpr uint64_t COS_BLOCK_END = COS_BLOCK + 2 * BLOCK_PIXELS;
 inline constexpr uint64_t RESULT_STRIDE = 16;
 inline constexpr uint64_t RESULT_BLOCK_END = RESULT_BLOCK + RESULT_STRIDE * BLOCK_PIXELS;
 inline constexpr uint32_t STATUS_READY = 1u << 0;
-inline constexpr uint32_t ERR_ADDRESS = 1u << 1, ERR_SIZE = 1u << 2, ERR_BYTE_ENABLE = 1u << 3,
-                          ERR_COMMAND = 1u << 4, ERR_NOT_READY = 1u << 5;
+inline constexpr uint32_t ERR_ADDRESS = tlm_err::address, ERR_SIZE = tlm_err::size,
+                          ERR_BYTE_ENABLE = tlm_err::byte_enable, ERR_COMMAND = tlm_err::command,
+                          ERR_NOT_READY = tlm_err::not_ready;
 inline constexpr uint32_t CONTROL_OVF = 1u << 0, CONTROL_VARIANT_SHIFT = 4, CONTROL_VARIANT_MASK = 3u << 4,
                           CONTROL_TIMING = 1u << 8, CONTROL_CLEAR_ERR = 1u << 31;
 }  // namespace tlm_map
@@ -126,7 +122,7 @@ struct tlm_variant<a_gen_tuned> {
 };
 
 template <class AGen>
-class specular_tlm : public sc_core::sc_module {
+class specular_tlm : public tlm_target_base {
     using device_t = specular_device<AGen>;
     using n_t = sc_dt::sc_uint<AGen::n_fmt.width>;
     using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
@@ -152,7 +148,7 @@ public:
     specular_tlm(const sc_core::sc_module_name& name, tlm_timing timing,
                  const typename AGen::config& gen = AGen::default_config(), const tlm_strobe_timing& t = {},
                  const block_delays& delays = {})
-        : sc_module(name), timing_(timing), gen_(gen), t_(t), a_(tlm_variant<AGen>::a(0, gen)) {
+        : tlm_target_base(name, timing), gen_(gen), t_(t), a_(tlm_variant<AGen>::a(0, gen)) {
         socket.register_b_transport(this, &specular_tlm::b_transport);
         socket.register_transport_dbg(this, &specular_tlm::transport_dbg);
         if (timing_ == tlm_timing::pin_accurate) {
@@ -223,12 +219,6 @@ public:
     }
 
 private:
-    static uint32_t get32(const unsigned char* d) {
-        uint32_t v;
-        std::memcpy(&v, d, 4);
-        return v;
-    }
-    static void put32(unsigned char* d, uint32_t v) { std::memcpy(d, &v, 4); }
     static bool costs_time(uint64_t addr) {
         return addr <= tlm_map::COS || (addr >= tlm_map::COS_BLOCK && addr < tlm_map::COS_BLOCK_END);
     }
@@ -240,29 +230,19 @@ private:
         d.out25_r(out[i][0]); d.out26_g(out[i][1]); d.out27_b(out[i][2]); d.out29_valid(out29[i]);
     }
 
+    // The map's regions for check_access(): registers, COS_BLOCK (16-bit codes), RESULT_BLOCK (words).
+    static constexpr tlm_region map_[] = {{0, tlm_map::REG_END, 4, true},
+                                          {tlm_map::COS_BLOCK, tlm_map::COS_BLOCK_END, 2, false},
+                                          {tlm_map::RESULT_BLOCK, tlm_map::RESULT_BLOCK_END, 4, false}};
+
     // Rejects a bad access with its response status, a warning and the error log bit; else true.
     bool check(tlm::tlm_generic_payload& p) {
+        const int region = check_access(p, map_);
+        if (region < 0) return false;
         const uint64_t addr = p.get_address();
         const uint64_t len = p.get_data_length();
         const bool is_write = p.is_write();
-        if (p.get_command() == tlm::TLM_IGNORE_COMMAND) {
-            p.set_response_status(tlm::TLM_OK_RESPONSE);
-            return false;
-        }
-        if (p.get_byte_enable_ptr() != nullptr)
-            return reject(p, tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, tlm_map::ERR_BYTE_ENABLE, "byte enables are not supported");
-        const bool in_regs = addr < tlm_map::REG_END;
-        const bool in_cos = addr >= tlm_map::COS_BLOCK && addr < tlm_map::COS_BLOCK_END;
-        const bool in_res = addr >= tlm_map::RESULT_BLOCK && addr < tlm_map::RESULT_BLOCK_END;
-        if (!in_regs && !in_cos && !in_res)
-            return reject(p, tlm::TLM_ADDRESS_ERROR_RESPONSE, tlm_map::ERR_ADDRESS, "address outside the register map");
-        bool size_ok = p.get_streaming_width() == len && len > 0;
-        if (in_regs) size_ok = size_ok && len == 4 && addr % 4 == 0;
-        if (in_cos) size_ok = size_ok && len % 2 == 0 && addr % 2 == 0 && addr + len <= tlm_map::COS_BLOCK_END;
-        if (in_res) size_ok = size_ok && len % 4 == 0 && addr % 4 == 0 && addr + len <= tlm_map::RESULT_BLOCK_END;
-        if (!size_ok)
-            return reject(p, tlm::TLM_BURST_ERROR_RESPONSE, tlm_map::ERR_SIZE,
-                          "bad length, alignment or streaming width for this register or window");
+        const bool in_regs = region == 0, in_res = region == 2;
         const bool read_only = in_res || (in_regs && addr >= tlm_map::RESULT_R && addr <= tlm_map::STATUS);
         if (is_write && read_only)
             return reject(p, tlm::TLM_COMMAND_ERROR_RESPONSE, tlm_map::ERR_COMMAND, "write to a read-only register");
@@ -279,16 +259,6 @@ private:
                               "result read before it is ready (no pixel shaded since N, KSI or OVF changed)");
         }
         return true;
-    }
-
-    bool reject(tlm::tlm_generic_payload& p, tlm::tlm_response_status s, uint32_t bit, const char* why) {
-        errors_ |= bit;
-        std::ostringstream os;
-        os << name() << ": " << (p.is_write() ? "write" : "read") << " of " << p.get_data_length()
-           << " bytes at 0x" << std::hex << p.get_address() << std::dec << ": " << why;
-        SC_REPORT_WARNING(msg::tlm, os.str().c_str());
-        p.set_response_status(s);
-        return false;
     }
 
     uint32_t reg_read(uint64_t addr) const {
@@ -405,10 +375,8 @@ private:
         }
     }
 
-    tlm_timing timing_;
     typename AGen::config gen_;
     tlm_strobe_timing t_;
-    sc_core::sc_mutex lock_;
 
     // The model's state (registers, latched results, windows).
     uint32_t n_ = 0, cos_reg_ = 0;
@@ -418,8 +386,7 @@ private:
     std::array<uint16_t, tlm_map::BLOCK_PIXELS> cos_{};
     std::array<std::array<uint32_t, 4>, tlm_map::BLOCK_PIXELS> results_{};
     std::array<uint64_t, tlm_map::BLOCK_PIXELS> shaded_{};  // generation a pixel was shaded in
-    uint64_t generation_ = 1;
-    uint32_t errors_ = 0;  // STATUS bits 5:1, the bus-error log
+    uint64_t generation_ = 1;  // (STATUS bits 5:1, the bus-error log, is tlm_target_base's errors_)
 };
 
 using specular_tlm_ua60553 = specular_tlm<a_gen_linear>;
