@@ -5,9 +5,11 @@
 //
 //   ua22802_tb                         8 exponents x 48 pixels, VCD in traces/ua22802.vcd
 //   ua22802_tb --random 100000 --seed 7 --mode wrap
+//   ua22802_tb --random 100000 --abstraction fast    the fast pin-level model (specular_fast.h)
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "common/bench_runner.h"
@@ -38,6 +40,43 @@ std::vector<surface> surfaces_for(const std::vector<unsigned>& ns, unsigned pixe
     return surfaces;
 }
 
+template <typename Device>
+constexpr bool is_fast = std::is_same_v<Device, device_ua22802_fast>;
+
+template <typename Device>
+int run_device(bench_runner& run, const std::vector<unsigned>& ns, unsigned pixels) {
+    const overflow_mode mode = run.mode();
+    specular_bench<Device> bench(
+        "tb", run.random() ? random_surfaces(run.random_count(), run.seed()) : surfaces_for(ns, pixels),
+        strobe_timing{},
+        [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) { return golden_ua22802(n, c, k, mode); },
+        mode);
+    bench.checker.inject_mismatch(run.inject(), run.inject_count());
+    bench.checker.measure_accuracy(!run.random());
+    using rom_t = shading::rom<ua22802::addr_fmt.width, ua22802::a_fmt.width>;
+    std::printf("UA 22802 ROM: %llu words x %d bits (Q%d.%d unsigned) = %llu bits = %llu bytes\n",
+                static_cast<unsigned long long>(rom_t::words), static_cast<int>(ua22802::a_fmt.width),
+                ua22802::a_fmt.int_bits(), ua22802::a_fmt.frac, static_cast<unsigned long long>(rom_t::bits),
+                static_cast<unsigned long long>(rom_t::bits / 8));
+    run.simulate(bench, run.random() ? sc_core::sc_max_time() : sc_core::sc_time(1, sc_core::SC_SEC));
+
+    if (run.random()) {
+        run.report_random("random_" + run.mode_name() + (is_fast<Device> ? "_fast" : ""), bench.checker.samples(),
+                          bench.checker.mismatches());
+    } else {
+        std::printf("%6s %8s %10s %14s\n", "n", "samples", "mismatches", "max_rel_err");
+        for (const auto& [n, st] : bench.checker.stats()) {
+            std::printf("%6llu %8zu %10zu %14.6f\n", static_cast<unsigned long long>(n), st.samples, st.mismatches,
+                        st.max_rel_err_056);
+            run.summary({run.bench(), "n=" + std::to_string(n) + (mode == overflow_mode::wrap ? "_wrap" : ""),
+                         st.samples, st.mismatches, fmt_percent(st.max_rel_err_056, 2), "1 strobe",
+                         "max rel err vs cos^n where cos^n >= 0.56; ROM " + std::to_string(rom_t::bits) +
+                             " bits"});
+        }
+    }
+    return run.finish(bench.checker.samples(), bench.checker.mismatches());
+}
+
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
@@ -48,34 +87,16 @@ int sc_main(int argc, char* argv[]) {
     run.app.add_option("--pixels", pixels, "pixels per surface (half over [0,1], half where cos^n >= 0.56)")
         ->check(CLI::Range(2u, 100000u));
     run.app.add_option("--n", ns, "specular exponents, one surface each")->check(CLI::Range(0u, 1023u));
+    std::string abstraction = "block";
+    run.app.add_option("--abstraction", abstraction,
+                       "device model: block (every block of Fig. 1) or fast (one process at the pins; "
+                       "specular/specular_fast.h)")
+        ->check(CLI::IsMember({"block", "fast"}));
     if (auto rc = run.parse(argc, argv)) return *rc;
+    if (abstraction == "fast") run.default_vcd("traces/ua22802_fast");
     report_log::get().expect(msg::input);  // n = 0 or n > 1000 on the command line: documented
 
-    const overflow_mode mode = run.mode();
-    specular_bench<device_ua22802> bench(
-        "tb", run.random() ? random_surfaces(run.random_count(), run.seed()) : surfaces_for(ns, pixels),
-        strobe_timing{},
-        [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) { return golden_ua22802(n, c, k, mode); },
-        mode);
-    bench.checker.inject_mismatch(run.inject(), run.inject_count());
-    std::printf("UA 22802 ROM: %llu words x %d bits (Q%d.%d unsigned) = %llu bits = %llu bytes\n",
-                static_cast<unsigned long long>(bench.dut.a_gen.rom.words), static_cast<int>(ua22802::a_fmt.width),
-                ua22802::a_fmt.int_bits(), ua22802::a_fmt.frac, static_cast<unsigned long long>(bench.dut.a_gen.rom.bits),
-                static_cast<unsigned long long>(bench.dut.a_gen.rom.bits / 8));
-    run.simulate(bench, run.random() ? sc_core::sc_max_time() : sc_core::sc_time(1, sc_core::SC_SEC));
-
-    if (run.random()) {
-        run.report_random("random_" + run.mode_name(), bench.checker.samples(), bench.checker.mismatches());
-    } else {
-        std::printf("%6s %8s %10s %14s\n", "n", "samples", "mismatches", "max_rel_err");
-        for (const auto& [n, st] : bench.checker.stats()) {
-            std::printf("%6llu %8zu %10zu %14.6f\n", static_cast<unsigned long long>(n), st.samples, st.mismatches,
-                        st.max_rel_err_056);
-            run.summary({run.bench(), "n=" + std::to_string(n) + (mode == overflow_mode::wrap ? "_wrap" : ""),
-                         st.samples, st.mismatches, fmt_percent(st.max_rel_err_056, 2), "1 strobe",
-                         "max rel err vs cos^n where cos^n >= 0.56; ROM " + std::to_string(bench.dut.a_gen.rom.bits) +
-                             " bits"});
-        }
-    }
-    return run.finish(bench.checker.samples(), bench.checker.mismatches());
+    return abstraction == "fast" ? run_device<device_ua22802_fast>(run, ns, pixels)
+                                 : run_device<device_ua22802>(run, ns, pixels);
 }
+

@@ -6,6 +6,7 @@
 //   ua60553_tb                       scene line for n = 10 and 100, VCD in traces/ua60553.vcd
 //   ua60553_tb --sweep --no-vcd      every cos code 0..1.0 for n = 1, 10, 100, 512, 1000
 //   ua60553_tb --random 100000 --seed 7 --generator minimax --mode wrap
+//   ua60553_tb --random 1000000 --abstraction fast      the fast pin-level model (specular_fast.h)
 #include <cstdio>
 #include <map>
 #include <string>
@@ -29,6 +30,8 @@ struct options {
     std::vector<unsigned> ns;
     unsigned scene_pixels = 96;
     double t_low_ns = 15, t_high_ns = 5;
+    std::string abstraction = "block";
+    bool zero_delays = false;
 };
 
 const std::map<std::string, const ua60553::tuned_generator*> tuned{{"minimax", &ua60553::minimax},
@@ -57,18 +60,23 @@ int run_device(bench_runner& run, options& o, const std::string& name, specular_
     t.t_low = sc_core::sc_time(o.t_low_ns, sc_core::SC_NS);
     t.t_high = sc_core::sc_time(o.t_high_ns, sc_core::SC_NS);
     t.cos_lead = t.t_high / 2;
+    block_delays delays;
+    if (o.zero_delays)
+        delays.reg = delays.inverter = delays.adder = delays.multiplier = delays.rom = delays.gate = sc_core::SC_ZERO_TIME;
     specular_bench<Device> bench("tb", stimulus(run, o), t, std::move(golden), run.mode(),
-                                 std::forward<DeviceArgs>(device_args)...);
+                                 std::forward<DeviceArgs>(device_args)..., delays);
     bench.checker.inject_mismatch(run.inject(), run.inject_count());
+    bench.checker.measure_accuracy(!run.random());
     const auto limit = run.random() ? sc_core::sc_max_time()
                                     : bench.stim.duration() * 1.01 + sc_core::sc_time(1, sc_core::SC_US);
     run.simulate(bench, limit);
 
-    std::printf("%s (%s mode), strobe %.1f ns low / %.1f ns high, critical path %s\n", name.c_str(),
-                run.mode_name().c_str(), o.t_low_ns, o.t_high_ns, bench.dut.rg2_to_outputs().to_string().c_str());
+    std::printf("%s (%s mode, %s model%s), strobe %.1f ns low / %.1f ns high, critical path %s\n", name.c_str(),
+                run.mode_name().c_str(), o.abstraction.c_str(), o.zero_delays ? ", zero block delays" : "", o.t_low_ns,
+                o.t_high_ns, bench.dut.rg2_to_outputs().to_string().c_str());
     if (run.random()) {
-        run.report_random("random_" + o.generator + "_" + run.mode_name(), bench.checker.samples(),
-                          bench.checker.mismatches());
+        run.report_random("random_" + o.generator + "_" + run.mode_name() + (o.abstraction == "fast" ? "_fast" : ""),
+                          bench.checker.samples(), bench.checker.mismatches());
     } else {
         std::printf("%6s %9s %11s %26s\n", "n", "samples", "mismatches", "max rel err (cos^n>=0.56)");
         for (const auto& [n, st] : bench.checker.stats()) {
@@ -99,19 +107,30 @@ int sc_main(int argc, char* argv[]) {
     run.app.add_option("--scene-pixels", o.scene_pixels, "pixels of the sphere's raster line")->check(CLI::Range(2u, 100000u));
     run.app.add_option("--t-low-ns", o.t_low_ns, "ctl17 low phase = settling time T (Fig. 3)")->check(CLI::PositiveNumber);
     run.app.add_option("--t-high-ns", o.t_high_ns, "ctl17 high phase")->check(CLI::PositiveNumber);
+    run.app.add_option("--abstraction", o.abstraction,
+                       "device model: block (every block of Fig. 1, per-block waveform) or fast (one process at the "
+                       "pins, the same pin timing; specular/specular_fast.h)")
+        ->check(CLI::IsMember({"block", "fast"}));
+    run.app.add_flag("--zero-delays", o.zero_delays, "every block delay 0: the network settles in delta time");
     if (auto rc = run.parse(argc, argv)) return *rc;
-    if (o.generator != "patent") run.default_vcd("traces/ua60553_" + o.generator);
+    if (o.generator != "patent" || o.abstraction != "block")
+        run.default_vcd("traces/ua60553" + (o.generator != "patent" ? "_" + o.generator : std::string()) +
+                        (o.abstraction != "block" ? "_" + o.abstraction : std::string()));
 
     const overflow_mode mode = run.mode();
-    if (o.generator == "patent")
-        return run_device<device_ua60553>(run, o, "UA 60553",
-                                          [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
-                                              return golden_ua60553(n, c, k, mode);
-                                          });
+    const bool fast = o.abstraction == "fast";
+    if (o.generator == "patent") {
+        const auto golden = [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+            return golden_ua60553(n, c, k, mode);
+        };
+        return fast ? run_device<device_ua60553_fast>(run, o, "UA 60553", golden, ua60553::patent)
+                    : run_device<device_ua60553>(run, o, "UA 60553", golden, ua60553::patent);
+    }
     const ua60553::tuned_generator& g = *tuned.at(o.generator);
-    return run_device<device_ua60553_tuned>(run, o, "UA 60553 tuned (" + o.generator + ")",
-                                            [mode, &g](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
-                                                return golden_ua60553_tuned(n, c, k, mode, g);
-                                            },
-                                            g);
+    const auto golden = [mode, &g](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        return golden_ua60553_tuned(n, c, k, mode, g);
+    };
+    const std::string name = "UA 60553 tuned (" + o.generator + ")";
+    return fast ? run_device<device_ua60553_tuned_fast>(run, o, name, golden, g)
+                : run_device<device_ua60553_tuned>(run, o, name, golden, g);
 }
