@@ -12,6 +12,8 @@
 //   --random N            random differential mode: N random stimuli against the golden model
 //   --inject-mismatch K   (hidden, for the tests) corrupt the golden value of sample K
 //   --inject-count C      (hidden) ... and of the C - 1 samples after it (default 1)
+//   --jobs J              split a random run into J independent processes (default: one per core
+//                         for runs of 100 000 stimuli or more); bench_jobs.h
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -32,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/bench_jobs.h"
 #include "common/report_log.h"
 #include "core/trace.h"
 #include "formats/fixed_point.h"
@@ -91,6 +94,8 @@ public:
         // Hidden (empty group): the CI proves with it that a mismatch makes the program fail.
         app.add_option("--inject-mismatch", inject_, "corrupt the golden value of sample K (0-based)")->group("");
         app.add_option("--inject-count", inject_count_, "corrupt C samples from K on (256 must not exit 0)")->group("");
+        app.add_option("--jobs", jobs_, "random mode: J independent processes (default: one per core from 100000 stimuli)")
+            ->check(CLI::Range(1u, 1024u));
     }
 
     CLI::App app;
@@ -104,6 +109,13 @@ public:
             return app.exit(e) == 0 ? 0 : 2;
         }
         if (random_ > 0 && app.count("--vcd") == 0) no_vcd_ = true;  // 10^7 stimuli make a huge VCD
+        if (random_ > 0) {
+            std::string csv;
+            if (const auto* o = app.get_option_no_throw("--csv"); o != nullptr && o->count() > 0) csv = o->as<std::string>();
+            const split_plan plan = plan_split(random_, app.count("--jobs") > 0 ? jobs_ : 0, seed_, inject_,
+                                               inject_count_, app.count("--vcd") > 0);
+            if (plan.jobs > 1) return run_split(plan, bench_, argc, argv, summary_, csv);
+        }
         report_log::install();
         return std::nullopt;
     }
@@ -176,6 +188,7 @@ private:
     std::string bench_, vcd_, summary_, mode_name_ = "saturate";
     bool no_vcd_ = false, finished_ = false;
     uint64_t seed_ = 1, random_ = 0;
+    unsigned jobs_ = 1;
     std::size_t inject_ = no_injection, inject_count_ = 1;
     double wall_ = 0.0;
 };
