@@ -67,3 +67,12 @@ endforeach()
 add_test(NAME rtl.lint.horner_unit
          COMMAND ${VERILATOR_BIN} --lint-only -Wall --top-module horner_unit ${SHADING_RTL_DIR}/interp/horner_unit.v
                  ${_interp_ydirs})
+
+# Synthesis smoke test (scripts/synth.sh, README "Hardware cost by synthesis"): the flow runs on the
+# smallest unit (UA 60553's generator), and yosys, reading the generated ROM case tables as memories,
+# counts exactly the ROM size of the format tables (16 384 bits at F = 6, and F = 2). Skipped (exit 3)
+# when yosys is not installed.
+add_test(NAME synth.smoke
+         COMMAND ${PROJECT_SOURCE_DIR}/scripts/synth.sh --build ${PROJECT_BINARY_DIR}
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/synth_smoke --jobs 1 --only "^(gen_linear|rom_f2_bits|rom_f6_bits)$")
+set_tests_properties(synth.smoke PROPERTIES SKIP_RETURN_CODE 3 TIMEOUT 120)

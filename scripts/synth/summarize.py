@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+"""Summary of scripts/synth.sh: one row per synthesized variant (cells, flip-flops, transistor
+estimate, depth of the critical path in gates, ROM bits read as a memory) beside our hand count by
+the cost table's rules (testbenches/study/accuracy_study.cpp: an array multiplier is WA x WB cells,
+a multiplier by a hardwired constant keeps its non-zero rows, an adder counts its output width,
+gates of the special case, registers not counted). Writes synth.csv and synth.md to --out.
+"""
+import argparse
+import csv
+import os
+import re
+import sys
+
+
+def macros(path):
+    """`define NAME value lines of a generated header, values as text."""
+    out = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"`define\s+(\w+)\s+(\S+)", line)
+            if m:
+                out[m.group(1)] = m.group(2)
+    return out
+
+
+def parse_stat(path):
+    """Cells, flip-flops, transistors and memory bits from `stat [-tech cmos]` output."""
+    r = {"cells": None, "ffs": 0, "transistors": None, "memory_bits": None, "blackboxes": 0}
+    if not os.path.exists(path):
+        return r
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"\s+Number of cells:\s+(\d+)", line)
+            if m:
+                r["cells"] = int(m.group(1))
+            m = re.match(r"\s+\$_(S?DFF\w*|DFFE\w*|SR\w*|DLATCH\w*)_\s+(\d+)", line)
+            if m:
+                r["ffs"] += int(m.group(2))
+            m = re.match(r"\s+(ua22802_a_rom\w*)\s+(\d+)", line)
+            if m:
+                r["blackboxes"] += int(m.group(2))
+            m = re.search(r"Estimated number of transistors:\s+(\d+)", line)
+            if m:
+                r["transistors"] = int(m.group(1))
+            m = re.match(r"\s+Number of memory bits:\s+(\d+)", line)
+            if m:
+                r["memory_bits"] = int(m.group(1))
+    return r
+
+
+def parse_ltp(path):
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        m = re.search(r"length=(\d+)", f.read())
+    return int(m.group(1)) if m else None
+
+
+def hand_counts(hw_csv, fmt, terms):
+    """Our count per variant by the cost table's rules: (rom bits, mult cells, adder bits, gates)."""
+    hand = {}
+    if hw_csv and os.path.exists(hw_csv):
+        with open(hw_csv) as f:
+            for row in csv.DictReader(f):
+                hand[row["design"]] = (int(row["rom_bits"]), int(row["total_multiplier_cells"]),
+                                       int(row["total_adder_bits"]), int(row["special_case_gates"]))
+    rows = {}
+    if hand:
+        rows["ua22802"] = rows["ua22802_rom_as_memory"] = hand.get("ua22802_rom")
+        rows["ua60553_patent"] = rows["ua60553_saturate"] = hand.get("ua60553_patent")
+        rows["tuned_minimax"] = hand.get("ua60553_minimax")
+        rows["tuned_rom_matched"] = hand.get("ua60553_rom_matched")
+    # Generators alone, by the same rules from the header (so they exist without hw_cost.csv too).
+    wn, wa = int(fmt["UA60553_N_W"]), int(fmt["UA60553_A_W"])
+    k31 = fmt["UA60553_K31"].split("'b")[1]
+    words = int(fmt["UA22802_ROM_WORDS"])
+    rows["gen_rom"] = (int(fmt["UA22802_ROM_BITS"]), 0, 0, 0)
+    rows["gen_linear"] = (0, wn * k31.count("1"), wa, 0)
+    tk31 = fmt["TUNED_K31"].split("'b")[1]
+    rows["gen_tuned_minimax"] = (0, wn * tk31.count("1"), wa, (wn - int(fmt["TUNED_OR_LO"])) + wa)
+    # Seed 004's units: network adders (terms - 1 each, sum width), /3 by shift-and-add (3 adders
+    # of the coefficient width), Horner's MUL (WC x WT), Sm and the key block's AND gates.
+    ws, wc, wt = int(fmt["INTERP_SUM_W"]), int(fmt["INTERP_COEF_W"]), int(fmt["INTERP_T_W"])
+    for name, case, div in (("coef_c1_shift_add", 1, "sa"), ("coef_c1_exact", 1, "ex"), ("coef_c2_shift_add", 2, "sa")):
+        n = sum(int(terms[f"INTERP_{c}_CASE{case}_N"]) - 1 for c in ("A8", "B", "C3"))
+        adder_bits = n * ws + (2 * 3 * wc if div == "sa" else 0)
+        rows[name] = (0, 0, adder_bits, 0)
+    rows["horner_unit"] = (0, wc * wt, wc, wc)
+    a_int = int(fmt["UA22802_A_W"]) - int(fmt["UA22802_A_FRAC"])
+    for f in range(2, 11):
+        rows[f"rom_f{f}"] = (words * (a_int + f), 0, 0, 0)
+    return rows
+
+
+DESCRIPTIONS = {
+    "ua22802": "UA 22802 device, ROM as logic",
+    "ua22802_rom_as_memory": "UA 22802 device, ROM as a memory (logic outside the ROM)",
+    "ua60553_patent": "UA 60553 as patented (wrapping ADD11)",
+    "ua60553_saturate": "UA 60553, saturating ADD11 (the model's default)",
+    "tuned_minimax": "UA 60553 tuned, minimax",
+    "tuned_rom_matched": "UA 60553 tuned, rom_matched",
+    "gen_rom": "generator alone: UA 22802's ROM (F = 6) as logic",
+    "gen_linear": "generator alone: UA 60553's MUL6 + ADD15",
+    "gen_tuned_minimax": "generator alone: tuned (MUL6 + ADD15 + OR + key)",
+    "coef_c1_shift_add": "cubic coefficient unit, case 1, seed's shift-and-add /3",
+    "coef_c1_exact": "cubic coefficient unit, case 1, exact /3",
+    "coef_c2_shift_add": "cubic coefficient unit, case 2, shift-and-add /3",
+    "horner_unit": "Horner unit (Fig. 4) with its controller",
+}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--formats", required=True)
+    ap.add_argument("--terms", required=True)
+    ap.add_argument("--hand", default=None, help="out/hw_cost.csv of the accuracy study")
+    args = ap.parse_args()
+    fmt, terms = macros(args.formats), macros(args.terms)
+    hand = hand_counts(args.hand, fmt, terms)
+    with open(os.path.join(args.out, "variants.txt")) as f:
+        names = [line.strip() for line in f if line.strip()]
+
+    rows, failed = [], []
+    for name in names:
+        if name.endswith("_bits"):
+            continue
+        st = parse_stat(os.path.join(args.out, "logs", name + ".stat"))
+        depth = parse_ltp(os.path.join(args.out, "logs", name + ".ltp"))
+        if st["cells"] is None or depth is None:
+            failed.append(name)
+            continue
+        mem = parse_stat(os.path.join(args.out, "logs", name + "_bits.stat"))["memory_bits"]
+        if name == "ua22802_rom_as_memory":
+            mem = parse_stat(os.path.join(args.out, "logs", "rom_f%s_bits.stat" % fmt["UA22802_A_FRAC"]))["memory_bits"]
+        if name.startswith("rom_f"):
+            desc = "ROM alone, F = %s fraction bits (%d-bit words)" % (
+                name[5:], int(fmt["UA22802_A_W"]) - int(fmt["UA22802_A_FRAC"]) + int(name[5:]))
+        else:
+            desc = DESCRIPTIONS.get(name, name)
+        h = hand.get(name)
+        cells = st["cells"] - st["blackboxes"]
+        rows.append({
+            "variant": name, "description": desc,
+            "hand_rom_bits": h[0] if h else "", "hand_mult_cells": h[1] if h else "",
+            "hand_adder_bits": h[2] if h else "", "hand_gates": h[3] if h else "",
+            "cells": cells, "flip_flops": st["ffs"], "comb_cells": cells - st["ffs"],
+            "transistors": st["transistors"] if st["transistors"] is not None else "",
+            "depth_gates": depth, "memory_bits": mem if mem is not None else "",
+        })
+
+    fields = ["variant", "description", "hand_rom_bits", "hand_mult_cells", "hand_adder_bits", "hand_gates",
+              "cells", "flip_flops", "comb_cells", "transistors", "depth_gates", "memory_bits"]
+    with open(os.path.join(args.out, "synth.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(rows)
+
+    by = {r["variant"]: r for r in rows}
+    with open(os.path.join(args.out, "synth.md"), "w") as f:
+        f.write("# Hardware cost by synthesis\n\n")
+        f.write("yosys `synth -flatten`, then `abc -fast -g AND,NAND,OR,NOR,XOR,XNOR,ANDNOT,ORNOT,MUX` (a generic "
+                "gate library) and `stat -tech cmos`; depth = `ltp -noff` (gates on the longest path between "
+                "flip-flops and pins). Hand count: our cost table's rules (ROM bits / multiplier cells / adder "
+                "bits / gates; registers not counted). Memory bits: the ROM's case table read as a memory "
+                "(yosys proc_rom).\n\n")
+        f.write("| variant | hand: ROM bits / mult cells / adder bits / gates | cells (flip-flops) | transistors | "
+                "depth (gates) | ROM as memory bits |\n|---|---|---|---|---|---|\n")
+        for r in rows:
+            hand_txt = "%s / %s / %s / %s" % (r["hand_rom_bits"], r["hand_mult_cells"], r["hand_adder_bits"],
+                                              r["hand_gates"]) if r["hand_rom_bits"] != "" else "—"
+            f.write("| %s | %s | %d (%d) | %s | %d | %s |\n" % (
+                r["description"], hand_txt, r["cells"], r["flip_flops"], r["transistors"], r["depth_gates"],
+                r["memory_bits"] if r["memory_bits"] != "" else "—"))
+        rom, free, mem = by.get("ua22802"), by.get("ua60553_saturate"), by.get("ua22802_rom_as_memory")
+        if rom and free and mem and mem["memory_bits"] != "":
+            f.write("\nThe patent's claim, in numbers: UA 60553 (saturating) costs %d transistors against UA 22802's "
+                    "%d with the ROM built as logic (%.2fx) and %d outside a %d-bit ROM array (at one transistor "
+                    "per bit, %d in all: %.2fx). Critical path: %d gates against %d.\n" % (
+                        free["transistors"], rom["transistors"], rom["transistors"] / free["transistors"],
+                        mem["transistors"], mem["memory_bits"], mem["transistors"] + mem["memory_bits"],
+                        (mem["transistors"] + mem["memory_bits"]) / free["transistors"],
+                        free["depth_gates"], rom["depth_gates"]))
+    # Every ROM read as a memory must hold exactly words x word bits of the format tables
+    # (ua22802_formats.h via shading_formats.vh): the device's ROM (F = 6) is UA22802_ROM_BITS.
+    bad = []
+    words, a_int = int(fmt["UA22802_ROM_WORDS"]), int(fmt["UA22802_A_W"]) - int(fmt["UA22802_A_FRAC"])
+    for name in names:
+        m = re.match(r"rom_f(\d+)_bits$", name)
+        if not m:
+            continue
+        frac = int(m.group(1))
+        want = int(fmt["UA22802_ROM_BITS"]) if frac == int(fmt["UA22802_A_FRAC"]) else words * (a_int + frac)
+        got = parse_stat(os.path.join(args.out, "logs", name + ".stat"))["memory_bits"]
+        if got != want:
+            bad.append(name)
+            print("synth: %s: the ROM read as a memory has %s bits, the format tables say %d" % (name, got, want),
+                  file=sys.stderr)
+    for name in failed:
+        print("synth: no result for %s (see logs/%s.log)" % (name, name), file=sys.stderr)
+    print("synth: wrote %s/synth.csv and synth.md (%d variants)" % (args.out, len(rows)))
+    return 1 if failed or bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
