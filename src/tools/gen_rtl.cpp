@@ -3,11 +3,12 @@
 //   gen_rtl formats <out.vh>                 every bus format of src/formats as `define macros
 //                                            (<NAME>_W, <NAME>_FRAC, <NAME>_SIGNED) and the
 //                                            generators' hardwired constants;
-//   gen_rtl rom <out.v> <frac_bits> <module> UA 22802's ROM as a case table, word n = floor(a(n) *
-//                                            2^frac + 1/2) on a_fmt.int_bits() + frac wires: with
-//                                            frac = a_fmt.frac (6) the content of ua22802_a_rom.h
-//                                            (gen_a_rom.cpp), other values the ROM fraction-bit
-//                                            sweep's sizes (testbenches/study, rom_fraction_sweep).
+//   gen_rtl rom <out.v> [<frac> <module>]    UA 22802's ROM as a case table, word n = floor(a(n) *
+//                                            2^frac + 1/2) on a_fmt.int_bits() + frac wires: by
+//                                            default frac = a_fmt.frac, module ua22802_a_rom, the
+//                                            content of ua22802_a_rom.h (gen_a_rom.cpp); other
+//                                            values give the ROM fraction-bit sweep's sizes
+//                                            (testbenches/study, rom_fraction_sweep.csv).
 // Run by cmake/verilator.cmake when CMake configures (Verilator reads the files then).
 #include <cmath>
 #include <cstdint>
@@ -146,7 +147,8 @@ int write_rom(const std::string& path, int frac, const std::string& module) {
 int main(int argc, char* argv[]) {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "formats" && argc == 3) return write_formats(argv[2]);
+    if (mode == "rom" && argc == 3) return write_rom(argv[2], shading::ua22802::a_fmt.frac, "ua22802_a_rom");
     if (mode == "rom" && argc == 5) return write_rom(argv[2], std::stoi(argv[3]), argv[4]);
-    std::cerr << "usage: gen_rtl formats <out.vh> | gen_rtl rom <out.v> <frac_bits> <module>\n";
+    std::cerr << "usage: gen_rtl formats <out.vh> | gen_rtl rom <out.v> [<frac_bits> <module>]\n";
     return 2;
 }

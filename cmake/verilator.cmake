@@ -1,0 +1,80 @@
+# The RTL twin (rtl/) and its co-simulation with the SystemC model through `verilator --sc` (README,
+# "RTL twin (Verilog) and co-simulation"). Optional: without Verilator (Debian's `verilator`,
+# scripts/setup.sh installs it) there are no RTL targets or tests.
+#
+# Sets SHADING_RTL (ON/OFF), SHADING_RTL_DIR (rtl/ in the source tree), SHADING_RTL_GENERATED (the
+# generated Verilog in the build tree: shading_formats.vh, ua22802_a_rom.v, rom_sweep/) and
+# SHADING_RTL_INCLUDE_DIRS (every folder the specular devices' modules are found in), and defines
+# shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1>).
+find_package(verilator QUIET HINTS $ENV{VERILATOR_ROOT})
+if(NOT verilator_FOUND)
+  message(STATUS "verilator not found: RTL co-simulation skipped")
+  set(SHADING_RTL OFF)
+  return()
+endif()
+set(SHADING_RTL ON)
+message(STATUS "verilator ${verilator_VERSION}: RTL twin co-simulated with the SystemC model")
+find_package(Threads REQUIRED)
+
+set(SHADING_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
+set(SHADING_RTL_GENERATED ${PROJECT_BINARY_DIR}/generated/rtl)
+set(SHADING_RTL_INCLUDE_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/specular ${SHADING_RTL_DIR}/ua60553
+    ${SHADING_RTL_DIR}/ua22802 ${SHADING_RTL_DIR}/tuned ${SHADING_RTL_GENERATED})
+
+# The generated Verilog must exist when CMake configures: verilate() runs Verilator then, to learn the
+# C++ files it writes. So src/tools/gen_rtl.cpp is compiled and run here, and any change to it or to
+# the format tables re-runs CMake (the build then re-verilates, as the Verilog it reads changed).
+set(_gen_sources ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp ${PROJECT_SOURCE_DIR}/src/reference/brdf_reference.cpp)
+set(_gen_dir ${PROJECT_BINARY_DIR}/CMakeFiles/gen_rtl_configure)
+try_compile(_gen_ok ${_gen_dir} SOURCES ${_gen_sources}
+            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src"
+            CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
+            OUTPUT_VARIABLE _gen_log COPY_FILE ${_gen_dir}/gen_rtl)
+if(NOT _gen_ok)
+  message(FATAL_ERROR "src/tools/gen_rtl.cpp did not compile:\n${_gen_log}")
+endif()
+file(GLOB _format_headers ${PROJECT_SOURCE_DIR}/src/formats/*.h)
+set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_gen_sources}
+             ${PROJECT_SOURCE_DIR}/src/reference/brdf_reference.h ${_format_headers})
+
+# _shading_gen_rtl(<file in SHADING_RTL_GENERATED> <gen_rtl mode> <arguments after the output>):
+# runs the generator, then copies only a changed file, so a re-configure does not re-verilate.
+function(_shading_gen_rtl dest mode)
+  set(_tmp ${_gen_dir}/out.tmp)
+  execute_process(COMMAND ${_gen_dir}/gen_rtl ${mode} ${_tmp} ${ARGN} RESULT_VARIABLE _rc)
+  if(_rc)
+    message(FATAL_ERROR "gen_rtl ${mode} ${dest} ${ARGN} failed (${_rc})")
+  endif()
+  get_filename_component(_dir ${SHADING_RTL_GENERATED}/${dest} DIRECTORY)
+  file(MAKE_DIRECTORY ${_dir})
+  file(COPY_FILE ${_tmp} ${SHADING_RTL_GENERATED}/${dest} ONLY_IF_DIFFERENT)
+endfunction()
+_shading_gen_rtl(shading_formats.vh formats)
+_shading_gen_rtl(ua22802_a_rom.v rom)  # the device's ROM: ua22802::a_fmt
+# The ROM at the sizes of the accuracy study's fraction-bit sweep (rom_fraction_sweep.csv, F = 2..10),
+# module ua22802_a_rom_f<F> in rom_sweep/, for the synthesis flow.
+foreach(_f RANGE 2 10)
+  _shading_gen_rtl(rom_sweep/ua22802_a_rom_f${_f}.v rom ${_f} ua22802_a_rom_f${_f})
+endforeach()
+
+# The same generator as a build target, for scripts that want other fraction-bit counts.
+add_executable(gen_rtl ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp)
+target_link_libraries(gen_rtl PRIVATE shading_golden)
+
+# shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1>)
+#   Verilates rtl/specular/specular_device.v with that generator (0 UA 60553, 1 UA 22802, 2 tuned)
+#   and overflow mode into <target> as the SystemC module <prefix> (header <prefix>.h): pins of 2..64
+#   wires as sc_uint<W> (--pins-sc-uint), the SystemC model's own pin types, so both bind to the
+#   same signals; 1-wire pins as bool. Lint warnings (-Wall) fail the build; tracing is compiled in.
+function(shading_verilate_specular target prefix)
+  cmake_parse_arguments(ARG "" "AGEN;SATURATE" "" ${ARGN})
+  verilate(${target} SYSTEMC TRACE
+           PREFIX ${prefix}
+           TOP_MODULE specular_device
+           SOURCES ${SHADING_RTL_DIR}/specular/specular_device.v
+           INCLUDE_DIRS ${SHADING_RTL_INCLUDE_DIRS}
+           VERILATOR_ARGS -Wall --pins-sc-uint -GAGEN=${ARG_AGEN} -GSATURATE=${ARG_SATURATE})
+  target_link_libraries(${target} PRIVATE Threads::Threads)
+  # Verilator's own headers and generated code leave parameters unused (verilated_vcd_sc.h).
+  target_compile_options(${target} PRIVATE -Wno-unused-parameter)
+endfunction()

@@ -1,0 +1,139 @@
+// Co-simulation of a specular device's RTL twin (rtl/, compiled by `verilator --sc`) with the
+// SystemC model in one simulation: the stimulus of testbenches/specular drives both devices'
+// pins through the same signals; one monitor per device samples its outputs at every rising edge
+// of its own out29_valid (specular_monitor), each sample is checked against the golden model
+// (specular_checker), and the RTL's k-th sample is compared with the model's k-th: the same
+// latched inputs, the same instant, the same three outputs.
+// Rtl is any module with the device's pins: a Verilated class built with --pins-sc-uint (pins of
+// 2..64 wires are sc_uint<W>, as ours), or a user's own RTL the same way (README).
+#pragma once
+
+#include <deque>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <systemc>
+#include <utility>
+
+#include "core/report_ids.h"
+#include "core/trace.h"
+#include "specular/specular_tb.h"
+#include "verilated_vcd_sc.h"
+
+namespace shading::tb {
+
+template <typename Device, typename Rtl>
+class rtl_cosim_bench : public sc_core::sc_module {
+public:
+    // The pins both devices read.
+    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
+    sc_core::sc_signal<n_t> in16_n{"in16_n"};
+    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"};
+    sc_core::sc_signal<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
+    // Each device's outputs: the SystemC model's (dut) and the RTL's (rtl).
+    sc_core::sc_signal<out_t> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
+    sc_core::sc_signal<bool> out29_valid{"out29_valid"};
+    sc_core::sc_signal<out_t> rtl_out25_r{"rtl_out25_r"}, rtl_out26_g{"rtl_out26_g"}, rtl_out27_b{"rtl_out27_b"};
+    sc_core::sc_signal<bool> rtl_out29_valid{"rtl_out29_valid"};
+
+    specular_checker checker, rtl_checker;  // the model's samples and the RTL's, against golden
+    Device dut;
+    Rtl rtl;
+    specular_stimulus stim;
+    specular_monitor mon, rtl_mon;
+
+    // `golden` checks both devices; `rtl_golden` (for the negative tests) replaces it for the RTL.
+    template <typename... DeviceArgs>
+    rtl_cosim_bench(const sc_core::sc_module_name& name, item_source<surface> surfaces,
+                    specular_checker::golden_fn golden, specular_checker::golden_fn rtl_golden,
+                    DeviceArgs&&... device_args)
+        : sc_module(name),
+          checker(std::move(golden)),
+          rtl_checker(std::move(rtl_golden)),
+          dut("dut", std::forward<DeviceArgs>(device_args)...),
+          rtl("rtl"),
+          stim("stim", std::move(surfaces), strobe_timing{}),
+          mon("mon", [this](const pixel_sample& s) { on_sample(s, ours_, theirs_, false); }),
+          rtl_mon("rtl_mon", [this](const pixel_sample& s) { on_sample(s, theirs_, ours_, true); }) {
+        bind_inputs(dut);
+        bind_inputs(rtl);
+        bind_inputs(stim);
+        bind_inputs(mon);
+        bind_inputs(rtl_mon);
+        dut.out25_r(out25_r); dut.out26_g(out26_g); dut.out27_b(out27_b); dut.out29_valid(out29_valid);
+        mon.out25_r(out25_r); mon.out26_g(out26_g); mon.out27_b(out27_b); mon.out29_valid(out29_valid);
+        rtl.out25_r(rtl_out25_r); rtl.out26_g(rtl_out26_g); rtl.out27_b(rtl_out27_b);
+        rtl.out29_valid(rtl_out29_valid);
+        rtl_mon.out25_r(rtl_out25_r); rtl_mon.out26_g(rtl_out26_g); rtl_mon.out27_b(rtl_out27_b);
+        rtl_mon.out29_valid(rtl_out29_valid);
+    }
+
+    bool finished() const { return stim.finished(); }
+    std::size_t pairs() const { return pairs_; }             // samples compared RTL against model
+    std::size_t cross_mismatches() const { return cross_mismatches_; }
+    std::size_t unpaired() const { return ours_.size() + theirs_.size(); }  // samples one side lacks
+
+private:
+    template <typename M>
+    void bind_inputs(M& m) {
+        m.ctl15(ctl15); m.ctl17(ctl17); m.ctl20(ctl20); m.ctl22(ctl22); m.ctl24(ctl24);
+        m.in16_n(in16_n); m.in18_cos(in18_cos);
+        m.in19_ksi_r(in19_ksi_r); m.in21_ksi_g(in21_ksi_g); m.in23_ksi_b(in23_ksi_b);
+    }
+
+    // Both monitors fire in the same instant (out29 is strobe 17 in both devices), in either
+    // order: a sample waits in its queue until the other side's arrives.
+    void on_sample(const pixel_sample& s, std::deque<pixel_sample>& mine, std::deque<pixel_sample>& other,
+                   bool is_rtl) {
+        (is_rtl ? rtl_checker : checker).check(s);
+        if (other.empty()) {
+            mine.push_back(s);
+            return;
+        }
+        const pixel_sample o = other.front();
+        other.pop_front();
+        compare(is_rtl ? o : s, is_rtl ? s : o);
+    }
+
+    void compare(const pixel_sample& model, const pixel_sample& rtl_s) {
+        ++pairs_;
+        if (model.out == rtl_s.out && model.at == rtl_s.at && model.n == rtl_s.n && model.cos == rtl_s.cos &&
+            model.ksi == rtl_s.ksi)
+            return;
+        if (++cross_mismatches_ > 10) return;
+        std::ostringstream os;
+        os << "RTL against the SystemC model, sample " << pairs_ - 1 << " n=" << model.n << " cos=0x" << std::hex
+           << model.cos << std::dec << ": model (" << model.out[0] << "," << model.out[1] << "," << model.out[2]
+           << ") at " << model.at << ", RTL (" << rtl_s.out[0] << "," << rtl_s.out[1] << "," << rtl_s.out[2]
+           << ") at " << rtl_s.at << " [Q9.8 codes]";
+        SC_REPORT_WARNING(msg::mismatch, os.str().c_str());
+    }
+
+    std::deque<pixel_sample> ours_, theirs_;
+    std::size_t pairs_ = 0, cross_mismatches_ = 0;
+};
+
+// Runs a co-simulation bench until its stimulus ends (false if `limit` passes first). With a
+// non-empty `vcd_stem`, <stem>.vcd gets every SystemC signal of the bench (our model's nets and the
+// RTL's pins, modules/core/trace.h) and <stem>_rtl.vcd every net inside the RTL (Verilator's
+// writer: a Verilated model's internals are not SystemC signals).
+template <typename Bench>
+bool run_cosim(Bench& bench, const sc_core::sc_time& limit, const std::string& vcd_stem = {}) {
+    std::unique_ptr<vcd_file> vcd;
+    std::unique_ptr<VerilatedVcdSc> rtl_vcd;
+    if (!vcd_stem.empty()) {
+        vcd = std::make_unique<vcd_file>(vcd_stem);
+        vcd->trace(bench);
+    }
+    sc_core::sc_start(sc_core::SC_ZERO_TIME);  // Verilator traces an elaborated, initialised model
+    if (!vcd_stem.empty()) {
+        rtl_vcd = std::make_unique<VerilatedVcdSc>();
+        bench.rtl.trace(rtl_vcd.get(), 99);
+        rtl_vcd->open((vcd_stem + "_rtl.vcd").c_str());
+    }
+    sc_core::sc_start(limit);
+    if (rtl_vcd) rtl_vcd->close();
+    return bench.finished();
+}
+
+}  // namespace shading::tb
