@@ -132,6 +132,16 @@ TYPED_TEST(RtlCosim, EveryCosCodeAboveOneAtTheUsualN) {
     this->sweep(spec::cos_one + 1, spec::cos_fmt.mask());
 }
 
+TYPED_TEST(RtlCosim, EveryNIncludingOutOfRange) {
+    // Every word of UA 22802's ROM case table and every n the generators see (0..1023: n = 0 and
+    // 1001..1023 are reported by the model's range checker), four cos codes each.
+    report_log::get().expect(msg::input);
+    std::vector<surface> s;
+    for (unsigned n = 0; n < (1u << ua60553::n_fmt.width); ++n)
+        s.push_back({n, {255, 17, 96}, {0x4000, 0x6000, 0x7800, spec::cos_one}});
+    this->run(s, s.size() * 4);
+}
+
 // 10^6 random pixels per device and mode, in four runs (random_surfaces: n 1..1000, k_s*I 0..255
 // reloaded at random between surfaces of 1..16 pixels, cos 0..1.0).
 TYPED_TEST(RtlCosim, Random0) { this->random_run(1); }
