@@ -26,11 +26,11 @@ public:
                  const sc_core::sc_time& clk_to_q = delay_default::reg_clk_to_q,
                  const sc_core::sc_time& setup = sc_core::SC_ZERO_TIME)
         : sc_module(name), setup_(setup), drv_(q, clk_to_q) {
-        SC_METHOD(on_falling_edge);
-        sensitive << ctl.neg();
-        dont_initialize();
-        SC_METHOD(on_data);
-        sensitive << d;
+        // One process for the edge and the data input: the output's only writer (a zero clock-to-q
+        // writes q from it directly, core/comb_delay.h). A data change in the edge's own delta is
+        // taken first, so the edge sees it as the late change it is.
+        SC_METHOD(on_event);
+        sensitive << ctl.neg() << d;
         dont_initialize();
     }
 
@@ -42,9 +42,18 @@ public:
     const sc_core::sc_port_base* data_port() const override { return &d; }
     const sc_core::sc_time& setup_time() const override { return setup_; }
     unsigned violations() const { return violations_; }
+    bool last_latch(sc_core::sc_time& at) const override {
+        if (edge_seen_) at = last_edge_;
+        return edge_seen_;
+    }
 
 private:
     void start_of_simulation() override { current_ = stable_ = d.read(); }
+
+    void on_event() {
+        if (d.event()) on_data();
+        if (ctl.negedge()) on_falling_edge();
+    }
 
     void on_falling_edge() {
         const auto now = sc_core::sc_time_stamp();

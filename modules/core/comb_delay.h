@@ -14,7 +14,11 @@ template <typename T>
 class inertial_driver {
 public:
     // Must be constructed inside a module's constructor: it spawns that module's settle process.
+    // A zero delay spawns none: drive() writes the output itself, a delta cycle after its input
+    // changed, instead of two (issue 11: a notification, a settle process and a delta per block
+    // that no waveform shows). The block's one process is then the output's only writer.
     inertial_driver(sc_core::sc_out<T>& out, const sc_core::sc_time& delay) : out_(out), delay_(delay) {
+        if (delay_ == sc_core::SC_ZERO_TIME) return;
         sc_core::sc_spawn_options opt;
         opt.spawn_method();
         opt.set_sensitivity(&settle_);
@@ -39,6 +43,11 @@ public:
             return;
         }
         first_ = false;
+        if (delay_ == sc_core::SC_ZERO_TIME) {
+            written_ = v;
+            out_.write(v);
+            return;
+        }
         pending_ = v;
         in_flight_ = true;
         settle_.cancel();

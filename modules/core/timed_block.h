@@ -16,6 +16,9 @@ public:
     virtual const sc_core::sc_port_base* clock_port() const { return nullptr; }
     virtual const sc_core::sc_port_base* data_port() const { return nullptr; }
     virtual const sc_core::sc_time& setup_time() const { return sc_core::SC_ZERO_TIME; }
+    // A register's last latching edge (false before the first): monitors read it instead of
+    // waking a process of their own at every edge.
+    virtual bool last_latch(sc_core::sc_time&) const { return false; }
     bool is_register() const { return clock_port() != nullptr; }
 };
 

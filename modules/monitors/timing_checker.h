@@ -5,15 +5,14 @@
 // (core/timing_graph.h) at end of elaboration. A register below that module that no strobe
 // latches, or a strobe that latches no register, is a configuration error (shading/config): its
 // path would go unchecked. At every rising edge of `valid`, a register latched since the previous
-// validating edge less than path(i) ago means the outputs are not settled: shading/timing.
+// validating edge less than path(i) ago means the outputs are not settled: shading/timing. When
+// strobe i fell is read from its registers (timed_block::last_latch), not from a process woken at
+// every edge (issue 11: one wakeup per strobe edge that showed nothing).
 #pragma once
 
 #include <set>
 #include <sstream>
 #include <string>
-#ifndef SC_INCLUDE_DYNAMIC_PROCESSES
-#define SC_INCLUDE_DYNAMIC_PROCESSES  // sc_spawn
-#endif
 #include <systemc>
 #include <vector>
 
@@ -29,18 +28,10 @@ public:
 
     SC_HAS_PROCESS(timing_checker);
     timing_checker(const sc_core::sc_module_name& name, std::size_t n_ctl)
-        : sc_module(name), ctl("ctl", n_ctl), path_(n_ctl), fall_(n_ctl), fallen_(n_ctl, false) {
+        : sc_module(name), ctl("ctl", n_ctl), path_(n_ctl), latched_by_(n_ctl) {
         SC_METHOD(on_valid);
         sensitive << valid.pos();
         dont_initialize();
-        for (std::size_t i = 0; i < n_ctl; ++i) {
-            sc_core::sc_spawn_options opt;
-            opt.spawn_method();
-            opt.set_sensitivity(&ctl[i].neg());
-            opt.dont_initialize();
-            sc_core::sc_spawn([this, i] { fall_[i] = sc_core::sc_time_stamp(); fallen_[i] = true; },
-                              sc_core::sc_gen_unique_name("on_fall"), &opt);
-        }
     }
 
     // Strobe i's derived path: its length, and the blocks on it. Valid from end of elaboration on.
@@ -62,6 +53,7 @@ private:
         for (std::size_t i = 0; i < ctl.size(); ++i) {
             const auto regs = g.registers_clocked_by(timing_graph::channel_of(ctl[i]));
             latched.insert(regs.begin(), regs.end());
+            for (auto* r : regs) latched_by_[i].push_back(dynamic_cast<const timed_block*>(r));
             path_[i] = g.longest_from_registers(regs, g.outputs());
             if (!path_[i].found)
                 config_error(std::string(ctl[i].name()) + " latches no register with a path to the outputs");
@@ -79,11 +71,17 @@ private:
     void on_valid() {
         const auto now = sc_core::sc_time_stamp();
         for (std::size_t i = 0; i < ctl.size(); ++i) {
-            if (!fallen_[i] || (seen_valid_ && fall_[i] < last_valid_)) continue;
-            if (now - fall_[i] >= path_[i].delay) continue;
+            sc_core::sc_time fall;
+            bool fallen = false;
+            for (const timed_block* r : latched_by_[i]) {
+                sc_core::sc_time at;
+                if (r->last_latch(at) && (!fallen || at > fall)) fall = at, fallen = true;
+            }
+            if (!fallen || (seen_valid_ && fall < last_valid_)) continue;
+            if (now - fall >= path_[i].delay) continue;
             ++violations_;
             std::ostringstream os;
-            os << name() << ": outputs validated at " << now << ", only " << (now - fall_[i])
+            os << name() << ": outputs validated at " << now << ", only " << (now - fall)
                << " after " << ctl[i].name() << " latched (its path to the outputs: "
                << path_[i].to_string() << "); the outputs sampled at this edge are not settled";
             SC_REPORT_WARNING(msg::timing, os.str().c_str());
@@ -93,8 +91,7 @@ private:
     }
 
     std::vector<timing_path> path_;
-    std::vector<sc_core::sc_time> fall_;
-    std::vector<bool> fallen_;
+    std::vector<std::vector<const timed_block*>> latched_by_;  // strobe i's registers
     sc_core::sc_time last_valid_;
     bool seen_valid_ = false, derived_ = false;
     unsigned violations_ = 0;
