@@ -1,0 +1,664 @@
+// Simulation speed of every model in one run (issue 11), on Google Benchmark: results per second
+// of each golden model, of each signal-level device (block delays on and off, tracing on and off),
+// of seed 004's units, of the whole shading pipeline on the head and of the TLM-2.0 wrappers in
+// both timing modes, each with its ratio to its golden model (counter vs_golden = rate / golden's
+// rate) and its mismatches against that golden model (a mismatch fails the run).
+//
+// SystemC elaborates once per process, so each SystemC case runs alone in a child process: the
+// parent registers a proxy per case that re-executes this program (posix_spawn of /proc/self/exe
+// with --perf-child and --benchmark_filter=^case$), reads the child's JSON and reports the child's
+// items and timed seconds as its own (manual time). The child builds only that case's design,
+// runs sc_start(SC_ZERO_TIME) (elaboration and initialisation, untimed), then one sc_start(batch)
+// per benchmark iteration. A traced case writes its VCD into a temporary folder, removed at exit.
+//
+//   perf_models [--quick] [--benchmark_filter=...] [--benchmark_min_time=S] [--benchmark_out=F ...]
+// --quick: tiny runs (min time 0.01 s, a 48-pixel head) for ctest; exit status 1 on any mismatch,
+// unexpected SystemC report or failed child.
+//
+// Adding a row: one add_sc(...) line in register_cases() with a function that builds its harness
+// (perf_harness.h), or add_golden(...) for a plain C++ model.
+#include <benchmark/benchmark.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <ctime>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <systemc>
+#include <vector>
+
+#include "common/report_log.h"
+#include "core/trace.h"
+#include "golden/interp_golden.h"
+#include "golden/specular_golden.h"
+#include "golden/ua22802_golden.h"
+#include "golden/ua60553_tuned_golden.h"
+#include "interp/interp_coef_bench.h"
+#include "interp/interp_fd_bench.h"
+#include "interp/interp_horner_bench.h"
+#include "interp/interp_line_bench.h"
+#include "perf_harness.h"
+#include "pipeline/pipeline.h"
+#include "pipeline_sim.h"
+#include "scene/world.h"
+#include "tlm/line_tlm.h"
+#include "tlm/specular_tlm.h"
+#include "tlm/tlm_initiator.h"
+#include "tuned/ua60553_tuned.h"
+#include "ua22802/ua22802.h"
+#include "ua60553/ua60553.h"
+#ifdef SHADING_PERF_VERILATOR
+#include "Vperf_ua60553.h"
+#endif
+
+extern char** environ;
+
+namespace {
+
+using namespace shading;
+using shading::perf::harness;
+
+bool g_quick = false;
+bool g_failed = false;
+std::string g_min_time;  // --benchmark_min_time as given (forwarded to the children)
+
+// Every rate is per CPU second of the process (as Google Benchmark's own): the machine may be shared.
+double cpu_now() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// ---------------------------------------------------------------- golden models (plain C++)
+
+struct golden_case {
+    std::string name, unit;
+    std::function<std::size_t()> batch;  // evaluates a batch, returns the results it made
+};
+std::vector<golden_case>& goldens() {
+    static std::vector<golden_case> g;
+    return g;
+}
+
+constexpr std::array<uint64_t, 3> ksi{255, 140, 40};
+
+// Random intervals for the interpolation goldens (fixed seed; the same generators as the benches).
+const std::vector<tb::line_interval>& some_intervals() {
+    static const std::vector<tb::line_interval> v = [] {
+        std::vector<tb::line_interval> r;
+        for (std::size_t i = 0; i < 256; ++i) {
+            tb::split_rng g(7, i);
+            tb::line_interval iv;
+            iv.c1 = tb::random_samples<4>(g);
+            iv.c2 = tb::random_samples<4>(g);
+            iv.q = tb::random_samples<3>(g);
+            r.push_back(iv);
+        }
+        return r;
+    }();
+    return v;
+}
+
+// The head, planned as the pipeline rows run it (forward differences, m = 4, head zones).
+struct head_plan {
+    scene::world w;
+    scene::rasterised r;
+    pipeline::frame_constants k;
+    scene::device_config dev;
+    pipeline::plan_config c;
+    pipeline::plan p;
+};
+std::unique_ptr<head_plan> make_head(pipeline::evaluator e) {
+    const unsigned size = g_quick ? 48 : 256;
+    auto h = std::make_unique<head_plan>();
+    h->w = scene::builtin_scene("head", SHADING_SOURCE_DIR, size, size);
+    h->r = scene::rasterise(h->w);
+    h->k = pipeline::frame_constants_of(h->w);
+    h->c.eval = e;
+    h->c.m = 4;
+    h->c.degree = pipeline::degree_policy::zones;
+    h->p = pipeline::make_plan(h->r, h->k, h->dev, h->c);
+    return h;
+}
+
+void add_golden(const std::string& name, const std::string& unit, std::function<std::size_t()> batch) {
+    goldens().push_back({name, unit, std::move(batch)});
+}
+
+void register_goldens() {
+    add_golden("golden/ua60553", "evaluations", [] {
+        static uint64_t code = 0;
+        for (int i = 0; i < 1024; ++i) {
+            code = (code + 7919) % (spec::cos_one + 1);
+            benchmark::DoNotOptimize(golden_ua60553(120, code, ksi, overflow_mode::saturate).out);
+        }
+        return std::size_t{1024};
+    });
+    add_golden("golden/ua22802", "evaluations", [] {
+        static uint64_t code = 0;
+        for (int i = 0; i < 1024; ++i) {
+            code = (code + 7919) % (spec::cos_one + 1);
+            benchmark::DoNotOptimize(golden_ua22802(120, code, ksi, overflow_mode::saturate).out);
+        }
+        return std::size_t{1024};
+    });
+    add_golden("golden/ua60553_tuned", "evaluations", [] {
+        static uint64_t code = 0;
+        for (int i = 0; i < 1024; ++i) {
+            code = (code + 7919) % (spec::cos_one + 1);
+            benchmark::DoNotOptimize(golden_ua60553_tuned(120, code, ksi, overflow_mode::saturate).out);
+        }
+        return std::size_t{1024};
+    });
+    add_golden("golden/interp_coef", "sample sets", [] {
+        for (const auto& iv : some_intervals())
+            benchmark::DoNotOptimize(interp::golden_cubic_coefs(iv.c1, interp::sample_set::case1,
+                                                                interp::div3_mode::shift_add));
+        return some_intervals().size();
+    });
+    add_golden("golden/interp_horner", "evaluations", [] {
+        std::size_t n = 0;
+        for (const auto& iv : some_intervals()) {
+            const auto k = interp::golden_cubic_coefs(iv.c1, interp::sample_set::case1, interp::div3_mode::shift_add);
+            for (uint64_t t = 0; t <= interp::t_one; t += 16, ++n) benchmark::DoNotOptimize(interp::golden_horner(k, t, false));
+        }
+        return n;
+    });
+    add_golden("golden/interp_fd", "pixels", [] {
+        std::size_t n = 0;
+        for (const auto& iv : some_intervals()) {
+            const auto k = interp::golden_cubic_coefs(iv.c1, interp::sample_set::case1, interp::div3_mode::shift_add);
+            n += interp::golden_fd(k, 5, 32).size();
+        }
+        return n;
+    });
+    add_golden("golden/interp_line", "pixels", [] {
+        static const std::vector<interp::interval_samples> ivs = [] {
+            std::vector<interp::interval_samples> v;
+            for (const auto& iv : some_intervals()) v.push_back({iv.c1, 32});
+            return v;
+        }();
+        return interp::golden_interp_line(ivs, 5, interp::sample_set::case1, interp::div3_mode::shift_add).size();
+    });
+    add_golden("golden/pipeline_head", "pixels", [] {
+        static const auto h = make_head(pipeline::evaluator::fd);
+        const auto f = pipeline::golden_frame(h->p, h->k, h->dev, h->c);
+        benchmark::DoNotOptimize(f.px.data());
+        return static_cast<std::size_t>(h->p.pixels);
+    });
+}
+
+// The golden model's own rate for the ratios, timed here (about 0.2 s of CPU, 0.01 s with --quick).
+double golden_rate(const std::string& name) {
+    static std::map<std::string, double> cache;
+    if (auto it = cache.find(name); it != cache.end()) return it->second;
+    for (const auto& g : goldens()) {
+        if (g.name != name) continue;
+        const double want = g_quick ? 0.01 : 0.2;
+        std::size_t items = g.batch();  // warm-up
+        items = 0;
+        const double t0 = cpu_now();
+        double s = 0;
+        while (s < want) {
+            items += g.batch();
+            s = cpu_now() - t0;
+        }
+        return cache[name] = static_cast<double>(items) / s;
+    }
+    return 0.0;
+}
+
+// ---------------------------------------------------------------- SystemC cases
+
+struct sc_case {
+    std::string name, golden, unit;
+    std::function<std::unique_ptr<harness>()> make;  // a harness advanced in batches
+    bool traced = false;
+    // Or a run that cannot be cut into batches (the pipeline's frame): returns items, seconds, mismatches.
+    std::function<void(double& items, double& seconds, double& mismatches)> once;
+    // false: mismatches are reported (counter, table) but do not fail the run (the RTL twin, whose
+    // correctness is its own suite's business, testbenches/rtl).
+    bool strict = true;
+};
+std::vector<sc_case>& sc_cases() {
+    static std::vector<sc_case> c;
+    return c;
+}
+
+// Wraps one of the project's bench modules (stimulus, DUT, monitor, golden checker) as a harness.
+template <class Bench>
+class bench_harness : public harness {
+public:
+    template <typename... Args>
+    explicit bench_harness(Args&&... args) : b_("tb", std::forward<Args>(args)...) {
+        b_.checker.keep_samples(false);
+    }
+    sc_core::sc_object& root() override { return b_; }
+    uint64_t items() const override { return b_.checker.checked(); }
+    uint64_t mismatches() const override { return b_.checker.mismatches(); }
+    sc_core::sc_time batch() const override { return period() * 1000.0; }
+    sc_core::sc_time period() const override { return tb::interp_period(); }
+    Bench& bench() { return b_; }
+
+private:
+    Bench b_;
+};
+
+// A TLM wrapper shading whole lines from an initiator thread that waits out each access's
+// annotated delay (so simulated time advances in both modes and sc_start(batch) returns).
+class tlm_harness : public sc_core::sc_module, public harness {
+public:
+    tb::tlm_initiator init;
+    explicit tlm_harness(const sc_core::sc_module_name& n, std::function<void(tlm_harness&)> script,
+                         sc_core::sc_time batch, sc_core::sc_time period)
+        : sc_module(n), init("init", [this, script](tb::tlm_initiator&) { script(*this); }), batch_(batch),
+          period_(period) {}
+    sc_core::sc_object& root() override { return *this; }
+    uint64_t items() const override { return items_; }
+    uint64_t mismatches() const override { return mismatches_; }
+    sc_core::sc_time batch() const override { return batch_; }
+    sc_core::sc_time period() const override { return period_; }
+    uint64_t items_ = 0, mismatches_ = 0;
+
+private:
+    sc_core::sc_time batch_, period_;
+};
+
+template <class Wrapper>
+struct specular_tlm_top : tlm_harness {
+    Wrapper w;
+    specular_tlm_top(const sc_core::sc_module_name& n, tlm_timing t)
+        : tlm_harness(n, &specular_tlm_top::script, sc_core::sc_time(4 * 20 * 1024, sc_core::SC_NS),
+                      sc_core::sc_time(20, sc_core::SC_NS)),
+          w("w", t) {
+        init.socket.bind(w.socket);
+    }
+    static void script(tlm_harness& self) {
+        namespace m = shading::tlm_map;
+        auto& i = self.init;
+        i.write32(m::N, 120);
+        for (unsigned c = 0; c < 3; ++c) i.write32(m::KSI_R + 4 * c, static_cast<uint32_t>(ksi[c]));
+        std::vector<uint16_t> codes(m::BLOCK_PIXELS);
+        std::vector<uint32_t> res(4 * m::BLOCK_PIXELS);
+        for (uint64_t l = 0;; ++l) {
+            for (std::size_t p = 0; p < m::BLOCK_PIXELS; ++p)
+                codes[p] = static_cast<uint16_t>((l * 7919 + p * 31) % (spec::cos_one + 1));
+            sc_core::sc_time d = sc_core::SC_ZERO_TIME;
+            i.access(tlm::TLM_WRITE_COMMAND, m::COS_BLOCK, reinterpret_cast<unsigned char*>(codes.data()),
+                     2 * m::BLOCK_PIXELS);
+            d += i.last_delay;
+            i.access(tlm::TLM_READ_COMMAND, m::RESULT_BLOCK, reinterpret_cast<unsigned char*>(res.data()),
+                     16 * m::BLOCK_PIXELS);
+            d += i.last_delay;
+            for (std::size_t p = 0; p < m::BLOCK_PIXELS; ++p) {
+                const auto g = golden_ua60553(120, codes[p], ksi, overflow_mode::saturate);
+                self.mismatches_ += res[4 * p] != g.out[0] || res[4 * p + 1] != g.out[1] || res[4 * p + 2] != g.out[2];
+            }
+            self.items_ += m::BLOCK_PIXELS;
+            sc_core::wait(d);  // the loosely-timed mode's annotated time; zero when pin-accurate
+        }
+    }
+};
+
+struct line_tlm_top : tlm_harness {
+    using wrapper_t = line_tlm<5, interp::sample_set::case1, interp::div3_mode::shift_add>;
+    wrapper_t w;
+    line_tlm_top(const sc_core::sc_module_name& n, tlm_timing t)
+        : tlm_harness(n, &line_tlm_top::script, sc_core::sc_time(20 * 8400, sc_core::SC_NS),
+                      sc_core::sc_time(20, sc_core::SC_NS)),
+          w("w", t) {
+        init.socket.bind(w.socket);
+    }
+    static void script(tlm_harness& self) {
+        namespace m = shading::line_tlm_map;
+        auto& i = self.init;
+        std::vector<interp::interval_samples> ivs;
+        for (const auto& iv : some_intervals()) ivs.push_back({iv.c1, 32});
+        std::vector<unsigned char> bytes(16 * ivs.size(), 0);
+        for (std::size_t j = 0; j < ivs.size(); ++j) {
+            for (unsigned s = 0; s < 4; ++s) {
+                const auto v = static_cast<uint16_t>(ivs[j].i[s]);
+                std::memcpy(&bytes[16 * j + 2 * s], &v, 2);
+            }
+            const uint32_t len = ivs[j].len;
+            std::memcpy(&bytes[16 * j + m::IV_LEN], &len, 4);
+        }
+        const auto golden = interp::golden_interp_line(ivs, 5, interp::sample_set::case1, interp::div3_mode::shift_add);
+        std::vector<uint32_t> px(golden.size());
+        for (;;) {
+            sc_core::sc_time d = sc_core::SC_ZERO_TIME;
+            i.access(tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, bytes.data(), static_cast<unsigned>(bytes.size()));
+            d += i.last_delay;
+            i.access(tlm::TLM_READ_COMMAND, m::PIXEL_BLOCK, reinterpret_cast<unsigned char*>(px.data()),
+                     static_cast<unsigned>(4 * px.size()));
+            d += i.last_delay;
+            for (std::size_t p = 0; p < px.size(); ++p) self.mismatches_ += px[p] != golden[p];
+            self.items_ += px.size();
+            sc_core::wait(d);
+        }
+    }
+};
+
+// Wraps a module-type harness (sc_module + harness) built by `new`.
+template <class H, typename... Args>
+std::function<std::unique_ptr<harness>()> module(Args... args) {
+    return [=] { return std::unique_ptr<harness>(new H("top", args...)); };
+}
+
+void add_sc(const std::string& name, const std::string& golden, const std::string& unit,
+            std::function<std::unique_ptr<harness>()> make, bool traced = false) {
+    sc_cases().push_back({name, golden, unit, std::move(make), traced, nullptr});
+}
+
+// The specular devices: block delays on and off, tracing on and off.
+template <class Device>
+void add_specular(const std::string& name, const std::string& golden,
+                  typename perf::specular_harness<Device>::golden_fn g,
+                  const typename Device::generator::config& gen = Device::generator::default_config()) {
+    using H = perf::specular_harness<Device>;
+    for (bool delays : {true, false})
+        for (bool traced : {false, true}) {
+            const std::string n = name + (delays ? "/delays" : "/no_delays") + (traced ? "/traced" : "");
+            add_sc(n, golden, "evaluations",
+                   [=] {
+                       return std::unique_ptr<harness>(new H("top", g, overflow_mode::saturate, gen,
+                                                             delays ? block_delays{} : perf::zero_delays()));
+                   },
+                   traced);
+        }
+}
+
+#ifdef SHADING_PERF_VERILATOR
+// The RTL twin's UA 60553 datapath (rtl/specular/specular_device.v, AGEN 0, saturate) compiled by
+// `verilator --sc` (cmake/verilator.cmake), in the same harness: ctl17 from an sc_clock.
+void add_verilator() {
+    using H = perf::specular_harness<Vperf_ua60553, a_gen_linear>;
+    add_sc("verilator/ua60553", "golden/ua60553", "evaluations", [] {
+        return std::unique_ptr<harness>(new H("top", [](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+            return golden_ua60553(n, c, k, overflow_mode::saturate);
+        }));
+    });
+    sc_cases().back().strict = false;
+}
+#endif
+
+void add_pipeline(const std::string& name, pipeline::evaluator e) {
+    sc_case c{name, "golden/pipeline_head", "pixels", nullptr, false, nullptr};
+    c.once = [e](double& items, double& seconds, double& mismatches) {
+        const auto h = make_head(e);
+        const auto r = pipeline::simulate_frame(h->p, h->k, h->dev, h->c);
+        items = static_cast<double>(h->p.pixels);
+        seconds = r.seconds;
+        mismatches = static_cast<double>(r.mismatches);
+    };
+    sc_cases().push_back(std::move(c));
+}
+
+void register_cases() {
+    const auto mode = overflow_mode::saturate;
+    add_specular<device_ua60553>("sc/ua60553", "golden/ua60553", [mode](uint64_t n, uint64_t c, const auto& k) {
+        return golden_ua60553(n, c, k, mode);
+    });
+    add_specular<device_ua22802>("sc/ua22802", "golden/ua22802", [mode](uint64_t n, uint64_t c, const auto& k) {
+        return golden_ua22802(n, c, k, mode);
+    });
+    add_specular<device_ua60553_tuned>("sc/ua60553_tuned", "golden/ua60553_tuned",
+                                       [mode](uint64_t n, uint64_t c, const auto& k) {
+                                           return golden_ua60553_tuned(n, c, k, mode);
+                                       });
+    // The fast pin-level abstraction (modules/specular/specular_fast.h): same pins, timing, constructor.
+    add_specular<device_ua60553_fast>("sc/ua60553_fast", "golden/ua60553", [mode](uint64_t n, uint64_t c, const auto& k) {
+        return golden_ua60553(n, c, k, mode);
+    });
+    add_specular<device_ua22802_fast>("sc/ua22802_fast", "golden/ua22802", [mode](uint64_t n, uint64_t c, const auto& k) {
+        return golden_ua22802(n, c, k, mode);
+    });
+    add_specular<device_ua60553_tuned_fast>("sc/ua60553_tuned_fast", "golden/ua60553_tuned",
+                                            [mode](uint64_t n, uint64_t c, const auto& k) {
+                                                return golden_ua60553_tuned(n, c, k, mode);
+                                            });
+#ifdef SHADING_PERF_VERILATOR
+    add_verilator();
+#endif
+
+    // Seed 004's units in the project's own benches (stimulus, DUT, monitor, golden checker).
+    const std::size_t big = 50'000'000;  // more than any run streams; generated on demand
+    add_sc("sc/interp_coef", "golden/interp_coef", "sample sets", [=] {
+        return std::unique_ptr<harness>(new bench_harness<tb::coef_bench>(tb::random_coef_inputs(big, 1)));
+    });
+    for (bool traced : {false, true})
+        add_sc(std::string("sc/interp_horner") + (traced ? "/traced" : ""), "golden/interp_horner", "evaluations",
+               [=] {
+                   return std::unique_ptr<harness>(
+                       new bench_harness<tb::horner_bench>(tb::random_horner_requests(big, 1)));
+               },
+               traced);
+    add_sc("sc/interp_fd", "golden/interp_fd", "pixels", [=] {
+        return std::unique_ptr<harness>(new bench_harness<tb::fd_bench<5>>(tb::random_fd_intervals<5>(big, 1)));
+    });
+    for (bool traced : {false, true})
+        add_sc(std::string("sc/interp_line") + (traced ? "/traced" : ""), "golden/interp_line", "pixels",
+               [=] {
+                   using B = tb::line_bench<5, interp::sample_set::case1, interp::div3_mode::shift_add>;
+                   return std::unique_ptr<harness>(new bench_harness<B>(tb::random_line_intervals<5>(big, 1)));
+               },
+               traced);
+
+    add_pipeline("sc/pipeline_head/fd", pipeline::evaluator::fd);
+    add_pipeline("sc/pipeline_head/horner", pipeline::evaluator::horner);
+
+    for (auto t : {tlm_timing::loosely_timed, tlm_timing::pin_accurate}) {
+        const std::string mode_name = t == tlm_timing::loosely_timed ? "lt" : "pin";
+        add_sc("tlm/specular_tlm/" + mode_name, "golden/ua60553", "evaluations",
+               module<specular_tlm_top<specular_tlm_ua60553>>(t));
+        add_sc("tlm/line_tlm/" + mode_name, "golden/interp_line", "pixels", module<line_tlm_top>(t));
+    }
+}
+
+// ---------------------------------------------------------------- child: one case, one elaboration
+
+std::unique_ptr<harness> g_harness;
+const sc_case* g_case = nullptr;
+std::unique_ptr<vcd_file> g_vcd;
+std::filesystem::path g_vcd_dir;
+
+void child_batches(benchmark::State& st, const sc_case& c) {
+    if (!g_harness) {
+        g_case = &c;
+        g_harness = c.make();
+        if (c.traced) {
+            std::string tmpl = (std::filesystem::temp_directory_path() / "perf_models_vcd.XXXXXX").string();
+            if (mkdtemp(tmpl.data()) == nullptr) {
+                st.SkipWithError("cannot create a temporary folder for the VCD");
+                return;
+            }
+            g_vcd_dir = tmpl;
+            g_vcd = std::make_unique<vcd_file>((g_vcd_dir / "trace").string());
+            g_vcd->trace(g_harness->root());
+        }
+        sc_core::sc_start(sc_core::SC_ZERO_TIME);  // elaboration and initialisation, untimed
+    }
+    const uint64_t i0 = g_harness->items();
+    const sc_core::sc_time t0 = sc_core::sc_time_stamp();
+    const sc_core::sc_time batch = g_harness->batch();
+    for (auto _ : st) sc_core::sc_start(batch);
+    st.SetItemsProcessed(static_cast<int64_t>(g_harness->items() - i0));
+    st.counters["mismatches"] = static_cast<double>(g_harness->mismatches());
+    st.counters["clocks"] = (sc_core::sc_time_stamp() - t0) / g_harness->period();
+}
+
+// The frame's simulation seconds as CPU time: its wall seconds times the call's CPU / wall ratio
+// (the call also elaborates, so its own CPU time would include that).
+void child_once(benchmark::State& st, const sc_case& c) {
+    double items = 0, seconds = 0, mismatches = 0;
+    for (auto _ : st) {
+        const double c0 = cpu_now();
+        const auto w0 = std::chrono::steady_clock::now();
+        c.once(items, seconds, mismatches);
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+        const double cpu = cpu_now() - c0;
+        st.SetIterationTime(wall > 0 && cpu < wall ? seconds * cpu / wall : seconds);
+    }
+    st.SetItemsProcessed(static_cast<int64_t>(items));
+    st.counters["mismatches"] = mismatches;
+}
+
+// ---------------------------------------------------------------- parent: a proxy per case
+
+struct child_result {
+    bool ok = false;
+    std::string error;
+    double items = 0, seconds = 0, mismatches = 0, clocks = 0;
+};
+
+double unit_seconds(const std::string& u) {
+    return u == "ns" ? 1e-9 : u == "us" ? 1e-6 : u == "ms" ? 1e-3 : 1.0;
+}
+
+child_result run_child(const sc_case& c) {
+    child_result r;
+    char out_tmpl[] = "/tmp/perf_models_child.XXXXXX";
+    const int fd = mkstemp(out_tmpl);
+    if (fd < 0) {
+        r.error = "mkstemp failed";
+        return r;
+    }
+    close(fd);
+    const std::string out = out_tmpl;
+    std::vector<std::string> args{"/proc/self/exe", "--perf-child", // Google Benchmark appends /iterations:1 and /manual_time to the registered name.
+                                  "--benchmark_filter=^" + c.name + "(/iterations:1)?(/manual_time)?$",
+                                  "--benchmark_format=json", "--benchmark_out=" + out,
+                                  "--benchmark_out_format=json"};
+    if (g_quick) args.push_back("--quick");
+    if (!g_min_time.empty()) args.push_back("--benchmark_min_time=" + g_min_time);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    pid_t pid = 0;
+    const int e = posix_spawn(&pid, "/proc/self/exe", &fa, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    int status = 0;
+    if (e != 0 || waitpid(pid, &status, 0) != pid) {
+        r.error = "cannot run the child process";
+    } else {
+        try {
+            std::ifstream f(out);
+            const auto j = nlohmann::json::parse(f);
+            const auto& b = j.at("benchmarks").at(0);
+            if (b.contains("error_occurred") && b["error_occurred"].get<bool>()) {
+                r.error = b.value("error_message", std::string("child reported an error"));
+            } else {
+                // CPU seconds (the machine may be shared): Google Benchmark's rate is per CPU
+                // second, except for a manual-time case (child_once), whose time is CPU time already.
+                r.seconds = b.at("iterations").get<double>() * b.at(c.once ? "real_time" : "cpu_time").get<double>() *
+                            unit_seconds(b.at("time_unit").get<std::string>());
+                r.items = b.at("items_per_second").get<double>() * r.seconds;
+                r.mismatches = b.value("mismatches", 0.0);
+                r.clocks = b.value("clocks", 0.0);
+                r.ok = true;
+            }
+        } catch (const std::exception& ex) {
+            r.error = std::string("no result from the child: ") + ex.what();
+        }
+        if (r.ok && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
+            r.ok = false;
+            r.error = "child exited with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                      " (unexpected SystemC report?)";
+        }
+    }
+    std::filesystem::remove(out);
+    return r;
+}
+
+void proxy(benchmark::State& st, const sc_case& c) {
+    const child_result r = run_child(c);
+    for (auto _ : st) st.SetIterationTime(r.ok ? r.seconds : 1e-9);
+    if (!r.ok) {
+        g_failed = true;
+        st.SkipWithError(r.error.c_str());
+        return;
+    }
+    st.SetItemsProcessed(static_cast<int64_t>(r.items));
+    st.counters["mismatches"] = r.mismatches;
+    if (r.mismatches > 0 && c.strict) g_failed = true;
+    if (r.clocks > 0) st.counters["clocks_per_second"] = benchmark::Counter(r.clocks, benchmark::Counter::kIsRate);
+    const double golden = golden_rate(c.golden);
+    if (golden > 0 && r.seconds > 0) st.counters["vs_golden"] = r.items / r.seconds / golden;
+    st.SetLabel(c.unit + "; golden " + c.golden);
+}
+
+void golden_bench(benchmark::State& st, const golden_case& g) {
+    std::size_t items = g.batch();  // untimed warm-up: builds a batch's static inputs (the head's plan)
+    items = 0;
+    for (auto _ : st) items += g.batch();
+    st.SetItemsProcessed(static_cast<int64_t>(items));
+    st.SetLabel(g.unit);
+}
+
+}  // namespace
+
+int sc_main(int argc, char* argv[]) {
+    // Our own flags first (Google Benchmark rejects flags it does not know).
+    bool child = false;
+    std::vector<char*> args;
+    for (int i = 0; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--perf-child") child = true;
+        else if (a == "--quick") g_quick = true;
+        else {
+            if (a.rfind("--benchmark_min_time=", 0) == 0) g_min_time = a.substr(std::strlen("--benchmark_min_time="));
+            args.push_back(argv[i]);
+        }
+    }
+    static std::string quick_min = "--benchmark_min_time=0.01";
+    if (g_quick && g_min_time.empty()) {
+        g_min_time = "0.01";
+        args.push_back(quick_min.data());
+    }
+    int n = static_cast<int>(args.size());
+    args.push_back(nullptr);
+
+    register_goldens();
+    register_cases();
+    if (child) {
+        tb::report_log::install();
+        for (const auto& c : sc_cases()) {
+            if (c.once)
+                benchmark::RegisterBenchmark(c.name.c_str(), child_once, c)->UseManualTime()->Iterations(1);
+            else
+                benchmark::RegisterBenchmark(c.name.c_str(), child_batches, c);
+        }
+    } else {
+        for (const auto& g : goldens()) benchmark::RegisterBenchmark(g.name.c_str(), golden_bench, g);
+        for (const auto& c : sc_cases())
+            benchmark::RegisterBenchmark(c.name.c_str(), proxy, c)->UseManualTime()->Iterations(1);
+    }
+    benchmark::Initialize(&n, args.data());
+    if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 2;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    if (child) {
+        const bool bad = g_harness && g_harness->mismatches() > 0 && g_case->strict;
+        g_vcd.reset();
+        g_harness.reset();  // before the statics it uses (Verilator's context) go
+        if (!g_vcd_dir.empty()) std::filesystem::remove_all(g_vcd_dir);
+        const unsigned unexpected = tb::report_log::get().unexpected();
+        if (unexpected > 0) std::fprintf(stderr, "perf_models: %u unexpected SystemC reports\n", unexpected);
+        return bad || unexpected > 0 ? 1 : 0;
+    }
+    return g_failed ? 1 : 0;
+}
