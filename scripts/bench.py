@@ -111,7 +111,7 @@ def main():
             continue
         r = b.get("items_per_second", 0.0)
         ratio = b.get("vs_golden")
-        ratio_s = f"1/{1 / ratio:.0f}" if ratio and ratio < 1 else (f"{ratio:.2f}" if ratio else "—")
+        ratio_s = f"1/{1 / ratio:.0f}" if ratio and ratio < 0.2 else (f"{ratio:.2f}" if ratio else "—")
         goal, ok, _ = targets.get(name, ("", None, None))
         met = "" if ok is None else ("yes" if ok else "no")
         mism = b.get("mismatches", 0)
