@@ -48,8 +48,20 @@ public:
     void on_write(std::function<void(unsigned, unsigned, const rgb&)> f) { sink_ = std::move(f); }
 
 private:
+    // Woken at rising edges only while `valid` may be 1: at an edge where it is 0 the process sleeps
+    // until `valid` rises (just after some rising edge) and samples again from the next rising edge
+    // (a Horner pixel is valid one clock in six: no wake-up in the other five).
     void on_clock() {
-        if (!valid.read()) return;
+        if (waiting_) {  // `valid` has just risen: its first sampling edge is the next one
+            waiting_ = false;
+            next_trigger(clk.posedge_event());
+            return;
+        }
+        if (!valid.read()) {
+            waiting_ = true;
+            next_trigger(valid.posedge_event());
+            return;
+        }
         const unsigned px = x.read().to_uint(), py = y.read().to_uint();
         if (px >= width_ || py >= height_) {
             std::ostringstream os;
@@ -70,6 +82,7 @@ private:
     std::vector<rgb> px_;
     std::vector<uint8_t> written_;
     std::size_t writes_ = 0;
+    bool waiting_ = false;
     std::function<void(unsigned, unsigned, const rgb&)> sink_;
 };
 

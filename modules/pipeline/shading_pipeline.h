@@ -36,14 +36,13 @@
 #include "pipeline/fd_pixel_ctrl.h"
 #include "pipeline/horner_channel.h"
 #include "pipeline/horner_pixel_ctrl.h"
+#include "pipeline/pipe_eval.h"
 #include "pipeline/sample_channel.h"
 #include "pipeline/sample_ctrl.h"
 #include "specular/block_delays.h"
 #include "specular/specular_device.h"
 
 namespace shading {
-
-enum class pipe_eval { horner, fd };
 
 template <class AGen, pipe_eval EVAL>
 class shading_pipeline : public sc_core::sc_module {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "interp/fd_eval.h"
+#include "interp/fd_eval_fast.h"
 #include "interp/interp_bench_common.h"
 #include "interp/interp_line.h"
 
@@ -196,7 +197,8 @@ private:
     std::map<unsigned, std::set<sc_core::sc_time>> latencies_;
 };
 
-template <unsigned M>
+// DUT: fd_eval<M> (block level) or fd_eval_fast<M> (the fast pin-level abstraction): the same pins.
+template <unsigned M, class DUT = fd_eval<M>>
 class fd_bench : public sc_core::sc_module {
 public:
     using len_t = typename fd_ctrl<M>::len_t;
@@ -206,7 +208,7 @@ public:
     sc_core::sc_signal<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"}, i_px{"i_px"};
 
     fd_checker<M> checker;
-    fd_eval<M> dut{"dut"};
+    DUT dut{"dut"};
     fd_stimulus<M> stim;
     fd_monitor<M> mon;
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "interp/horner_unit.h"
+#include "interp/horner_unit_fast.h"
 #include "interp/interp_bench_common.h"
 #include "interp/interp_line.h"
 
@@ -177,7 +178,10 @@ private:
     std::set<sc_core::sc_time> latencies_;
 };
 
-class horner_bench : public sc_core::sc_module {
+// DUT: horner_unit (block level) or horner_unit_fast (the fast pin-level abstraction): the same pins
+// and the RG net, checked by the same monitor and checker.
+template <class DUT>
+class horner_bench_t : public sc_core::sc_module {
 public:
     sc_core::sc_clock clk;
     sc_core::sc_signal<bool> start{"start"}, deg2{"deg2"}, done{"done"}, busy{"busy"};
@@ -185,11 +189,11 @@ public:
     sc_core::sc_signal<t_t> t{"t"};
 
     horner_checker checker;
-    horner_unit dut{"dut"};
+    DUT dut{"dut"};
     horner_stimulus stim;
     horner_monitor mon;
 
-    horner_bench(const sc_core::sc_module_name& name, item_source<horner_request> reqs, unsigned gap = 0,
+    horner_bench_t(const sc_core::sc_module_name& name, item_source<horner_request> reqs, unsigned gap = 0,
                  horner_checker::golden_fn golden = &horner_checker::golden, const interp_clock& ck = {})
         : sc_module(name), clk("clk", ck.period(), ck.duty()), checker(std::move(golden)),
           stim("stim", std::move(reqs), gap), mon("mon", [this](const horner_sample& s) { checker.check(s); }) {
@@ -204,5 +208,7 @@ public:
     }
     bool finished() const { return stim.finished(); }
 };
+using horner_bench = horner_bench_t<horner_unit>;
+using horner_bench_fast = horner_bench_t<horner_unit_fast>;
 
 }  // namespace shading::tb

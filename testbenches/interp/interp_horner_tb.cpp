@@ -8,6 +8,7 @@
 //   interp_horner_tb                    VCD traces/interp_horner.vcd, view traces/interp_horner.gtkw
 //   interp_horner_tb --csv out/interp_horner.csv
 //   interp_horner_tb --random 100000 --seed 7 [--gap 2]
+//   interp_horner_tb --abstraction fast ...   the fast pin-level unit (interp/horner_unit_fast.h)
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -18,6 +19,13 @@
 
 using namespace shading;
 using namespace shading::tb;
+
+namespace {
+
+template <class Bench>
+int run_bench(bench_runner& run, const std::string& csv_path, unsigned width, unsigned m, unsigned gap);
+
+}  // namespace
 
 int sc_main(int argc, char* argv[]) {
     bench_runner run("interp_horner",
@@ -30,10 +38,22 @@ int sc_main(int argc, char* argv[]) {
     run.app.add_option("--m", m, "interval of 2^m pixels, t = k/2^m")->check(CLI::Range(interp::m_min, 8u));
     run.app.add_option("--gap", gap, "idle clocks after each result (default 0: back to back)")
         ->check(CLI::Range(0u, 100u));
+    std::string level = "block";
+    run.app.add_option("--abstraction", level, "block (Fig. 4's blocks, default) or fast (the same pins, one process)")
+        ->check(CLI::IsMember({"block", "fast"}));
     if (auto rc = run.parse(argc, argv)) return *rc;
+    std::cout << "interp_horner: abstraction " << level << '\n';
+    return level == "fast" ? run_bench<horner_bench_fast>(run, csv_path, width, m, gap)
+                           : run_bench<horner_bench>(run, csv_path, width, m, gap);
+}
+
+namespace {
+
+template <class Bench>
+int run_bench(bench_runner& run, const std::string& csv_path, unsigned width, unsigned m, unsigned gap) {
 
     if (run.random()) {
-        horner_bench bench("tb", random_horner_requests(run.random_count(), run.seed()), gap);
+        Bench bench("tb", random_horner_requests(run.random_count(), run.seed()), gap);
         bench.checker.keep_samples(false);
         bench.checker.inject_mismatch(run.inject(), run.inject_count());
         run.simulate(bench, sc_core::sc_max_time());
@@ -58,7 +78,7 @@ int sc_main(int argc, char* argv[]) {
             }
         }
 
-    horner_bench bench("tb", reqs, gap);
+    Bench bench("tb", reqs, gap);
     bench.checker.inject_mismatch(run.inject(), run.inject_count());
     run.simulate(bench);
 
@@ -96,3 +116,5 @@ int sc_main(int argc, char* argv[]) {
     }
     return run.finish(s.size(), bench.checker.mismatches(), s.size() == reqs.size() ? 0 : 1);
 }
+
+}  // namespace

@@ -22,6 +22,7 @@
 #include "interp/interp_bench_common.h"
 #include "interp/interp_line.h"
 #include "interp/interp_line_unit.h"
+#include "interp/interp_line_unit_fast.h"
 
 namespace shading::tb {
 
@@ -205,7 +206,8 @@ private:
     std::size_t golden_interval_ = 0;
 };
 
-template <unsigned M, interp::sample_set SET, interp::div3_mode DIV>
+// DUT: interp_line_unit (block level, default) or interp_line_unit_fast (the fast pin-level abstraction).
+template <unsigned M, interp::sample_set SET, interp::div3_mode DIV, class DUT = interp_line_unit<M, SET, DIV>>
 class line_bench : public sc_core::sc_module {
 public:
     using len_t = typename fd_ctrl<M>::len_t;
@@ -216,7 +218,7 @@ public:
     sc_core::sc_signal<coef_t> i_px{"i_px"};
 
     line_checker<M> checker;
-    interp_line_unit<M, SET, DIV> dut{"dut"};
+    DUT dut{"dut"};
     line_stimulus<M> stim;
     line_monitor<M> mon;
 

@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <systemc>
 #include <vector>
 
@@ -18,6 +19,13 @@
 #include "pipeline/frame_buffer.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/shading_pipeline.h"
+
+namespace shading {
+// The fast abstraction (pipeline/shading_pipeline_fast.h), included only where a fast bench is built
+// (pipeline_sim_fast.cpp), so the block-level runs do not recompile when it changes.
+template <pipe_eval EVAL>
+class shading_pipeline_fast;
+}  // namespace shading
 
 namespace shading::pipeline {
 
@@ -196,11 +204,13 @@ private:
     uint64_t frame_edge_ = 0;
 };
 
-// The bench: clock, pins, the pipeline, the frame buffer, the geometry source and the checker.
-template <class AGen, pipe_eval EVAL>
+// The bench: clock, pins, the pipeline, the frame buffer, the geometry source and the checker. FAST:
+// the fast pin-level abstraction (shading_pipeline_fast.h, which names the device by `dev` and
+// ignores `gen`) instead of the block-level pipeline.
+template <class AGen, pipe_eval EVAL, bool FAST = false>
 class pipeline_bench : public sc_core::sc_module {
 public:
-    using dut_t = shading_pipeline<AGen, EVAL>;
+    using dut_t = std::conditional_t<FAST, shading_pipeline_fast<EVAL>, shading_pipeline<AGen, EVAL>>;
     using coord_t = sc_dt::sc_uint<16>;
 
     sc_core::sc_clock clk{"clk", pipeline_period()};
@@ -225,7 +235,7 @@ public:
     pipeline_bench(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
                    const scene::device_config& dev, const plan_config& c, const typename AGen::config& gen,
                    std::function<void(std::size_t, std::size_t)> progress)
-        : sc_module(name), dut("dut", dev.mode, gen, c.set, c.div, fd_m(c)), fb("fb", p.width, p.height),
+        : sc_module(name), dut(make_dut("dut", dev, gen, c)), fb("fb", p.width, p.height),
           src("src", p, k, [this] { return dut.idle(); }),
           checker(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
         dut.clk(clk); dut.start(start); dut.load_frame(load_frame); dut.ready(ready);
@@ -269,6 +279,13 @@ public:
     const sc_core::sc_time& last_write() const { return last_write_; }
 
 private:
+    // The DUT's constructor by abstraction (guaranteed copy elision: a module is built in place).
+    static dut_t make_dut(const char* name, const scene::device_config& dev, const typename AGen::config& gen,
+                          const plan_config& c) {
+        if constexpr (FAST) return dut_t(name, dev, c.set, c.div, fd_m(c));
+        else return dut_t(name, dev.mode, gen, c.set, c.div, fd_m(c));
+    }
+
     std::function<void(std::size_t, std::size_t)> progress_;
     sc_core::sc_time last_write_;
 };

@@ -10,11 +10,15 @@
 #include <string>
 #include <vector>
 
+#include "interp/abstraction.h"
 #include "pipeline/pipeline.h"
 
 namespace shading::pipeline {
 
 struct sim_options {
+    // block: shading_pipeline<AGen, EVAL> (every block of the figures); fast: shading_pipeline_fast
+    // (the same pins and timing at them, one process; modules/pipeline/shading_pipeline_fast.h).
+    shading::abstraction level = shading::abstraction::block;
     std::string vcd_path;  // empty: no trace; else a VCD there (".vcd" appended unless given)
     std::function<void(std::size_t done, std::size_t total)> progress;  // pixels written / expected
     // For the tests of the verdict: the golden codes of the k-th pixel written are corrupted (one
@@ -26,6 +30,7 @@ struct sim_result {
     frame f;                     // the frame buffer's content (covered = written)
     uint64_t clocks = 0;         // clock cycles from the first rising edge to the last pixel's write
     double seconds = 0.0;        // wall time of the simulation (elaboration excluded)
+    double cpu_seconds = 0.0;    // the process's CPU time over the same span (the speed on a shared machine)
     std::size_t mismatches = 0;  // pixels that differ from golden_interval, or missing, or unexpected
     // For the tests.
     std::vector<std::size_t> write_order;  // frame index of every frame-buffer write, in order

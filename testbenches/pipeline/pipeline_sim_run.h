@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -31,6 +32,14 @@ inline frame empty_frame(const plan& p) {
     return f;
 }
 
+// This process's CPU time (user + system): on a shared machine the simulator's speed, where wall
+// time also counts the other processes.
+inline double cpu_seconds() {
+    timespec ts{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 // A watchdog far beyond any plan: 12 clocks per job plus 6 per pixel, and the frame load.
 inline sc_core::sc_time time_limit(const plan& p) {
     uint64_t clocks = 100;
@@ -38,13 +47,13 @@ inline sc_core::sc_time time_limit(const plan& p) {
     return pipeline_period() * static_cast<double>(clocks);
 }
 
-template <class AGen, pipe_eval EVAL>
+template <class AGen, pipe_eval EVAL, bool FAST = false>
 sim_result run(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
                const typename AGen::config& gen, const sim_options& o) {
     sim_result res;
     res.period_ns = pipeline_period().to_seconds() * 1e9;
     res.f = empty_frame(p);
-    auto bench = std::make_unique<pipeline_bench<AGen, EVAL>>("tb", p, k, dev, c, gen, o.progress);
+    auto bench = std::make_unique<pipeline_bench<AGen, EVAL, FAST>>("tb", p, k, dev, c, gen, o.progress);
     bench->checker.inject_mismatch(o.inject_mismatch);
     std::unique_ptr<vcd_file> vcd;
     if (!o.vcd_path.empty()) {
@@ -59,7 +68,9 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
         vcd->trace(*bench);
     }
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = cpu_seconds();
     sc_core::sc_start(time_limit(p));
+    res.cpu_seconds = cpu_seconds() - c0;
     res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!bench->finished()) {
         SC_REPORT_WARNING(msg::mismatch, "simulate_frame: the pipeline did not drain within the watchdog's time");
@@ -95,9 +106,15 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
     return res;
 }
 
+// The fast abstraction's run (pipeline_sim_fast.cpp; it names the device by dev, no generator type).
+template <pipe_eval EVAL>
+sim_result run_fast(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
+                    const sim_options& o);
+
 template <pipe_eval EVAL>
 inline sim_result run_device(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
                       const sim_options& o) {
+    if (o.level == abstraction::fast) return run_fast<EVAL>(p, k, dev, c, o);
     switch (dev.device) {
         case scene::specular_device::patent: return run<a_gen_linear, EVAL>(p, k, dev, c, ua60553::patent, o);
         case scene::specular_device::minimax: return run<a_gen_tuned, EVAL>(p, k, dev, c, ua60553::minimax, o);
@@ -109,7 +126,11 @@ inline sim_result run_device(const plan& p, const frame_constants& k, const scen
     return {};
 }
 
-// Each evaluator's runs are compiled in their own translation unit.
+// Each evaluator's runs are compiled in their own translation unit, the fast ones in a third.
+extern template sim_result run_fast<pipe_eval::horner>(const plan&, const frame_constants&, const scene::device_config&,
+                                                        const plan_config&, const sim_options&);
+extern template sim_result run_fast<pipe_eval::fd>(const plan&, const frame_constants&, const scene::device_config&,
+                                                    const plan_config&, const sim_options&);
 extern template sim_result run_device<pipe_eval::horner>(const plan&, const frame_constants&, const scene::device_config&,
                                                           const plan_config&, const sim_options&);
 extern template sim_result run_device<pipe_eval::fd>(const plan&, const frame_constants&, const scene::device_config&,

@@ -80,6 +80,7 @@ struct options {
     std::string device = "patent", mode = "saturate";
     bool device_given = false;          // --sweep: without --device, the grid's devices
     bool sim = true, images = true;
+    std::string abstraction = "block";  // the SystemC pipeline's level: block or fast (interp/abstraction.h)
     std::string vcd, json_name = "report.json", md_name = "report.md";
     double error_scale = 2.0, error_scale_total = 16.0;
     // --sweep
@@ -343,10 +344,12 @@ int render(const options& o) {
     // The SystemC pipeline: the same plan through the hardware, which must give the golden frame.
     json sim_j = {{"ran", false}};
     double sim_clocks_per_px = std::numeric_limits<double>::quiet_NaN(), sim_px_per_s = sim_clocks_per_px;
+    double sr_cpu = 0.0, sim_px_per_cpu_s = sim_clocks_per_px;  // by the process's CPU time (wall time counts other processes)
     if (o.sim) {
 #if SHADING_PIPELINE_SIM
         sim_options so;
         so.vcd_path = o.vcd;
+        parse_abstraction(o.abstraction, so.level);
         if (!o.vcd.empty() && fs::path(o.vcd).has_parent_path()) fs::create_directories(fs::path(o.vcd).parent_path());
         const bool tty = ::isatty(2);
         auto last = std::chrono::steady_clock::now();
@@ -372,6 +375,7 @@ int render(const options& o) {
         };
         const sim_result sr = simulate_frame(p, k, dev, cfg, so);
         wall["sim"] = sr.seconds;
+        sr_cpu = sr.cpu_seconds;
         // A SystemC warning or error during the run is a failure too (the project's rule), reported
         // by report_log as it happened.
         if (tb::report_log::get().unexpected() != 0) {
@@ -414,8 +418,10 @@ int render(const options& o) {
         const double px = static_cast<double>(hc.pixels ? hc.pixels : 1);
         sim_clocks_per_px = sr.clocks / px;
         sim_px_per_s = sr.seconds > 0 ? hc.pixels / sr.seconds : 0.0;
-        sim_j = {{"ran", true},          {"clocks", sr.clocks},        {"seconds", sr.seconds},
+        sim_px_per_cpu_s = sr.cpu_seconds > 0 ? hc.pixels / sr.cpu_seconds : 0.0;
+        sim_j = {{"ran", true},          {"abstraction", o.abstraction}, {"clocks", sr.clocks},        {"seconds", sr.seconds},
                  {"pixels", hc.pixels},  {"pixels_per_second", sim_px_per_s},
+                 {"cpu_seconds", sr.cpu_seconds}, {"pixels_per_cpu_second", sim_px_per_cpu_s},
                  {"clocks_per_pixel", sim_clocks_per_px}, {"mismatches", 0},
                  {"bit_exact_vs_golden", true}, {"vcd", o.vcd.empty() ? json(nullptr) : json(o.vcd)}};
 #else
@@ -623,7 +629,8 @@ int render(const options& o) {
     if (sim_j["ran"].get<bool>())
         md << "; simulated: " << fmt("%.3f", sim_clocks_per_px) << " clocks per pixel, "
            << fmt("%.0f", sim_px_per_s) << " pixels per second (" << fmt("%.2f", wall["sim"])
-           << " s), bit-exact against the golden frame";
+           << " s wall; " << fmt("%.0f", sim_px_per_cpu_s) << " per CPU second, " << fmt("%.2f", sr_cpu) << " s; "
+           << o.abstraction << " abstraction), bit-exact against the golden frame";
     else
         md << "; SystemC pipeline not run (--no-sim)";
     md << ".\n\n## Images\n\n"
@@ -660,8 +667,9 @@ int render(const options& o) {
                 hw_px > 0 ? hc.sample_stage.long_ops() / hw_px : 0.0, hw_px > 0 ? hc.interpolation.long_ops() / hw_px : 0.0,
                 ratio);
     if (sim_j["ran"].get<bool>())
-        std::printf("  sim: bit-exact, %.3f clocks/pixel, %.0f pixels/s, %.2f s\n", sim_clocks_per_px, sim_px_per_s,
-                    wall["sim"]);
+        std::printf("  sim (%s): bit-exact, %.3f clocks/pixel, %.0f pixels/s (%.2f s), %.0f pixels per CPU second "
+                    "(%.2f s)\n", o.abstraction.c_str(), sim_clocks_per_px, sim_px_per_s, wall["sim"], sim_px_per_cpu_s,
+                    sr_cpu);
     std::string files = written.empty() ? "" : "*.png";
     for (const std::string& n : {o.md_name, o.json_name})
         if (!n.empty()) files += (files.empty() ? "" : ", ") + n;
@@ -929,6 +937,10 @@ int main(int argc, char* argv[]) {
                                            "(default on)");
     app.add_flag("--images,!--no-images", o.images, "write the PNGs (default on)");
     app.add_option("--vcd", o.vcd, "with --sim: VCD file of the SystemC pipeline");
+    app.add_option("--abstraction", o.abstraction,
+                   "with --sim: the SystemC pipeline's level: block (every block of the figures, default) or fast "
+                   "(the same pins and timing at them, one process)")
+        ->check(CLI::IsMember({"block", "fast"}));
     app.add_option("--json", o.json_name, "report file name in --out (empty: none)");
     app.add_option("--md", o.md_name, "Markdown report file name in --out (empty: none)");
     app.add_option("--error-scale", o.error_scale, "error vs per-pixel shown white in error_interp.png (8-bit levels)")

@@ -2,10 +2,14 @@
 # tests (pipeline_sim.h), and its GoogleTest suite (one elaboration per test process).
 if(TARGET shading_pipeline)
   add_library(shading_pipeline_sim STATIC ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim.cpp
-              ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_horner.cpp ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_fd.cpp)
+              ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_horner.cpp ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_fd.cpp
+              ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_fast.cpp)
   target_include_directories(shading_pipeline_sim PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(shading_pipeline_sim PUBLIC shading_pipeline shading_modules shading_ua22802 shading_tb_common)
 endif()
 if(TARGET shading_pipeline_sim)
   shading_add_gtest(test_pipeline_sim SOURCES test_pipeline_sim.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
+  # The fast pin-level pipeline: side by side with the block level (every pin at every edge, random
+  # jobs, every evaluator and device), and small renders against the golden frame.
+  shading_add_gtest(test_pipeline_fast SOURCES test_pipeline_fast.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
 endif()

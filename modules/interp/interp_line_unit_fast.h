@@ -1,0 +1,112 @@
+// The fast pin-level abstraction of the raster-line interpolator interp_line_unit<M, SET, DIV, G>
+// (interp/abstraction.h): its pins and the timing at them (interp_line_unit.h's handshake: ready =
+// NOT valid OR last, accepted at a rising edge with start = 1 and ready = 1, pixel k on i_px k + 1
+// clocks after acceptance, one pixel per clock with no bubble), one process, no internal blocks or
+// delays:
+//   - rising edges: fd_ctrl.h's controller as plain state (LOAD / STEP / HOLD, valid, last, ready;
+//     a len of 0 or above 2^M reported as fd_ctrl does and evaluated as a full interval);
+//   - falling edges: first the evaluator's registers (LOAD: every pixel of the interval through
+//     golden_fd from the A..D the coefficient unit holds; STEP: the next pixel on i_px), then the
+//     coefficient unit's sample registers latch I1..I4 and A..D follow through golden_cubic_coefs
+//     (sample set, /3 mode and grouping G; src/golden/interp_golden.h).
+#pragma once
+
+#include <array>
+#include <sstream>
+#include <systemc>
+#include <vector>
+
+#include "core/report_ids.h"
+#include "formats/interp_formats.h"
+#include "golden/interp_golden.h"
+
+namespace shading {
+
+template <unsigned M, interp::sample_set SET, interp::div3_mode DIV,
+          interp::div3_grouping G = interp::div3_grouping::whole_sum>
+class interp_line_unit_fast : public sc_core::sc_module {
+    static_assert(M >= interp::m_min && M <= interp::m_max, "interval of 2^M pixels, M in 2..6");
+    using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
+    using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
+
+public:
+    using len_t = sc_dt::sc_uint<interp::len_width(M)>;  // fd_eval<M>::len_t
+    static constexpr unsigned n_pixels = 1u << M;
+
+    sc_core::sc_in<bool> clk{"clk"};
+    sc_core::sc_in<bool> start{"start"};
+    sc_core::sc_in<len_t> len{"len"};
+    sc_core::sc_in<sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};
+    sc_core::sc_out<coef_t> i_px{"i_px"};
+    sc_core::sc_out<bool> valid{"valid"}, last{"last"};
+    sc_core::sc_out<bool> ready{"ready"};
+
+    SC_HAS_PROCESS(interp_line_unit_fast);
+    explicit interp_line_unit_fast(const sc_core::sc_module_name& name) : sc_module(name) {
+        SC_METHOD(on_edge);
+        sensitive << clk;
+        dont_initialize();
+        // ready starts 0 and rises at the first rising edge, as the block unit's gate settles only
+        // after its first evaluation (at the first edge it reads 0 there too).
+    }
+
+private:
+    enum select { hold, load, step };
+
+    void on_edge() {
+        if (clk.read()) rising();
+        else falling();
+    }
+
+    void rising() {
+        sel_ = hold;
+        if (start.read() && remaining_ <= 1) {
+            length_ = static_cast<unsigned>(len.read().to_uint());
+            if (length_ == 0 || length_ > n_pixels) {
+                std::ostringstream os;
+                os << name() << ": len = " << length_ << " at " << sc_core::sc_time_stamp() << " is outside 1.."
+                   << n_pixels << "; a full interval of " << n_pixels << " pixels is evaluated";
+                SC_REPORT_WARNING(msg::input, os.str().c_str());
+                length_ = n_pixels;
+            }
+            remaining_ = length_;
+            sel_ = load;
+        } else if (remaining_ > 1) {
+            --remaining_;
+            sel_ = step;
+        } else {
+            remaining_ = 0;
+        }
+        valid.write(remaining_ != 0);
+        last.write(remaining_ == 1);
+        ready.write(remaining_ <= 1);
+    }
+
+    void falling() {
+        // The evaluator's registers, from the coefficients of the samples latched a clock ago.
+        if (sel_ == load) {
+            px_ = interp::golden_fd(k_, M, length_);
+            at_ = 0;
+            i_px.write(coef_t(px_[0]));
+        } else if (sel_ == step) {
+            i_px.write(coef_t(px_[++at_]));
+        }
+        // The coefficient unit's sample registers (every falling edge).
+        const std::array<uint64_t, 4> s{i1.read().to_uint64(), i2.read().to_uint64(), i3.read().to_uint64(),
+                                         i4.read().to_uint64()};
+        if (!latched_ || s != held_) {
+            held_ = s;
+            latched_ = true;
+            k_ = interp::golden_cubic_coefs(s, SET, DIV, G);
+        }
+    }
+
+    select sel_ = hold;
+    unsigned remaining_ = 0, length_ = 0, at_ = 0;
+    std::array<uint64_t, 4> held_{};
+    bool latched_ = false;
+    interp::cubic_coefs k_{};
+    std::vector<uint64_t> px_;
+};
+
+}  // namespace shading

@@ -1,0 +1,378 @@
+// The fast pin-level abstraction of the shading pipeline (modules/pipeline/shading_pipeline_fast.h)
+// against the block-level pipeline and the golden model:
+//   - side by side: one bench drives the block-level pipeline and the fast one from the same pins
+//     (random jobs: every m, lengths, degrees, exact pixels, some invalid ones, random frame
+//     constants), and every pin is compared at every edge of the clock: ready at falling and rising
+//     edges, px_valid / px_x / px_y at rising edges, px_r/g/b where px_valid = 1; both frame
+//     buffers against golden_interval (pipeline_checker);
+//   - alone through simulate_frame (abstraction::fast): small renders equal golden_frame bit for
+//     bit, in the plan's order, with the block level's clocks per pixel bounds.
+// One elaboration per test (each test is its own process, gtest_discover_tests).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/bench_source.h"
+#include "common/report_log.h"
+#include "core/report_ids.h"
+#include "pipeline/shading_pipeline_fast.h"
+#include "pipeline_bench.h"
+#include "pipeline_sim.h"
+#include "tuned/a_gen_tuned.h"
+#include "ua22802/a_gen_rom.h"
+#include "ua60553/a_gen_linear.h"
+
+using namespace shading;
+using namespace shading::pipeline;
+
+namespace {
+
+// ---- Random jobs ----
+
+// A random plan on a frame `w` wide: jobs placed left to right, line after line, never overlapping;
+// about one in `bad_every` invalid (len 0, len > 2^m, m 1 or 7, an exact quadratic; refused and
+// reported by both pipelines), the rest valid for the evaluator (fd_m != 0: that m or exact pixels).
+plan random_plan(uint64_t seed, std::size_t jobs, unsigned w, unsigned fd_m, unsigned bad_every) {
+    plan p;
+    p.width = w;
+    unsigned x = 0, y = 0;
+    for (std::size_t i = 0; i < jobs; ++i) {
+        tb::split_rng r(seed, i);
+        interval_job j;
+        const uint64_t kind = r.range(0, 9);
+        if (kind < 2) j.m = 0;
+        else if (fd_m != 0) j.m = fd_m;
+        else j.m = static_cast<unsigned>(r.range(interp::m_min, interp::m_max));
+        j.len = j.m == 0 ? 1 : static_cast<unsigned>(r.range(1, 1u << j.m));
+        j.deg2 = j.m != 0 && r.range(0, 2) == 0;
+        for (auto& s : j.s) {
+            // Q1.15 codes in [0, 1] (above 1.0 the device's input checker reports them).
+            const uint64_t one = uint64_t{1} << spec::cos_fmt.frac;
+            s.cos_nl = static_cast<uint32_t>(r.range(0, one));
+            s.cos_nh = s.cos_nl == 0 ? 0 : static_cast<uint32_t>(r.range(0, one));
+        }
+        if (j.m == 0) j.s[1] = j.s[2] = j.s[3] = j.s[0];
+        if (j.deg2) j.s[3] = j.s[2];
+        if (bad_every != 0 && r.range(0, bad_every - 1) == 0) {
+            switch (r.range(0, 3)) {
+                case 0: j.len = 0; break;
+                case 1: j.m = r.range(0, 1) ? 1 : 7; break;
+                case 2: j.m = 0; j.len = 1; j.deg2 = true; break;
+                default: j.len = (1u << j.m) + 1; break;
+            }
+        }
+        const unsigned span = std::max(1u, j.len);
+        if (x + span > w) {
+            x = 0;
+            ++y;
+        }
+        j.x0 = x;
+        j.y = y;
+        x += span;
+        p.jobs.push_back(j);
+        p.pixels += j.len;
+    }
+    p.height = y + 1;
+    return p;
+}
+
+frame_constants random_constants(uint64_t seed) {
+    tb::split_rng r(seed, 1u << 30);
+    frame_constants k;
+    k.n = static_cast<unsigned>(r.range(1, 1000));
+    for (int c = 0; c < 3; ++c) {
+        k.ksi[c] = r.range(0, 255);
+        k.kdi[c] = r.range(0, 255);
+        k.ambient[c] = r.range(0, 255 * 256);
+    }
+    return k;
+}
+
+// ---- Side by side ----
+
+// Compares the two pipelines' pins at every edge (samples taken after the edge's writes settle:
+// at the next opposite edge, which reads the values both held through the phase).
+class pin_comparator : public sc_core::sc_module {
+public:
+    using coord_t = sc_dt::sc_uint<16>;
+    sc_core::sc_in<bool> clk{"clk"};
+    sc_core::sc_in<bool> ready_b{"ready_b"}, ready_f{"ready_f"}, valid_b{"valid_b"}, valid_f{"valid_f"};
+    sc_core::sc_in<coord_t> x_b{"x_b"}, x_f{"x_f"}, y_b{"y_b"}, y_f{"y_f"};
+    sc_core::sc_vector<sc_core::sc_in<pipe::sample_t>> px_b{"px_b", 3}, px_f{"px_f", 3};
+
+    SC_HAS_PROCESS(pin_comparator);
+    explicit pin_comparator(const sc_core::sc_module_name& name) : sc_module(name) {
+        SC_METHOD(on_edge);
+        sensitive << clk;
+        dont_initialize();
+    }
+    std::size_t differences() const { return diffs_; }
+    std::size_t edges() const { return edges_; }
+    std::size_t valid_edges() const { return valid_edges_; }
+
+private:
+    void on_edge() {
+        ++edges_;
+        // Values held through the phase that this edge ends.
+        bool same = ready_b.read() == ready_f.read();
+        if (clk.read()) {
+            same = same && valid_b.read() == valid_f.read() && x_b.read() == x_f.read() && y_b.read() == y_f.read();
+            if (valid_b.read()) {
+                ++valid_edges_;
+                for (int c = 0; c < 3; ++c) same = same && px_b[c].read() == px_f[c].read();
+            }
+        }
+        if (!same && diffs_++ < 5) {
+            std::printf("pins differ at %s (%s edge): ready %d/%d valid %d/%d x %u/%u y %u/%u r %x/%x\n",
+                        sc_core::sc_time_stamp().to_string().c_str(), clk.read() ? "rising" : "falling",
+                        int(ready_b.read()), int(ready_f.read()), int(valid_b.read()), int(valid_f.read()),
+                        x_b.read().to_uint(), x_f.read().to_uint(), y_b.read().to_uint(), y_f.read().to_uint(),
+                        px_b[0].read().to_uint(), px_f[0].read().to_uint());
+        }
+    }
+    std::size_t diffs_ = 0, edges_ = 0, valid_edges_ = 0;
+};
+
+template <class AGen, pipe_eval EVAL>
+class pair_bench : public sc_core::sc_module {
+public:
+    using coord_t = sc_dt::sc_uint<16>;
+    using block_t = shading_pipeline<AGen, EVAL>;
+    using fast_t = shading_pipeline_fast<EVAL>;
+    struct outs {
+        sc_core::sc_signal<bool> ready, valid;
+        sc_core::sc_signal<coord_t> x, y;
+        sc_core::sc_signal<pipe::sample_t> r, g, b;
+    };
+
+    sc_core::sc_clock clk{"clk", pipeline_period()};
+    sc_core::sc_signal<bool> start{"start"}, load_frame{"load_frame"};
+    sc_core::sc_signal<coord_t> y{"y"}, x0{"x0"};
+    sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
+    sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
+    sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
+    sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
+    sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
+    sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3}, kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
+    outs ob, of;
+
+    block_t blk;
+    fast_t fst;
+    frame_buffer fb_b, fb_f;
+    geometry_source src;
+    pipeline_checker chk_b, chk_f;
+    pin_comparator cmp{"cmp"};
+
+    pair_bench(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
+               const scene::device_config& dev, const plan_config& c, const typename AGen::config& gen,
+               interp::sample_set fast_set)
+        : sc_module(name), blk("blk", dev.mode, gen, c.set, c.div, fd_m(c)), fst("fst", dev, fast_set, c.div, fd_m(c)),
+          fb_b("fb_b", p.width, p.height), fb_f("fb_f", p.width, p.height),
+          src("src", p, k, [this] { return blk.idle() && fst.idle(); }),
+          chk_b(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), chk_f(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0) {
+        bind(blk, ob);
+        bind(fst, of);
+        fb_b.clk(clk); fb_b.valid(ob.valid); fb_b.x(ob.x); fb_b.y(ob.y); fb_b.r(ob.r); fb_b.g(ob.g); fb_b.b(ob.b);
+        fb_f.clk(clk); fb_f.valid(of.valid); fb_f.x(of.x); fb_f.y(of.y); fb_f.r(of.r); fb_f.g(of.g); fb_f.b(of.b);
+        fb_b.on_write([this](unsigned px, unsigned py, const frame_buffer::rgb& v) { chk_b.check(px, py, v); });
+        fb_f.on_write([this](unsigned px, unsigned py, const frame_buffer::rgb& v) { chk_f.check(px, py, v); });
+        src.clk(clk); src.ready(ob.ready); src.start(start); src.load_frame(load_frame);
+        src.y(y); src.x0(x0); src.len(len); src.m(m); src.deg2(deg2);
+        for (int i = 0; i < 4; ++i) {
+            src.nh[i](nh[i]);
+            src.nl[i](nl[i]);
+        }
+        src.n(n);
+        for (int ch = 0; ch < 3; ++ch) {
+            src.ksi[ch](ksi[ch]);
+            src.kdi[ch](kdi[ch]);
+            src.amb[ch](amb[ch]);
+        }
+        cmp.clk(clk);
+        cmp.ready_b(ob.ready); cmp.ready_f(of.ready); cmp.valid_b(ob.valid); cmp.valid_f(of.valid);
+        cmp.x_b(ob.x); cmp.x_f(of.x); cmp.y_b(ob.y); cmp.y_f(of.y);
+        cmp.px_b[0](ob.r); cmp.px_b[1](ob.g); cmp.px_b[2](ob.b);
+        cmp.px_f[0](of.r); cmp.px_f[1](of.g); cmp.px_f[2](of.b);
+    }
+    bool finished() const { return src.finished(); }
+
+private:
+    template <class D>
+    void bind(D& d, outs& o) {
+        d.clk(clk); d.start(start); d.load_frame(load_frame); d.ready(o.ready);
+        d.in_y(y); d.in_x0(x0); d.in_len(len); d.in_m(m); d.in_deg2(deg2);
+        d.in_nh1(nh[0]); d.in_nh2(nh[1]); d.in_nh3(nh[2]); d.in_nh4(nh[3]);
+        d.in_nl1(nl[0]); d.in_nl2(nl[1]); d.in_nl3(nl[2]); d.in_nl4(nl[3]);
+        d.in_n(n);
+        d.in_ksi_r(ksi[0]); d.in_ksi_g(ksi[1]); d.in_ksi_b(ksi[2]);
+        d.in_kdi_r(kdi[0]); d.in_kdi_g(kdi[1]); d.in_kdi_b(kdi[2]);
+        d.in_amb_r(amb[0]); d.in_amb_g(amb[1]); d.in_amb_b(amb[2]);
+        d.px_valid(o.valid); d.px_x(o.x); d.px_y(o.y); d.px_r(o.r); d.px_g(o.g); d.px_b(o.b);
+    }
+};
+
+struct pair_case {
+    const char* name;
+    scene::specular_device device;
+    pipe_eval eval;
+    unsigned fd_m;  // forward differences: 0 any m per interval, else the fixed m
+    uint64_t seed;
+};
+void PrintTo(const pair_case& c, std::ostream* os) { *os << c.name; }
+
+// other_set: the fast pipeline built with the other cubic sample set (the comparison must then see
+// differences: it can fail).
+template <class AGen, pipe_eval EVAL>
+void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_set = false) {
+    tb::report_log::get().expect(msg::input);  // the invalid jobs, reported by both
+    const plan p = random_plan(pc.seed, 400, 64, EVAL == pipe_eval::fd ? pc.fd_m : 0, 12);
+    const frame_constants k = random_constants(pc.seed);
+    scene::device_config dev;
+    dev.device = pc.device;
+    dev.mode = pc.seed % 2 ? overflow_mode::wrap : overflow_mode::saturate;
+    plan_config c;
+    c.eval = EVAL == pipe_eval::horner ? evaluator::horner : evaluator::fd;
+    c.length = pc.fd_m == 0 ? length_policy::adaptive : length_policy::fixed;
+    c.m = pc.fd_m == 0 ? 4 : pc.fd_m;
+    c.set = pc.seed % 3 ? interp::sample_set::case1 : interp::sample_set::case2;
+    c.div = pc.seed % 5 ? interp::div3_mode::shift_add : interp::div3_mode::exact;
+    const auto fast_set = !other_set ? c.set
+                          : c.set == interp::sample_set::case1 ? interp::sample_set::case2 : interp::sample_set::case1;
+    auto bench = std::make_unique<pair_bench<AGen, EVAL>>("tb", p, k, dev, c, gen, fast_set);
+    uint64_t clocks = 100;  // a watchdog far beyond the plan (pipeline_sim_run.h's, doubled)
+    for (const auto& j : p.jobs) clocks += 2 * (12 + 6ull * std::min(j.len, 64u));
+    sc_core::sc_start(pipeline_period() * static_cast<double>(clocks));
+    ASSERT_TRUE(bench->finished());
+    bench->chk_b.finish();
+    bench->chk_f.finish();
+    if (other_set) {
+        EXPECT_GT(bench->cmp.differences(), 10u);
+        EXPECT_EQ(bench->chk_b.mismatches(), 0u);
+        bench.release();
+        return;
+    }
+    EXPECT_EQ(bench->cmp.differences(), 0u);
+    EXPECT_GT(bench->cmp.valid_edges(), 500u);
+    EXPECT_EQ(bench->chk_b.mismatches(), 0u);
+    EXPECT_EQ(bench->chk_f.mismatches(), 0u);
+    EXPECT_EQ(bench->chk_f.order(), bench->chk_b.order());
+    EXPECT_EQ(bench->fst.dropped(), bench->chk_f.dropped());
+    EXPECT_GT(bench->fst.dropped(), 5u);
+    // Each invalid job is reported once by each pipeline.
+    EXPECT_EQ(tb::report_log::get().count(msg::input), 2 * bench->chk_f.dropped());
+    std::printf("%s: %zu pins compared over %zu edges, %zu pixels, %zu jobs dropped\n", pc.name,
+                bench->cmp.valid_edges(), bench->cmp.edges(), bench->chk_f.written(), bench->chk_f.dropped());
+    bench.release();  // elaborated for the process's life
+}
+
+class PipelineFastPins : public ::testing::TestWithParam<pair_case> {};
+
+TEST_P(PipelineFastPins, SameAsBlockLevelAtEveryEdge) {
+    const pair_case pc = GetParam();
+    const bool horner = pc.eval == pipe_eval::horner;
+    switch (pc.device) {
+        case scene::specular_device::patent:
+            if (horner) run_pair<a_gen_linear, pipe_eval::horner>(pc, ua60553::patent);
+            else run_pair<a_gen_linear, pipe_eval::fd>(pc, ua60553::patent);
+            break;
+        case scene::specular_device::minimax:
+            if (horner) run_pair<a_gen_tuned, pipe_eval::horner>(pc, ua60553::minimax);
+            else run_pair<a_gen_tuned, pipe_eval::fd>(pc, ua60553::minimax);
+            break;
+        case scene::specular_device::rom_matched:
+            if (horner) run_pair<a_gen_tuned, pipe_eval::horner>(pc, ua60553::rom_matched);
+            else run_pair<a_gen_tuned, pipe_eval::fd>(pc, ua60553::rom_matched);
+            break;
+        case scene::specular_device::ua22802:
+            if (horner) run_pair<a_gen_rom, pipe_eval::horner>(pc, a_gen_rom::default_config());
+            else run_pair<a_gen_rom, pipe_eval::fd>(pc, a_gen_rom::default_config());
+            break;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Random, PipelineFastPins,
+    ::testing::Values(pair_case{"horner_patent", scene::specular_device::patent, pipe_eval::horner, 0, 1},
+                      pair_case{"horner_ua22802", scene::specular_device::ua22802, pipe_eval::horner, 0, 2},
+                      pair_case{"horner_minimax", scene::specular_device::minimax, pipe_eval::horner, 0, 3},
+                      pair_case{"fd_any_m_rom_matched", scene::specular_device::rom_matched, pipe_eval::fd, 0, 4},
+                      pair_case{"fd_m4_patent", scene::specular_device::patent, pipe_eval::fd, 4, 5},
+                      pair_case{"fd_m2_minimax", scene::specular_device::minimax, pipe_eval::fd, 2, 6}),
+    [](const ::testing::TestParamInfo<pair_case>& i) { return std::string(i.param.name); });
+
+// The comparison can fail: the fast pipeline built with the other sample set differs at the pins.
+TEST(PipelineFastPinsVerdict, AnotherSampleSetIsSeen) {
+    tb::report_log::get().expect(msg::mismatch);  // the fast frame buffer's checker
+    run_pair<a_gen_linear, pipe_eval::horner>(
+        pair_case{"horner_other_set", scene::specular_device::patent, pipe_eval::horner, 0, 7}, ua60553::patent, true);
+}
+
+// ---- Alone: renders through simulate_frame ----
+
+struct render_case {
+    const char* scene;
+    unsigned size;
+    scene::specular_device device;
+    evaluator e;
+    bool adaptive;
+};
+void PrintTo(const render_case& c, std::ostream* os) {
+    *os << c.scene << c.size << " " << scene::device_name(c.device) << " " << evaluator_name(c.e);
+}
+class PipelineFastRender : public ::testing::TestWithParam<render_case> {};
+
+// The fast pipeline's frame equals golden_frame bit for bit, every planned pixel written once in the
+// plan's order, within the block level's clock bounds (test_pipeline_sim: the evaluator's clocks plus
+// at most 10 per job).
+TEST_P(PipelineFastRender, BitExactAgainstTheGoldenFrame) {
+    const auto rc = GetParam();
+    const scene::world w = scene::builtin_scene(rc.scene, SHADING_SOURCE_DIR, rc.size, rc.size);
+    const scene::rasterised r = scene::rasterise(w);
+    const frame_constants k = frame_constants_of(w);
+    scene::device_config dev;
+    dev.device = rc.device;
+    plan_config c;
+    c.eval = rc.e;
+    if (rc.adaptive) {
+        c.length = length_policy::adaptive;
+        c.degree = degree_policy::adaptive;
+    } else {
+        c.degree = degree_policy::zones;
+    }
+    const plan p = make_plan(r, k, dev, c);
+    ASSERT_GT(p.pixels, 100u);
+    sim_options o;
+    o.level = abstraction::fast;
+    const sim_result s = simulate_frame(p, k, dev, c, o);
+    EXPECT_EQ(s.mismatches, 0u);
+    std::vector<std::size_t> order;
+    for (const auto& j : p.jobs)
+        for (unsigned i = 0; i < j.len; ++i) order.push_back(std::size_t(j.y) * p.width + j.x0 + i);
+    EXPECT_EQ(s.write_order, order);
+    const frame g = golden_frame(p, k, dev, c);
+    EXPECT_EQ(s.f.px, g.px);
+    EXPECT_EQ(s.f.covered, g.covered);
+    const hardware_counts hw = hardware_ops(p, c);
+    EXPECT_GE(s.clocks, s.frame_load_clocks + hw.clocks);
+    EXPECT_LE(s.clocks, s.frame_load_clocks + 20 + hw.clocks + 10 * p.jobs.size());
+    std::printf("%s%u %s %s fast: %zu pixels, %.2f clocks/pixel, %.0f pixels per CPU second\n", rc.scene, rc.size,
+                scene::device_name(rc.device), evaluator_name(rc.e), p.pixels, double(s.clocks) / p.pixels,
+                s.cpu_seconds > 0 ? p.pixels / s.cpu_seconds : 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, PipelineFastRender,
+    ::testing::Values(render_case{"head", 64, scene::specular_device::patent, evaluator::horner, false},
+                      render_case{"head", 64, scene::specular_device::ua22802, evaluator::fd, true},
+                      render_case{"sphere", 48, scene::specular_device::minimax, evaluator::horner, true}),
+    [](const ::testing::TestParamInfo<render_case>& i) {
+        return std::string(i.param.scene) + std::to_string(i.param.size) + "_" + scene::device_name(i.param.device) +
+               "_" + evaluator_name(i.param.e);
+    });
+
+}  // namespace
