@@ -4,6 +4,10 @@
 #   <p>/lib/libshading_golden.a      the golden models (no SystemC)
 #   <p>/lib/cmake/shading/           find_package(shading CONFIG): shading::modules, ::golden, ...
 #   <p>/lib/pkgconfig/shading.pc     pkg-config: Requires: systemc
+#   <p>/lib/libshading_scene.a, libshading_pipeline.a, shading-scene.pc   when built (tinyobjloader,
+#                                    libpng): the scenes, rasteriser and seed 004's golden pipeline,
+#                                    shading::scene and shading::pipeline (export set shadingSceneTargets)
+#   <p>/share/shading/data/head/     the head scan with its attribution (CC BY 3.0), for the scenes
 # Every installed path is relative to <p>, so the tree can be moved. scripts/check_package.sh
 # (ctest package.install_and_consume) installs into a temporary prefix and builds a consumer.
 include(GNUInstallDirs)
@@ -11,6 +15,8 @@ include(CMakePackageConfigHelpers)
 
 set(SHADING_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/shading)
 set(SHADING_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/shading)
+# The data root scene::builtin_scene() takes (it reads <root>/data/head/...): share/shading.
+set(SHADING_INSTALL_DATAROOT ${CMAKE_INSTALL_DATADIR}/shading)
 
 # Exported names: shading::formats, shading::golden, shading::modules, shading::ua22802 (the same
 # as shading::modules now that the ROM header sits in the include root), shading::tlm. The same
@@ -27,7 +33,20 @@ if(TARGET shading_tlm)
   set_target_properties(shading_tlm PROPERTIES EXPORT_NAME tlm)
   list(APPEND SHADING_EXPORTED shading_tlm)
 endif()
-foreach(t IN LISTS SHADING_EXPORTED)
+# --- The scene library and seed 004's golden pipeline (src/scene, src/pipeline), when their Debian
+# packages were found: shading::scene, shading::pipeline, in their own export set so that a consumer
+# without tinyobjloader or libpng still gets the rest. Their public headers include GLM.
+set(SHADING_SCENE_EXPORTED)
+if(TARGET shading_scene)
+  set_target_properties(shading_scene PROPERTIES EXPORT_NAME scene)
+  target_link_libraries(shading_scene PUBLIC $<INSTALL_INTERFACE:glm::glm>)
+  list(APPEND SHADING_SCENE_EXPORTED shading_scene)
+  if(TARGET shading_pipeline)
+    set_target_properties(shading_pipeline PROPERTIES EXPORT_NAME pipeline)
+    list(APPEND SHADING_SCENE_EXPORTED shading_pipeline)
+  endif()
+endif()
+foreach(t IN LISTS SHADING_EXPORTED SHADING_SCENE_EXPORTED)
   get_target_property(name ${t} EXPORT_NAME)
   if(NOT TARGET shading::${name})
     add_library(shading::${name} ALIAS ${t})
@@ -56,9 +75,28 @@ install(FILES ${PROJECT_SOURCE_DIR}/src/scene/scene.h DESTINATION ${SHADING_INST
 install(FILES ${UA22802_ROM_HEADER} DESTINATION ${SHADING_INSTALL_INCLUDEDIR})
 
 install(EXPORT shadingTargets NAMESPACE shading:: DESTINATION ${SHADING_INSTALL_CMAKEDIR})
+
+if(SHADING_SCENE_EXPORTED)
+  install(TARGETS ${SHADING_SCENE_EXPORTED} EXPORT shadingSceneTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${SHADING_INSTALL_INCLUDEDIR})
+  install(EXPORT shadingSceneTargets NAMESPACE shading:: DESTINATION ${SHADING_INSTALL_CMAKEDIR})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/scene ${PROJECT_SOURCE_DIR}/src/pipeline
+          DESTINATION ${SHADING_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+  # The head scan goes with its attribution (data/head/README.md: "Infinite, 3D Head Scan" by Lee
+  # Perry-Smith, CC BY 3.0): the licence asks for it wherever the file is redistributed.
+  install(FILES ${PROJECT_SOURCE_DIR}/data/head/lee_perry_smith_head.obj ${PROJECT_SOURCE_DIR}/data/head/README.md
+          DESTINATION ${SHADING_INSTALL_DATAROOT}/data/head)
+  set(SHADING_PC_SCENE_LIBS "-lshading_scene")
+  if(TARGET shading_pipeline)
+    set(SHADING_PC_SCENE_LIBS "-lshading_pipeline -lshading_scene")
+  endif()
+endif()
+
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/shadingConfig.cmake.in
   ${PROJECT_BINARY_DIR}/package/shadingConfig.cmake
-  INSTALL_DESTINATION ${SHADING_INSTALL_CMAKEDIR})
+  INSTALL_DESTINATION ${SHADING_INSTALL_CMAKEDIR}
+  PATH_VARS SHADING_INSTALL_DATAROOT)
 # 0.x: SameMajorVersion, so a consumer asking for 0.9 accepts 0.9.y and 0.10 but not 1.0.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/package/shadingConfigVersion.cmake
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
@@ -74,12 +112,16 @@ file(RELATIVE_PATH SHADING_PC_UP "/p/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/p")
 string(REGEX REPLACE "/$" "" SHADING_PC_UP "${SHADING_PC_UP}")  # "../..", not "../../"
 configure_file(${PROJECT_SOURCE_DIR}/cmake/shading.pc.in ${PROJECT_BINARY_DIR}/package/shading.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/package/shading.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+if(SHADING_SCENE_EXPORTED)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/shading-scene.pc.in ${PROJECT_BINARY_DIR}/package/shading-scene.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/package/shading-scene.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endif()
 
 # The check CI runs: install this build into a temporary prefix, build and run the consumer project
 # (testbenches/example/installed) against it with find_package, and one file with pkg-config.
 if(SHADING_BUILD_TESTBENCHES)
   add_test(NAME package.install_and_consume
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/check_package.sh ${PROJECT_BINARY_DIR})
-  set_tests_properties(package.install_and_consume PROPERTIES TIMEOUT 300
+  set_tests_properties(package.install_and_consume PROPERTIES TIMEOUT 600
     ENVIRONMENT "CXX=${CMAKE_CXX_COMPILER};SHADING_CXX_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER};SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
 endif()

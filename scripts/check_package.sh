@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The installed package, as a user's platform sees it (ctest package.install_and_consume):
-#   1. cmake --install <build> into a temporary prefix; no absolute source or build path may appear in it;
-#   2. configure, build and run testbenches/example/installed against it with find_package(shading)
-#      (CMAKE_PREFIX_PATH=<prefix> only): the pin-level consumer and the TLM virtual platform;
-#   3. build and run one file with `pkg-config --cflags --libs shading` (PKG_CONFIG_PATH=<prefix>/...).
+#   1. cmake --install <build> into a temporary prefix; no absolute source or build path, nor the
+#      prefix itself, may appear in it; then the tree is moved elsewhere (it must be relocatable);
+#   2. configure, build and run testbenches/example/installed against the moved tree with
+#      find_package(shading) (CMAKE_PREFIX_PATH=<prefix> only): the pin-level consumer and the TLM
+#      virtual platform, which reads the installed head scan through SHADING_DATA_DIR;
+#   3. build and run one file with `pkg-config --cflags --libs shading` (PKG_CONFIG_PATH=<prefix>/...)
+#      and check shading-scene.pc's libraries and data directory.
 # Usage: scripts/check_package.sh [build-dir]   (default: build). Everything temporary is removed.
 # CXX and SHADING_CXX_LAUNCHER (e.g. ccache) are taken from the environment (ctest sets them).
 set -euo pipefail
@@ -11,24 +14,35 @@ src="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:-$src/build}" && pwd)"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/shading-package.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
-prefix="$tmp/prefix"
+stage="$tmp/stage"    # where cmake --install writes
+prefix="$tmp/prefix"  # where the tree is moved to and used from
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 
-echo "== install $build -> $prefix"
-cmake --install "$build" --prefix "$prefix" >"$tmp/install.log"
+echo "== install $build -> $stage"
+cmake --install "$build" --prefix "$stage" >"$tmp/install.log"
 for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVersion.cmake \
-         lib/cmake/shading/shadingTargets.cmake lib/pkgconfig/shading.pc lib/libshading_golden.a \
+         lib/cmake/shading/shadingTargets.cmake lib/cmake/shading/shadingSceneTargets.cmake \
+         lib/pkgconfig/shading.pc lib/pkgconfig/shading-scene.pc lib/libshading_golden.a \
+         lib/libshading_scene.a lib/libshading_pipeline.a \
          include/shading/ua60553/ua60553.h include/shading/golden/specular_golden.h \
-         include/shading/formats/fixed_point.h include/shading/ua22802_a_rom.h; do
-  [ -e "$prefix/$f" ] || { echo "check_package: $f not installed" >&2; exit 1; }
+         include/shading/formats/fixed_point.h include/shading/ua22802_a_rom.h \
+         include/shading/tlm/tlm_target_base.h include/shading/scene/world.h include/shading/pipeline/pipeline.h \
+         share/shading/data/head/lee_perry_smith_head.obj share/shading/data/head/README.md; do
+  [ -e "$stage/$f" ] || { echo "check_package: $f not installed" >&2; exit 1; }
 done
-# Relocatable: nothing installed may name the source tree, the build tree or the prefix itself.
-for p in "$src" "$build" "$prefix"; do
-  if grep -rIl --fixed-strings "$p" "$prefix"; then
+# The head scan's licence (CC BY 3.0) travels with it.
+grep -q "Lee Perry-Smith" "$stage/share/shading/data/head/README.md" \
+  || { echo "check_package: the head scan's attribution is missing" >&2; exit 1; }
+# Relocatable: nothing installed may name the source tree, the build tree or the prefix itself;
+# and the tree is used from elsewhere than where it was installed.
+for p in "$src" "$build" "$stage"; do
+  if grep -rIl --fixed-strings "$p" "$stage"; then
     echo "check_package: the files above contain the absolute path $p" >&2
     exit 1
   fi
 done
+mv "$stage" "$prefix"
+echo "== moved to $prefix"
 
 launcher=()
 [ -n "${SHADING_CXX_LAUNCHER:-}" ] && launcher=("$SHADING_CXX_LAUNCHER")
@@ -46,6 +60,13 @@ cmake --build "$tmp/consumer" -j2
 echo "== pkg-config --cflags --libs shading"
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
 [ "$(pkg-config --modversion shading)" = "$(sed -n 's/^Version: //p' "$prefix/lib/pkgconfig/shading.pc")" ]
+[ "$(pkg-config --modversion shading-scene)" = "$(pkg-config --modversion shading)" ]
+# shading-scene.pc: its libraries exist where it says, before shading's; its data directory holds the head.
+scene_libs="$(pkg-config --libs shading-scene)"
+case "$scene_libs" in *-lshading_pipeline*-lshading_scene*-lshading_golden*) ;;
+  *) echo "check_package: pkg-config --libs shading-scene: $scene_libs" >&2; exit 1 ;; esac
+[ -e "$(pkg-config --variable=datadir shading-scene)/data/head/lee_perry_smith_head.obj" ] \
+  || { echo "check_package: shading-scene.pc's datadir has no head scan" >&2; exit 1; }
 # shellcheck disable=SC2046  # pkg-config's output is meant to be split into words
 "${launcher[@]}" "$cxx" -std=c++17 -O1 "$src/testbenches/example/installed/pkgconfig_check.cpp" \
   $(pkg-config --cflags --libs shading) -o "$tmp/pkgconfig_check"

@@ -1,9 +1,15 @@
-// Issue 9's virtual platform, built against the installed package only (shading::tlm): a traffic
-// generator standing in for the CPU, a router, two UA 60553 TLM wrappers (loosely timed and
-// pin-accurate) and a frame-buffer memory. The generator shades one raster line of the sphere scene
-// (scene::sphere_line_cos, in libshading_golden) per wrapper with one COS_BLOCK burst write and one
-// RESULT_BLOCK burst read, copies the pixels into the frame buffer with one burst write, reads them
-// back and compares every word with golden_ua60553. Both wrappers must agree on data and on time.
+// Issue 9's virtual platform, built against the installed package only (shading::tlm,
+// shading::pipeline): a traffic generator standing in for the CPU and the geometry side, a router,
+// UA 60553 TLM wrappers and raster-line unit wrappers (each loosely timed and pin-accurate) and a
+// frame-buffer memory. The generator rasterises the head scan (installed with its attribution under
+// SHADING_DATA_DIR, "Infinite, 3D Head Scan" by Lee Perry-Smith, CC BY 3.0) and takes the raster
+// line of the face (the middle half of the frame) with the most highlight. Per UA 60553 wrapper: the line's N.H codes in one COS_BLOCK burst
+// write, the R, G, B out of one RESULT_BLOCK burst read, checked against golden_ua60553. Per
+// raster-line wrapper: seed 004's plan of the line (fixed m = 5, cubic, forward differences), each
+// channel's interval samples (the sample stage, golden_sample) in one INTERVAL_BLOCK burst, the
+// pixels out of one PIXEL_BLOCK read, clamped to the pixel format and checked against
+// pipeline::golden_interval. Every line goes into the frame buffer by one burst write and is read
+// back; both timing modes of each wrapper must agree on data and on time.
 // Exits 0 only if all of it held and SystemC reported no warning.
 #include <array>
 #include <cstdint>
@@ -17,8 +23,15 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "golden/specular_golden.h"  // shading::golden
-#include "scene/scene.h"              // shading::golden: the sphere line and the cos quantisation
+#include "pipeline/pipeline.h"        // shading::pipeline: frame constants, sample stage, plan, golden_interval
+#include "scene/raster.h"             // shading::scene: the rasteriser
+#include "scene/world.h"              // shading::scene: the head scene
+#include "tlm/line_tlm.h"             // shading::tlm
 #include "tlm/specular_tlm.h"         // shading::tlm
+
+#ifndef SHADING_DATA_DIR
+#error "SHADING_DATA_DIR: the package's data root (find_package(shading) sets it; CMakeLists.txt passes it)"
+#endif
 
 using sc_core::sc_time;
 using sc_core::SC_NS;
@@ -26,8 +39,11 @@ using sc_core::SC_ZERO_TIME;
 
 // Address map of the platform.
 constexpr uint64_t SHADE_LT = 0x40000000, SHADE_PA = 0x40010000, SHADE_SIZE = 0x10000;
+constexpr uint64_t LINE_LT = 0x41000000, LINE_PA = 0x41020000, LINE_SIZE = 0x20000;
 constexpr uint64_t FB = 0x80000000, FB_SIZE = 0x10000;
-constexpr unsigned PIXELS = 256;
+constexpr unsigned PIXELS = 256;  // the frame is PIXELS x PIXELS
+constexpr unsigned M = 5;         // the raster-line unit's intervals: 2^5 pixels
+using line_unit = shading::line_tlm<M, shading::interp::sample_set::case1, shading::interp::div3_mode::shift_add>;
 
 // A frame buffer: plain memory behind a target socket.
 struct frame_buffer : sc_core::sc_module {
@@ -53,10 +69,12 @@ struct frame_buffer : sc_core::sc_module {
 struct router : sc_core::sc_module {
     struct region { uint64_t base, size; };
     tlm_utils::simple_target_socket<router> socket{"socket"};
-    std::array<tlm_utils::simple_initiator_socket<router>, 3> out{
+    std::array<tlm_utils::simple_initiator_socket<router>, 5> out{
         tlm_utils::simple_initiator_socket<router>{"to_shade_lt"},
-        tlm_utils::simple_initiator_socket<router>{"to_shade_pa"}, tlm_utils::simple_initiator_socket<router>{"to_fb"}};
-    std::array<region, 3> map{{{SHADE_LT, SHADE_SIZE}, {SHADE_PA, SHADE_SIZE}, {FB, FB_SIZE}}};
+        tlm_utils::simple_initiator_socket<router>{"to_shade_pa"}, tlm_utils::simple_initiator_socket<router>{"to_line_lt"},
+        tlm_utils::simple_initiator_socket<router>{"to_line_pa"}, tlm_utils::simple_initiator_socket<router>{"to_fb"}};
+    std::array<region, 5> map{
+        {{SHADE_LT, SHADE_SIZE}, {SHADE_PA, SHADE_SIZE}, {LINE_LT, LINE_SIZE}, {LINE_PA, LINE_SIZE}, {FB, FB_SIZE}}};
     explicit router(const sc_core::sc_module_name& name) : sc_module(name) {
         socket.register_b_transport(this, &router::b_transport);
     }
@@ -118,42 +136,133 @@ struct traffic_generator : sc_core::sc_module {
         return sc_core::sc_time_stamp() - start;
     }
 
+    // Interpolates the line's intervals through the raster-line wrapper at `base`, one channel per
+    // burst, clamps the pixels to the pixel format (as the pipeline's output stage) and writes the
+    // R, G, B words of the line's covered pixels to frame-buffer line `fb_line`; returns the time.
+    sc_time interpolate_line(uint64_t base, unsigned fb_line, const std::vector<shading::pipeline::interval_job>& jobs,
+                             const std::vector<std::array<shading::pipeline::rgb_codes, 4>>& samples) {
+        namespace m = shading::line_tlm_map;
+        const sc_time start = sc_core::sc_time_stamp();
+        std::size_t pixels = 0;
+        for (const auto& j : jobs) pixels += j.len;
+        std::vector<uint32_t> rgb(3 * pixels);
+        for (unsigned c = 0; c < 3; ++c) {
+            std::vector<unsigned char> ivs(m::INTERVAL_STRIDE * jobs.size());
+            for (std::size_t j = 0; j < jobs.size(); ++j) {
+                unsigned char* at = ivs.data() + j * m::INTERVAL_STRIDE;
+                for (unsigned s = 0; s < 4; ++s) {
+                    const auto code = static_cast<uint16_t>(samples[j][s][c]);  // colour_fmt = the unit's Q8.8 sample
+                    std::memcpy(at + 2 * s, &code, 2);
+                }
+                const uint32_t len = jobs[j].len;
+                std::memcpy(at + m::IV_LEN, &len, 4);
+            }
+            access(tlm::TLM_WRITE_COMMAND, base + m::INTERVAL_BLOCK, ivs.data(), static_cast<unsigned>(ivs.size()));
+            std::vector<uint32_t> px(pixels);
+            access(tlm::TLM_READ_COMMAND, base + m::PIXEL_BLOCK, px.data(), static_cast<unsigned>(4 * pixels));
+            for (std::size_t p = 0; p < pixels; ++p)
+                rgb[3 * p + c] = static_cast<uint32_t>(shading::pipeline::golden_output_clamp(px[p]));
+        }
+        access(tlm::TLM_WRITE_COMMAND, FB + fb_line * 12 * PIXELS, rgb.data(), static_cast<unsigned>(12 * pixels));
+        return sc_core::sc_time_stamp() - start;
+    }
+
     void run() {
-        // The sphere seen head-on, lit from the upper left; the line at y = 0.3.
-        std::vector<uint16_t> cos;
-        for (double c : shading::scene::sphere_line_cos(0.3, PIXELS, -0.4, 0.5, 1.0))
-            cos.push_back(static_cast<uint16_t>(shading::scene::cos_code(c)));
-        const std::array<uint32_t, 4> surface{40, 255, 200, 90};
+        namespace sc = shading::scene;
+        namespace pl = shading::pipeline;
+        // The head scan from the installed data, its frame constants (n, k_s*I per channel).
+        const sc::world head = sc::builtin_scene("head", SHADING_DATA_DIR, PIXELS, PIXELS);
+        const sc::rasterised r = sc::rasterise(head);
+        const pl::frame_constants k = pl::frame_constants_of(head);
+        const sc::device_config dev{};  // UA 60553 as patented, saturating: the wrappers' device
+        const std::array<uint64_t, 3> ksi = k.ksi;
+        const std::array<uint32_t, 4> surface{k.n, static_cast<uint32_t>(ksi[0]), static_cast<uint32_t>(ksi[1]),
+                                              static_cast<uint32_t>(ksi[2])};
+
+        // Per line of the middle half (the face), every pixel's N.H code (0 where not covered); the
+        // line with the most highlight.
+        unsigned y = 0, best = 0;
+        std::vector<uint16_t> cos(PIXELS);
+        for (unsigned yy = PIXELS / 4; yy < 3 * PIXELS / 4; ++yy) {
+            std::vector<uint16_t> line(PIXELS, 0);
+            unsigned lit = 0;
+            for (unsigned x = 0; x < PIXELS; ++x) {
+                if (!r.covered(x, yy)) continue;
+                line[x] = static_cast<uint16_t>(pl::sample_of(sc::geometry_at(r, x, yy, nullptr)).cos_nh);
+                lit += shading::golden_ua60553(k.n, line[x], ksi, shading::overflow_mode::saturate).out[0] != 0;
+            }
+            if (lit > best) best = lit, y = yy, cos = line;
+        }
+
+        // The UA 60553 wrappers: the line's per-pixel specular colour.
         const sc_time t_lt = shade_line(SHADE_LT, 0, cos, surface);
         const sc_time t_pa = shade_line(SHADE_PA, 1, cos, surface);
 
-        // Read both lines back from the frame buffer and check them against the golden model.
-        std::vector<uint32_t> fb(2 * 3 * PIXELS);
-        access(tlm::TLM_READ_COMMAND, FB, fb.data(), 4 * fb.size());
+        // The raster-line wrappers: seed 004's plan of the frame, the line's intervals and samples.
+        pl::plan_config c;
+        c.length = pl::length_policy::fixed;
+        c.m = M;
+        c.degree = pl::degree_policy::cubic;
+        c.eval = pl::evaluator::fd;
+        c.set = shading::interp::sample_set::case1;
+        c.div = shading::interp::div3_mode::shift_add;
+        const pl::plan plan = pl::make_plan(r, k, dev, c);
+        std::vector<pl::interval_job> jobs;
+        std::vector<std::array<pl::rgb_codes, 4>> samples;
+        for (const auto& j : plan.jobs)
+            if (j.y == y) {
+                jobs.push_back(j);
+                samples.push_back({});
+                for (unsigned s = 0; s < 4; ++s) samples.back()[s] = pl::golden_sample(dev, k, j.s[s]);
+            }
+        const sc_time t_line_lt = interpolate_line(LINE_LT, 2, jobs, samples);
+        const sc_time t_line_pa = interpolate_line(LINE_PA, 3, jobs, samples);
+
+        // Read the four lines back from the frame buffer and check them against the golden models.
+        std::vector<uint32_t> fb(4 * 3 * PIXELS);
+        access(tlm::TLM_READ_COMMAND, FB, fb.data(), static_cast<unsigned>(4 * fb.size()));
         unsigned lit = 0;
         for (unsigned line = 0; line < 2; ++line)
             for (unsigned i = 0; i < PIXELS; ++i) {
-                const auto want = shading::golden_ua60553(surface[0], cos[i], {surface[1], surface[2], surface[3]},
-                                                          shading::overflow_mode::saturate);
-                for (unsigned c = 0; c < 3; ++c) {
-                    const uint32_t got = fb[(line * PIXELS + i) * 3 + c];
-                    errors += got != want.out[c];
+                const auto want = shading::golden_ua60553(k.n, cos[i], ksi, shading::overflow_mode::saturate);
+                for (unsigned ch = 0; ch < 3; ++ch) {
+                    const uint32_t got = fb[(line * PIXELS + i) * 3 + ch];
+                    errors += got != want.out[ch];
                     ++checked;
-                    lit += line == 0 && c == 0 && got != 0;
+                    lit += line == 0 && ch == 0 && got != 0;
                 }
             }
-        std::printf("line of %u pixels (%u lit): loosely timed %s, pin-accurate %s of simulated time\n", PIXELS, lit,
-                    t_lt.to_string().c_str(), t_pa.to_string().c_str());
-        if (t_lt != t_pa) {
+        std::size_t interpolated = 0;
+        for (unsigned line = 2; line < 4; ++line) {
+            std::size_t p = 0;
+            for (const auto& j : jobs) {
+                const auto want = pl::golden_interval(j, k, dev, c.eval, c.set, c.div);
+                for (const auto& px : want) {
+                    for (unsigned ch = 0; ch < 3; ++ch) {
+                        errors += fb[(line * PIXELS + p) * 3 + ch] != px[ch];
+                        ++checked;
+                    }
+                    ++p;
+                }
+            }
+            interpolated = p;
+        }
+        std::printf("head, %ux%u, line %u: %u pixels with highlight; UA 60553 loosely timed %s, pin-accurate %s\n",
+                    PIXELS, PIXELS, y, lit, t_lt.to_string().c_str(), t_pa.to_string().c_str());
+        std::printf("  raster-line unit: %zu intervals, %zu pixels x 3 channels; loosely timed %s, pin-accurate %s\n",
+                    jobs.size(), interpolated, t_line_lt.to_string().c_str(), t_line_pa.to_string().c_str());
+        expected = 2 * 3 * PIXELS + 2 * 3 * interpolated;
+        if (t_lt != t_pa || t_line_lt != t_line_pa) {
             std::printf("the two timing modes took different times\n");
             ++errors;
         }
-        if (lit == 0) {  // a line with no highlight would not test much
-            std::printf("no lit pixel on the line\n");
+        if (lit == 0 || jobs.empty() || interpolated == 0) {  // a line with no highlight would not test much
+            std::printf("no lit pixel or no interval on the line\n");
             ++errors;
         }
         sc_core::sc_stop();
     }
+    std::size_t expected = 1;  // words to check, known once the line is planned
 };
 
 int sc_main(int, char*[]) {
@@ -161,15 +270,19 @@ int sc_main(int, char*[]) {
     router bus("bus");
     shading::specular_tlm_ua60553 shade_lt("shade_lt", shading::tlm_timing::loosely_timed);
     shading::specular_tlm_ua60553 shade_pa("shade_pa", shading::tlm_timing::pin_accurate);
+    line_unit line_lt("line_lt", shading::tlm_timing::loosely_timed);
+    line_unit line_pa("line_pa", shading::tlm_timing::pin_accurate);
     frame_buffer fb("fb");
     cpu.socket.bind(bus.socket);
     bus.out[0].bind(shade_lt.socket);
     bus.out[1].bind(shade_pa.socket);
-    bus.out[2].bind(fb.socket);
+    bus.out[2].bind(line_lt.socket);
+    bus.out[3].bind(line_pa.socket);
+    bus.out[4].bind(fb.socket);
     sc_core::sc_start(1, sc_core::SC_MS);
     const bool stopped = sc_core::sc_get_status() == sc_core::SC_STOPPED;
     const auto warnings = sc_core::sc_report_handler::get_count(sc_core::SC_WARNING);
     std::printf("virtual platform: %u words checked, %u errors, %u warnings, %s\n", cpu.checked, cpu.errors,
                 unsigned(warnings), stopped ? "stopped" : "NOT STOPPED");
-    return (cpu.checked == 2 * 3 * PIXELS && cpu.errors == 0 && stopped && warnings == 0) ? 0 : 1;
+    return (cpu.checked == cpu.expected && cpu.errors == 0 && stopped && warnings == 0) ? 0 : 1;
 }
