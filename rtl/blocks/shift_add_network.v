@@ -6,7 +6,7 @@
 // level, as the SystemC block's reduce() does. Every adder wraps on W wires.
 // Term k is TERMS[16k +: 16]: [15:12] input index, [8] negative, [7:0] shift (two's complement);
 // TERMS holds SLOTS terms, of which the first NT are used (so tables of different lengths share
-// one width). The tables come from the generated header (interp_rtl.vh), never typed here.
+// one width). The tables come from the generated header interp_terms.vh, never typed here.
 module shift_add_network #(
     parameter WIN = 8,
     parameter W = 8,
