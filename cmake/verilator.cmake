@@ -6,6 +6,11 @@
 # generated Verilog in the build tree: shading_formats.vh, ua22802_a_rom.v, rom_sweep/) and
 # SHADING_RTL_INCLUDE_DIRS (every folder the specular devices' modules are found in), and defines
 # shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1>).
+# A project that pulls the model in with add_subdirectory() gets the SystemC modules alone.
+if(NOT SHADING_TOP_LEVEL)
+  set(SHADING_RTL OFF)
+  return()
+endif()
 find_package(verilator QUIET HINTS $ENV{VERILATOR_ROOT})
 if(NOT verilator_FOUND)
   message(STATUS "verilator not found: RTL co-simulation skipped")
