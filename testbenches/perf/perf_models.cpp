@@ -16,7 +16,8 @@
 // unexpected SystemC report or failed child.
 //
 // Adding a row: one add_sc(...) line in register_cases() with a function that builds its harness
-// (perf_harness.h), or add_golden(...) for a plain C++ model.
+// (perf_harness.h; the specular devices' rows are in perf_specular.cpp), or add_golden(...) for a
+// plain C++ model.
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -48,26 +49,31 @@
 #include "interp/interp_fd_bench.h"
 #include "interp/interp_horner_bench.h"
 #include "interp/interp_line_bench.h"
+#include "perf_cases.h"
 #include "perf_harness.h"
 #include "pipeline/pipeline.h"
 #include "pipeline_sim.h"
 #include "scene/world.h"
 #include "tlm/line_tlm.h"
-#include "tlm/specular_tlm.h"
 #include "tlm/tlm_initiator.h"
-#include "tuned/ua60553_tuned.h"
-#include "ua22802/ua22802.h"
-#include "ua60553/ua60553.h"
-#ifdef SHADING_PERF_VERILATOR
-#include "Vperf_ua60553.h"
-#endif
 
 extern char** environ;
+
+// The fast pin-level abstractions of seed 004's units and of the pipeline (modules/interp/*_fast.h,
+// modules/pipeline/shading_pipeline_fast.h), when the tree has them.
+#if __has_include("interp/horner_unit_fast.h") && __has_include("pipeline/shading_pipeline_fast.h")
+#define SHADING_PERF_INTERP_FAST 1
+#endif
 
 namespace {
 
 using namespace shading;
-using shading::perf::harness;
+using perf::add_sc;
+using perf::harness;
+using perf::module;
+using perf::sc_case;
+using perf::sc_cases;
+using perf::tlm_harness;
 
 bool g_quick = false;
 bool g_failed = false;
@@ -221,20 +227,6 @@ double golden_rate(const std::string& name) {
 
 // ---------------------------------------------------------------- SystemC cases
 
-struct sc_case {
-    std::string name, golden, unit;
-    std::function<std::unique_ptr<harness>()> make;  // a harness advanced in batches
-    bool traced = false;
-    // Or a run that cannot be cut into batches (the pipeline's frame): returns items, seconds, mismatches.
-    std::function<void(double& items, double& seconds, double& mismatches)> once;
-    // false: mismatches are reported (counter, table) but do not fail the run (the RTL twin, whose
-    // correctness is its own suite's business, testbenches/rtl).
-    bool strict = true;
-};
-std::vector<sc_case>& sc_cases() {
-    static std::vector<sc_case> c;
-    return c;
-}
 
 // Wraps one of the project's bench modules (stimulus, DUT, monitor, golden checker) as a harness.
 template <class Bench>
@@ -255,61 +247,7 @@ private:
     Bench b_;
 };
 
-// A TLM wrapper shading whole lines from an initiator thread that waits out each access's
-// annotated delay (so simulated time advances in both modes and sc_start(batch) returns).
-class tlm_harness : public sc_core::sc_module, public harness {
-public:
-    tb::tlm_initiator init;
-    explicit tlm_harness(const sc_core::sc_module_name& n, std::function<void(tlm_harness&)> script,
-                         sc_core::sc_time batch, sc_core::sc_time period)
-        : sc_module(n), init("init", [this, script](tb::tlm_initiator&) { script(*this); }), batch_(batch),
-          period_(period) {}
-    sc_core::sc_object& root() override { return *this; }
-    uint64_t items() const override { return items_; }
-    uint64_t mismatches() const override { return mismatches_; }
-    sc_core::sc_time batch() const override { return batch_; }
-    sc_core::sc_time period() const override { return period_; }
-    uint64_t items_ = 0, mismatches_ = 0;
 
-private:
-    sc_core::sc_time batch_, period_;
-};
-
-template <class Wrapper>
-struct specular_tlm_top : tlm_harness {
-    Wrapper w;
-    specular_tlm_top(const sc_core::sc_module_name& n, tlm_timing t)
-        : tlm_harness(n, &specular_tlm_top::script, sc_core::sc_time(4 * 20 * 1024, sc_core::SC_NS),
-                      sc_core::sc_time(20, sc_core::SC_NS)),
-          w("w", t) {
-        init.socket.bind(w.socket);
-    }
-    static void script(tlm_harness& self) {
-        namespace m = shading::tlm_map;
-        auto& i = self.init;
-        i.write32(m::N, 120);
-        for (unsigned c = 0; c < 3; ++c) i.write32(m::KSI_R + 4 * c, static_cast<uint32_t>(ksi[c]));
-        std::vector<uint16_t> codes(m::BLOCK_PIXELS);
-        std::vector<uint32_t> res(4 * m::BLOCK_PIXELS);
-        for (uint64_t l = 0;; ++l) {
-            for (std::size_t p = 0; p < m::BLOCK_PIXELS; ++p)
-                codes[p] = static_cast<uint16_t>((l * 7919 + p * 31) % (spec::cos_one + 1));
-            sc_core::sc_time d = sc_core::SC_ZERO_TIME;
-            i.access(tlm::TLM_WRITE_COMMAND, m::COS_BLOCK, reinterpret_cast<unsigned char*>(codes.data()),
-                     2 * m::BLOCK_PIXELS);
-            d += i.last_delay;
-            i.access(tlm::TLM_READ_COMMAND, m::RESULT_BLOCK, reinterpret_cast<unsigned char*>(res.data()),
-                     16 * m::BLOCK_PIXELS);
-            d += i.last_delay;
-            for (std::size_t p = 0; p < m::BLOCK_PIXELS; ++p) {
-                const auto g = golden_ua60553(120, codes[p], ksi, overflow_mode::saturate);
-                self.mismatches_ += res[4 * p] != g.out[0] || res[4 * p + 1] != g.out[1] || res[4 * p + 2] != g.out[2];
-            }
-            self.items_ += m::BLOCK_PIXELS;
-            sc_core::wait(d);  // the loosely-timed mode's annotated time; zero when pin-accurate
-        }
-    }
-};
 
 struct line_tlm_top : tlm_harness {
     using wrapper_t = line_tlm<5, interp::sample_set::case1, interp::div3_mode::shift_add>;
@@ -350,54 +288,22 @@ struct line_tlm_top : tlm_harness {
     }
 };
 
-// Wraps a module-type harness (sc_module + harness) built by `new`.
-template <class H, typename... Args>
-std::function<std::unique_ptr<harness>()> module(Args... args) {
-    return [=] { return std::unique_ptr<harness>(new H("top", args...)); };
-}
 
-void add_sc(const std::string& name, const std::string& golden, const std::string& unit,
-            std::function<std::unique_ptr<harness>()> make, bool traced = false) {
-    sc_cases().push_back({name, golden, unit, std::move(make), traced, nullptr});
-}
 
-// The specular devices: block delays on and off, tracing on and off.
-template <class Device>
-void add_specular(const std::string& name, const std::string& golden,
-                  typename perf::specular_harness<Device>::golden_fn g,
-                  const typename Device::generator::config& gen = Device::generator::default_config()) {
-    using H = perf::specular_harness<Device>;
-    for (bool delays : {true, false})
-        for (bool traced : {false, true}) {
-            const std::string n = name + (delays ? "/delays" : "/no_delays") + (traced ? "/traced" : "");
-            add_sc(n, golden, "evaluations",
-                   [=] {
-                       return std::unique_ptr<harness>(new H("top", g, overflow_mode::saturate, gen,
-                                                             delays ? block_delays{} : perf::zero_delays()));
-                   },
-                   traced);
-        }
-}
 
-#ifdef SHADING_PERF_VERILATOR
-// The RTL twin's UA 60553 datapath (rtl/specular/specular_device.v, AGEN 0, saturate) compiled by
-// `verilator --sc` (cmake/verilator.cmake), in the same harness: ctl17 from an sc_clock.
-void add_verilator() {
-    using H = perf::specular_harness<Vperf_ua60553, a_gen_linear>;
-    add_sc("verilator/ua60553", "golden/ua60553", "evaluations", [] {
-        return std::unique_ptr<harness>(new H("top", [](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
-            return golden_ua60553(n, c, k, overflow_mode::saturate);
-        }));
-    });
-    sc_cases().back().strict = false;
-}
-#endif
 
-void add_pipeline(const std::string& name, pipeline::evaluator e) {
+
+void add_pipeline(const std::string& name, pipeline::evaluator e, bool fast = false) {
     sc_case c{name, "golden/pipeline_head", "pixels", nullptr, false, nullptr};
-    c.once = [e](double& items, double& seconds, double& mismatches) {
+    c.once = [e, fast](double& items, double& seconds, double& mismatches) {
         const auto h = make_head(e);
-        const auto r = pipeline::simulate_frame(h->p, h->k, h->dev, h->c);
+        pipeline::sim_options o;
+#ifdef SHADING_PERF_INTERP_FAST
+        if (fast) o.level = abstraction::fast;
+#else
+        (void)fast;
+#endif
+        const auto r = pipeline::simulate_frame(h->p, h->k, h->dev, h->c, o);
         items = static_cast<double>(h->p.pixels);
         seconds = r.seconds;
         mismatches = static_cast<double>(r.mismatches);
@@ -406,31 +312,7 @@ void add_pipeline(const std::string& name, pipeline::evaluator e) {
 }
 
 void register_cases() {
-    const auto mode = overflow_mode::saturate;
-    add_specular<device_ua60553>("sc/ua60553", "golden/ua60553", [mode](uint64_t n, uint64_t c, const auto& k) {
-        return golden_ua60553(n, c, k, mode);
-    });
-    add_specular<device_ua22802>("sc/ua22802", "golden/ua22802", [mode](uint64_t n, uint64_t c, const auto& k) {
-        return golden_ua22802(n, c, k, mode);
-    });
-    add_specular<device_ua60553_tuned>("sc/ua60553_tuned", "golden/ua60553_tuned",
-                                       [mode](uint64_t n, uint64_t c, const auto& k) {
-                                           return golden_ua60553_tuned(n, c, k, mode);
-                                       });
-    // The fast pin-level abstraction (modules/specular/specular_fast.h): same pins, timing, constructor.
-    add_specular<device_ua60553_fast>("sc/ua60553_fast", "golden/ua60553", [mode](uint64_t n, uint64_t c, const auto& k) {
-        return golden_ua60553(n, c, k, mode);
-    });
-    add_specular<device_ua22802_fast>("sc/ua22802_fast", "golden/ua22802", [mode](uint64_t n, uint64_t c, const auto& k) {
-        return golden_ua22802(n, c, k, mode);
-    });
-    add_specular<device_ua60553_tuned_fast>("sc/ua60553_tuned_fast", "golden/ua60553_tuned",
-                                            [mode](uint64_t n, uint64_t c, const auto& k) {
-                                                return golden_ua60553_tuned(n, c, k, mode);
-                                            });
-#ifdef SHADING_PERF_VERILATOR
-    add_verilator();
-#endif
+    perf::register_specular_cases();
 
     // Seed 004's units in the project's own benches (stimulus, DUT, monitor, golden checker).
     const std::size_t big = 50'000'000;  // more than any run streams; generated on demand
@@ -447,6 +329,26 @@ void register_cases() {
     add_sc("sc/interp_fd", "golden/interp_fd", "pixels", [=] {
         return std::unique_ptr<harness>(new bench_harness<tb::fd_bench<5>>(tb::random_fd_intervals<5>(big, 1)));
     });
+#ifdef SHADING_PERF_INTERP_FAST
+    // The fast pin-level abstractions of the units (modules/interp/*_fast.h) in the same benches.
+    for (bool traced : {false, true})
+        add_sc(std::string("sc/interp_horner_fast") + (traced ? "/traced" : ""), "golden/interp_horner", "evaluations",
+               [=] {
+                   return std::unique_ptr<harness>(
+                       new bench_harness<tb::horner_bench_fast>(tb::random_horner_requests(big, 1)));
+               },
+               traced);
+    add_sc("sc/interp_fd_fast", "golden/interp_fd", "pixels", [=] {
+        return std::unique_ptr<harness>(
+            new bench_harness<tb::fd_bench<5, fd_eval_fast<5>>>(tb::random_fd_intervals<5>(big, 1)));
+    });
+    add_sc("sc/interp_line_fast", "golden/interp_line", "pixels", [=] {
+        constexpr auto set = interp::sample_set::case1;
+        constexpr auto div = interp::div3_mode::shift_add;
+        using B = tb::line_bench<5, set, div, interp_line_unit_fast<5, set, div>>;
+        return std::unique_ptr<harness>(new bench_harness<B>(tb::random_line_intervals<5>(big, 1)));
+    });
+#endif
     for (bool traced : {false, true})
         add_sc(std::string("sc/interp_line") + (traced ? "/traced" : ""), "golden/interp_line", "pixels",
                [=] {
@@ -457,11 +359,14 @@ void register_cases() {
 
     add_pipeline("sc/pipeline_head/fd", pipeline::evaluator::fd);
     add_pipeline("sc/pipeline_head/horner", pipeline::evaluator::horner);
+#ifdef SHADING_PERF_INTERP_FAST
+    add_pipeline("sc/pipeline_head/fd_fast", pipeline::evaluator::fd, true);
+    add_pipeline("sc/pipeline_head/horner_fast", pipeline::evaluator::horner, true);
+#endif
 
     for (auto t : {tlm_timing::loosely_timed, tlm_timing::pin_accurate}) {
         const std::string mode_name = t == tlm_timing::loosely_timed ? "lt" : "pin";
-        add_sc("tlm/specular_tlm/" + mode_name, "golden/ua60553", "evaluations",
-               module<specular_tlm_top<specular_tlm_ua60553>>(t));
+        perf::add_specular_tlm("tlm/specular_tlm/" + mode_name, t == tlm_timing::pin_accurate);
         add_sc("tlm/line_tlm/" + mode_name, "golden/interp_line", "pixels", module<line_tlm_top>(t));
     }
 }
@@ -610,6 +515,21 @@ void golden_bench(benchmark::State& st, const golden_case& g) {
 }
 
 }  // namespace
+
+namespace shading::perf {
+
+std::vector<sc_case>& sc_cases() {
+    static std::vector<sc_case> c;
+    return c;
+}
+
+sc_case& add_sc(const std::string& name, const std::string& golden, const std::string& unit,
+                std::function<std::unique_ptr<harness>()> make, bool traced) {
+    sc_cases().push_back({name, golden, unit, std::move(make), traced, nullptr});
+    return sc_cases().back();
+}
+
+}  // namespace shading::perf
 
 int sc_main(int argc, char* argv[]) {
     // Our own flags first (Google Benchmark rejects flags it does not know).

@@ -1,0 +1,64 @@
+// The rows perf_models registers (perf_models.cpp), shared with perf_specular.cpp, the specular
+// devices' rows. Two translation units: the specular fast model (specular/specular_fast.h) and seed
+// 004's (interp/abstraction.h) each declare shading::abstraction, so no file includes both.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <systemc>
+#include <vector>
+
+#include "perf_harness.h"
+#include "tlm/tlm_initiator.h"
+
+namespace shading::perf {
+
+struct sc_case {
+    std::string name, golden, unit;
+    std::function<std::unique_ptr<harness>()> make;  // a harness advanced in batches
+    bool traced = false;
+    // Or a run that cannot be cut into batches (the pipeline's frame): returns items, seconds, mismatches.
+    std::function<void(double& items, double& seconds, double& mismatches)> once;
+    // false: mismatches are reported (counter, table) but do not fail the run (the RTL twin, whose
+    // correctness is its own suite's business, testbenches/rtl).
+    bool strict = true;
+};
+std::vector<sc_case>& sc_cases();
+
+// Adds a SystemC row: `make` builds its harness in the child process.
+sc_case& add_sc(const std::string& name, const std::string& golden, const std::string& unit,
+                std::function<std::unique_ptr<harness>()> make, bool traced = false);
+
+// Wraps a module-type harness (sc_module + harness) built by `new`.
+template <class H, typename... Args>
+std::function<std::unique_ptr<harness>()> module(Args... args) {
+    return [=] { return std::unique_ptr<harness>(new H("top", args...)); };
+}
+
+// A TLM wrapper shading whole lines from an initiator thread that waits out each access's
+// annotated delay (so simulated time advances in both modes and sc_start(batch) returns).
+class tlm_harness : public sc_core::sc_module, public harness {
+public:
+    tb::tlm_initiator init;
+    explicit tlm_harness(const sc_core::sc_module_name& n, std::function<void(tlm_harness&)> script,
+                         sc_core::sc_time batch, sc_core::sc_time period)
+        : sc_module(n), init("init", [this, script](tb::tlm_initiator&) { script(*this); }), batch_(batch),
+          period_(period) {}
+    sc_core::sc_object& root() override { return *this; }
+    uint64_t items() const override { return items_; }
+    uint64_t mismatches() const override { return mismatches_; }
+    sc_core::sc_time batch() const override { return batch_; }
+    sc_core::sc_time period() const override { return period_; }
+    uint64_t items_ = 0, mismatches_ = 0;
+
+private:
+    sc_core::sc_time batch_, period_;
+};
+
+// perf_specular.cpp: the specular devices (block level, fast, the Verilator twin) and the UA 60553
+// TLM wrapper in one timing mode (loosely timed, or pin-accurate when `pin`).
+void register_specular_cases();
+void add_specular_tlm(const std::string& name, bool pin);
+
+}  // namespace shading::perf
