@@ -108,7 +108,7 @@ EOF
   variant coef_c2_shift_add coef_unit_cubic "" "-chparam SET 1 -chparam DIV 0"
   variant horner_unit horner_unit "" ""
   # The ROM alone at the fraction-bit sweep's sizes (F = 2..10; the device's is F = 6).
-  for rom in "$gen"/rom_sweep/ua22802_a_rom_f*.v; do
+  for rom in $(ls "$gen"/rom_sweep/ua22802_a_rom_f*.v | sort -V); do
     f=$(basename "$rom" .v | sed 's/.*_f//')
     variant "rom_f$f" "ua22802_a_rom_f$f" "" "" "$rom"
     rom_bits "rom_f${f}_bits" "$rom"
