@@ -25,6 +25,7 @@
 #include <systemc>
 #include <type_traits>
 
+#include "core/abstraction.h"
 #include "core/report_ids.h"
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
@@ -33,10 +34,6 @@
 #include "specular/specular_device.h"
 
 namespace shading {
-
-// Which model of a device a top builds: every block with its own process and delays (the
-// per-block waveform), or one process at the pins.
-enum class abstraction { block, fast };
 
 template <class AGen>
 class specular_fast : public sc_core::sc_module {

@@ -1,6 +1,5 @@
 // The rows perf_models registers (perf_models.cpp), shared with perf_specular.cpp, the specular
-// devices' rows. Two translation units: the specular fast model (specular/specular_fast.h) and seed
-// 004's (interp/abstraction.h) each declare shading::abstraction, so no file includes both.
+// devices' rows (kept in their own translation unit: each file compiles in parallel).
 #pragma once
 
 #include <functional>
