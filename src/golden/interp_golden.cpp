@@ -108,17 +108,24 @@ cubic_coefs golden_quad_coefs(const std::array<uint64_t, 3>& in) {
     return k;
 }
 
-std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code, bool degree2) {
+// The micro-steps written into rg[0..5]; returns how many (6 cubic, 4 quadratic). One sequence for
+// golden_horner_steps and golden_horner, which needs no allocation per pixel.
+std::size_t golden_horner_into(const cubic_coefs& k, uint64_t t_code, bool degree2, uint64_t* rg) {
     const uint64_t t = t_code & t_fmt.mask();
-    std::vector<uint64_t> rg;
-    rg.push_back(coef_bits(k.b));                                   // 1: RG <- B
-    rg.push_back(horner_add(horner_mul(coef_bits(k.a), t), rg.back()));  // 2: A t + B
-    rg.push_back(horner_mul(rg.back(), t));                         // 3: (A t + B) t
-    rg.push_back(horner_add(coef_bits(k.c), rg.back()));            // 4: + C
-    if (degree2) return rg;
-    rg.push_back(horner_mul(rg.back(), t));                         // 5: * t
-    rg.push_back(horner_add(coef_bits(k.d), rg.back()));            // 6: + D
-    return rg;
+    rg[0] = coef_bits(k.b);                                  // 1: RG <- B
+    rg[1] = horner_add(horner_mul(coef_bits(k.a), t), rg[0]);  // 2: A t + B
+    rg[2] = horner_mul(rg[1], t);                            // 3: (A t + B) t
+    rg[3] = horner_add(coef_bits(k.c), rg[2]);               // 4: + C
+    if (degree2) return 4;
+    rg[4] = horner_mul(rg[3], t);                            // 5: * t
+    rg[5] = horner_add(coef_bits(k.d), rg[4]);               // 6: + D
+    return 6;
+}
+
+std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code, bool degree2) {
+    uint64_t rg[6];
+    const std::size_t n = golden_horner_into(k, t_code, degree2, rg);
+    return std::vector<uint64_t>(rg, rg + n);
 }
 
 namespace {

@@ -31,8 +31,10 @@ cubic_coefs golden_quad_coefs(const std::array<uint64_t, 3>& i);
 // bits. Cubic: 6 steps (RG <- B; A t + B; * t; + C; * t; + D). Degree 2 (a, b, c in the a, b, c
 // fields): 4 steps (RG <- b; a t + b; * t; + c). The last entry is I(t).
 std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code, bool degree2);
+std::size_t golden_horner_into(const cubic_coefs& k, uint64_t t_code, bool degree2, uint64_t* rg6);
 inline uint64_t golden_horner(const cubic_coefs& k, uint64_t t_code, bool degree2) {
-    return golden_horner_steps(k, t_code, degree2).back();
+    uint64_t rg[6];
+    return rg[golden_horner_into(k, t_code, degree2, rg) - 1];
 }
 
 // Forward-difference evaluator for N = 2^m pixels, t = k/N: the set-up values on a bus with
