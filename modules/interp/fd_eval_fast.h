@@ -1,8 +1,8 @@
 // The fast pin-level abstraction of the forward-difference evaluator fd_eval<M> (interp/abstraction.h):
 // the same pins, handshake and one pixel per clock, one process, no internal blocks or delays.
-//   - Rising edges: fd_ctrl.h's controller as plain state (accept on start when idle or on the last
-//     pixel, LOAD, then STEP for len - 1 clocks, then HOLD; valid / last; a len of 0 or above 2^M
-//     reported as fd_ctrl does and evaluated as a full interval).
+//   - Rising edges: fd_ctrl.h's controller as plain state (fd_count.h: accept on start when idle or
+//     on the last pixel, LOAD, then STEP for len - 1 clocks, then HOLD; valid / last; a len of 0 or
+//     above 2^M reported as fd_ctrl does and evaluated as a full interval).
 //   - Falling edges: at LOAD the inputs A..D (stable from the accepting edge to this edge, the
 //     handshake's rule) give every pixel through golden_fd (src/golden/interp_golden.h: the Q22.34
 //     set-up and recurrence, the floor to Q16.16); each STEP puts the next one on i_px. HOLD keeps it.
@@ -10,13 +10,12 @@
 //     start rises.
 #pragma once
 
-#include <sstream>
 #include <systemc>
 #include <vector>
 
-#include "core/report_ids.h"
 #include "formats/interp_formats.h"
 #include "golden/interp_golden.h"
+#include "interp/fd_count.h"
 
 namespace shading {
 
@@ -44,7 +43,7 @@ public:
     }
 
 private:
-    enum select { hold, load, step };
+    using select = interp::fd_count::select;
 
     void on_edge() {
         if (woken_by_start_) {
@@ -61,27 +60,12 @@ private:
     }
 
     void rising() {
-        sel_ = hold;
-        if (start.read() && remaining_ <= 1) {
-            length_ = static_cast<unsigned>(len.read().to_uint());
-            if (length_ == 0 || length_ > n_pixels) {
-                std::ostringstream os;
-                os << name() << ": len = " << length_ << " at " << sc_core::sc_time_stamp() << " is outside 1.."
-                   << n_pixels << "; a full interval of " << n_pixels << " pixels is evaluated";
-                SC_REPORT_WARNING(msg::input, os.str().c_str());
-                length_ = n_pixels;
-            }
-            remaining_ = length_;
-            sel_ = load;
-        } else if (remaining_ > 1) {
-            --remaining_;
-            sel_ = step;
-        } else {
-            remaining_ = 0;
-        }
-        valid.write(remaining_ != 0);
-        last.write(remaining_ == 1);
-        if (sel_ == hold) {
+        sel_ = count_.rising(start.read(), [this] {
+            return interp::checked_len(name(), static_cast<unsigned>(len.read().to_uint()), n_pixels);
+        });
+        valid.write(count_.valid());
+        last.write(count_.last());
+        if (sel_ == select::hold) {
             if (start.read()) next_trigger(clk.posedge_event());  // nothing latches at the falling edge
             else {
                 woken_by_start_ = true;
@@ -91,11 +75,11 @@ private:
     }
 
     void falling() {
-        if (sel_ == load) {
+        if (sel_ == select::load) {
             const interp::cubic_coefs k{code(a), code(b), code(c), code(d)};
-            px_ = interp::golden_fd(k, M, length_);
+            px_ = interp::golden_fd(k, M, count_.length());
             k_ = 0;
-        } else if (sel_ == step) {
+        } else if (sel_ == select::step) {
             ++k_;
         } else {
             return;
@@ -107,8 +91,9 @@ private:
         return code_value(p.read().to_uint64(), interp::coef_fmt);
     }
 
-    select sel_ = hold;
-    unsigned remaining_ = 0, length_ = 0, k_ = 0;
+    interp::fd_count count_;
+    select sel_ = select::hold;
+    unsigned k_ = 0;
     bool woken_by_start_ = false;
     std::vector<uint64_t> px_;
 };

@@ -3,8 +3,8 @@
 // NOT valid OR last, accepted at a rising edge with start = 1 and ready = 1, pixel k on i_px k + 1
 // clocks after acceptance, one pixel per clock with no bubble), one process, no internal blocks or
 // delays:
-//   - rising edges: fd_ctrl.h's controller as plain state (LOAD / STEP / HOLD, valid, last, ready;
-//     a len of 0 or above 2^M reported as fd_ctrl does and evaluated as a full interval);
+//   - rising edges: fd_ctrl.h's controller as plain state (fd_count.h: LOAD / STEP / HOLD, valid,
+//     last, ready; a len of 0 or above 2^M reported as fd_ctrl does and evaluated as a full interval);
 //   - falling edges: first the evaluator's registers (LOAD: every pixel of the interval through
 //     golden_fd from the A..D the coefficient unit holds; STEP: the next pixel on i_px), then the
 //     coefficient unit's sample registers latch I1..I4 and A..D follow through golden_cubic_coefs
@@ -12,13 +12,12 @@
 #pragma once
 
 #include <array>
-#include <sstream>
 #include <systemc>
 #include <vector>
 
-#include "core/report_ids.h"
 #include "formats/interp_formats.h"
 #include "golden/interp_golden.h"
+#include "interp/fd_count.h"
 
 namespace shading {
 
@@ -51,7 +50,7 @@ public:
     }
 
 private:
-    enum select { hold, load, step };
+    using select = interp::fd_count::select;
 
     void on_edge() {
         if (clk.read()) rising();
@@ -59,36 +58,21 @@ private:
     }
 
     void rising() {
-        sel_ = hold;
-        if (start.read() && remaining_ <= 1) {
-            length_ = static_cast<unsigned>(len.read().to_uint());
-            if (length_ == 0 || length_ > n_pixels) {
-                std::ostringstream os;
-                os << name() << ": len = " << length_ << " at " << sc_core::sc_time_stamp() << " is outside 1.."
-                   << n_pixels << "; a full interval of " << n_pixels << " pixels is evaluated";
-                SC_REPORT_WARNING(msg::input, os.str().c_str());
-                length_ = n_pixels;
-            }
-            remaining_ = length_;
-            sel_ = load;
-        } else if (remaining_ > 1) {
-            --remaining_;
-            sel_ = step;
-        } else {
-            remaining_ = 0;
-        }
-        valid.write(remaining_ != 0);
-        last.write(remaining_ == 1);
-        ready.write(remaining_ <= 1);
+        sel_ = count_.rising(start.read(), [this] {
+            return interp::checked_len(name(), static_cast<unsigned>(len.read().to_uint()), n_pixels);
+        });
+        valid.write(count_.valid());
+        last.write(count_.last());
+        ready.write(count_.ready());
     }
 
     void falling() {
         // The evaluator's registers, from the coefficients of the samples latched a clock ago.
-        if (sel_ == load) {
-            px_ = interp::golden_fd(k_, M, length_);
+        if (sel_ == select::load) {
+            px_ = interp::golden_fd(k_, M, count_.length());
             at_ = 0;
             i_px.write(coef_t(px_[0]));
-        } else if (sel_ == step) {
+        } else if (sel_ == select::step) {
             i_px.write(coef_t(px_[++at_]));
         }
         // The coefficient unit's sample registers (every falling edge).
@@ -101,8 +85,9 @@ private:
         }
     }
 
-    select sel_ = hold;
-    unsigned remaining_ = 0, length_ = 0, at_ = 0;
+    interp::fd_count count_;
+    select sel_ = select::hold;
+    unsigned at_ = 0;
     std::array<uint64_t, 4> held_{};
     bool latched_ = false;
     interp::cubic_coefs k_{};
