@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <functional>
 #include <random>
 #include <vector>
 
@@ -44,35 +43,11 @@ struct cfg_m3 {
 template <class C>
 using wrapper = line_tlm<C::M, C::set, C::div>;
 
+// One initiator bound to one wrapper, or to a pair (LT and pin-accurate) through two sockets.
 template <class C>
-struct bench : sc_core::sc_module {
-    wrapper<C> dut;
-    tlm_initiator init;
-    bench(const sc_core::sc_module_name& name, tlm_timing t, tlm_initiator::script s)
-        : sc_module(name), dut("dut", t), init("init", std::move(s)) {
-        init.socket.bind(dut.socket);
-    }
-    bool finished() const { return init.finished(); }
-};
-
+using bench = tlm_bench<wrapper<C>>;
 template <class C>
-struct pair_bench : sc_core::sc_module {
-    wrapper<C> lt, pin;
-    tlm_initiator init_lt, init_pin;
-    std::function<void(tlm_initiator&, tlm_initiator&)> body;
-    bool done = false;
-    pair_bench(const sc_core::sc_module_name& name, std::function<void(tlm_initiator&, tlm_initiator&)> b)
-        : sc_module(name),
-          lt("lt", tlm_timing::loosely_timed),
-          pin("pin", tlm_timing::pin_accurate),
-          init_lt("init_lt", nullptr),
-          init_pin("init_pin", [this](tlm_initiator& p) { body(init_lt, p); done = true; }),
-          body(std::move(b)) {
-        init_lt.socket.bind(lt.socket);
-        init_pin.socket.bind(pin.socket);
-    }
-    bool finished() const { return done; }
-};
+using pair_bench = tlm_pair_bench<wrapper<C>>;
 
 const sc_time limit(1, sc_core::SC_SEC);
 

@@ -50,34 +50,9 @@ struct tuned_v {
 
 // One initiator bound to one wrapper, or to a pair (LT and pin-accurate) through two sockets.
 template <class AGen>
-struct bench : sc_core::sc_module {
-    specular_tlm<AGen> dut;
-    tlm_initiator init;
-    bench(const sc_core::sc_module_name& name, tlm_timing t, tlm_initiator::script s)
-        : sc_module(name), dut("dut", t), init("init", std::move(s)) {
-        init.socket.bind(dut.socket);
-    }
-    bool finished() const { return init.finished(); }
-};
-
+using bench = tlm_bench<specular_tlm<AGen>>;
 template <class AGen>
-struct pair_bench : sc_core::sc_module {
-    specular_tlm<AGen> lt, pin;
-    tlm_initiator init_lt, init_pin;
-    std::function<void(tlm_initiator&, tlm_initiator&)> body;
-    bool done = false;
-    pair_bench(const sc_core::sc_module_name& name, std::function<void(tlm_initiator&, tlm_initiator&)> b)
-        : sc_module(name),
-          lt("lt", tlm_timing::loosely_timed),
-          pin("pin", tlm_timing::pin_accurate),
-          init_lt("init_lt", nullptr),
-          init_pin("init_pin", [this](tlm_initiator& p) { body(init_lt, p); done = true; }),
-          body(std::move(b)) {
-        init_lt.socket.bind(lt.socket);
-        init_pin.socket.bind(pin.socket);
-    }
-    bool finished() const { return done; }
-};
+using pair_bench = tlm_pair_bench<specular_tlm<AGen>>;
 
 const sc_time limit(1, sc_core::SC_SEC);
 
