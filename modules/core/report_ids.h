@@ -8,4 +8,5 @@ inline constexpr const char* timing = "shading/timing";      // strobe phase sho
 inline constexpr const char* mismatch = "shading/mismatch";  // DUT differs from the golden model
 inline constexpr const char* config = "shading/config";      // bad elaboration-time parameter
 inline constexpr const char* tlm = "shading/tlm";            // bad TLM-2.0 access to a wrapper
+inline constexpr const char* trace = "shading/trace";        // VCD writer: unopenable file, untraceable type
 }  // namespace shading::msg
