@@ -204,6 +204,35 @@ private:
     uint64_t frame_edge_ = 0;
 };
 
+// A pipeline's input pins (D: shading_pipeline or shading_pipeline_fast) and the geometry source's
+// outputs bound to a bench's signals of the same names (pipeline_bench; test_pipeline_fast's pair).
+template <class D, class B>
+void bind_pipeline_inputs(D& d, B& b) {
+    d.clk(b.clk); d.start(b.start); d.load_frame(b.load_frame);
+    d.in_y(b.y); d.in_x0(b.x0); d.in_len(b.len); d.in_m(b.m); d.in_deg2(b.deg2);
+    d.in_nh1(b.nh[0]); d.in_nh2(b.nh[1]); d.in_nh3(b.nh[2]); d.in_nh4(b.nh[3]);
+    d.in_nl1(b.nl[0]); d.in_nl2(b.nl[1]); d.in_nl3(b.nl[2]); d.in_nl4(b.nl[3]);
+    d.in_n(b.n);
+    d.in_ksi_r(b.ksi[0]); d.in_ksi_g(b.ksi[1]); d.in_ksi_b(b.ksi[2]);
+    d.in_kdi_r(b.kdi[0]); d.in_kdi_g(b.kdi[1]); d.in_kdi_b(b.kdi[2]);
+    d.in_amb_r(b.amb[0]); d.in_amb_g(b.amb[1]); d.in_amb_b(b.amb[2]);
+}
+template <class B>
+void bind_geometry_source(geometry_source& src, B& b, sc_core::sc_signal<bool>& ready) {
+    src.clk(b.clk); src.ready(ready); src.start(b.start); src.load_frame(b.load_frame);
+    src.y(b.y); src.x0(b.x0); src.len(b.len); src.m(b.m); src.deg2(b.deg2);
+    for (int i = 0; i < 4; ++i) {
+        src.nh[i](b.nh[i]);
+        src.nl[i](b.nl[i]);
+    }
+    src.n(b.n);
+    for (int c = 0; c < 3; ++c) {
+        src.ksi[c](b.ksi[c]);
+        src.kdi[c](b.kdi[c]);
+        src.amb[c](b.amb[c]);
+    }
+}
+
 // The bench: clock, pins, the pipeline, the frame buffer, the geometry source and the checker. FAST:
 // the fast pin-level abstraction (shading_pipeline_fast.h, which names the device by `dev` and
 // ignores `gen`) instead of the block-level pipeline.
@@ -238,18 +267,8 @@ public:
         : sc_module(name), dut(make_dut("dut", dev, gen, c)), fb("fb", p.width, p.height),
           src("src", p, k, [this] { return dut.idle(); }),
           checker(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
-        dut.clk(clk); dut.start(start); dut.load_frame(load_frame); dut.ready(ready);
-        dut.in_y(y); dut.in_x0(x0); dut.in_len(len); dut.in_m(m); dut.in_deg2(deg2);
-        sc_core::sc_in<pipe::cos_t>* pnh[] = {&dut.in_nh1, &dut.in_nh2, &dut.in_nh3, &dut.in_nh4};
-        sc_core::sc_in<pipe::cos_t>* pnl[] = {&dut.in_nl1, &dut.in_nl2, &dut.in_nl3, &dut.in_nl4};
-        for (int i = 0; i < 4; ++i) {
-            (*pnh[i])(nh[i]);
-            (*pnl[i])(nl[i]);
-        }
-        dut.in_n(n);
-        dut.in_ksi_r(ksi[0]); dut.in_ksi_g(ksi[1]); dut.in_ksi_b(ksi[2]);
-        dut.in_kdi_r(kdi[0]); dut.in_kdi_g(kdi[1]); dut.in_kdi_b(kdi[2]);
-        dut.in_amb_r(amb[0]); dut.in_amb_g(amb[1]); dut.in_amb_b(amb[2]);
+        bind_pipeline_inputs(dut, *this);
+        dut.ready(ready);
         dut.px_valid(px_valid); dut.px_x(px_x); dut.px_y(px_y);
         dut.px_r(px_r); dut.px_g(px_g); dut.px_b(px_b);
 
@@ -261,18 +280,7 @@ public:
             if (progress_ && (done % 4096 == 0 || done == checker.pixels())) progress_(done, checker.pixels());
         });
 
-        src.clk(clk); src.ready(ready); src.start(start); src.load_frame(load_frame);
-        src.y(y); src.x0(x0); src.len(len); src.m(m); src.deg2(deg2);
-        for (int i = 0; i < 4; ++i) {
-            src.nh[i](nh[i]);
-            src.nl[i](nl[i]);
-        }
-        src.n(n);
-        for (int c = 0; c < 3; ++c) {
-            src.ksi[c](ksi[c]);
-            src.kdi[c](kdi[c]);
-            src.amb[c](amb[c]);
-        }
+        bind_geometry_source(src, *this, ready);
     }
 
     bool finished() const { return src.finished(); }

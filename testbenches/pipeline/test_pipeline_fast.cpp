@@ -22,6 +22,7 @@
 #include "pipeline/shading_pipeline_fast.h"
 #include "pipeline_bench.h"
 #include "pipeline_sim.h"
+#include "pipeline_test.h"
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"
@@ -181,18 +182,7 @@ public:
         fb_f.clk(clk); fb_f.valid(of.valid); fb_f.x(of.x); fb_f.y(of.y); fb_f.r(of.r); fb_f.g(of.g); fb_f.b(of.b);
         fb_b.on_write([this](unsigned px, unsigned py, const frame_buffer::rgb& v) { chk_b.check(px, py, v); });
         fb_f.on_write([this](unsigned px, unsigned py, const frame_buffer::rgb& v) { chk_f.check(px, py, v); });
-        src.clk(clk); src.ready(ob.ready); src.start(start); src.load_frame(load_frame);
-        src.y(y); src.x0(x0); src.len(len); src.m(m); src.deg2(deg2);
-        for (int i = 0; i < 4; ++i) {
-            src.nh[i](nh[i]);
-            src.nl[i](nl[i]);
-        }
-        src.n(n);
-        for (int ch = 0; ch < 3; ++ch) {
-            src.ksi[ch](ksi[ch]);
-            src.kdi[ch](kdi[ch]);
-            src.amb[ch](amb[ch]);
-        }
+        bind_geometry_source(src, *this, ob.ready);
         cmp.clk(clk);
         cmp.ready_b(ob.ready); cmp.ready_f(of.ready); cmp.valid_b(ob.valid); cmp.valid_f(of.valid);
         cmp.x_b(ob.x); cmp.x_f(of.x); cmp.y_b(ob.y); cmp.y_f(of.y);
@@ -204,14 +194,8 @@ public:
 private:
     template <class D>
     void bind(D& d, outs& o) {
-        d.clk(clk); d.start(start); d.load_frame(load_frame); d.ready(o.ready);
-        d.in_y(y); d.in_x0(x0); d.in_len(len); d.in_m(m); d.in_deg2(deg2);
-        d.in_nh1(nh[0]); d.in_nh2(nh[1]); d.in_nh3(nh[2]); d.in_nh4(nh[3]);
-        d.in_nl1(nl[0]); d.in_nl2(nl[1]); d.in_nl3(nl[2]); d.in_nl4(nl[3]);
-        d.in_n(n);
-        d.in_ksi_r(ksi[0]); d.in_ksi_g(ksi[1]); d.in_ksi_b(ksi[2]);
-        d.in_kdi_r(kdi[0]); d.in_kdi_g(kdi[1]); d.in_kdi_b(kdi[2]);
-        d.in_amb_r(amb[0]); d.in_amb_g(amb[1]); d.in_amb_b(amb[2]);
+        bind_pipeline_inputs(d, *this);
+        d.ready(o.ready);
         d.px_valid(o.valid); d.px_x(o.x); d.px_y(o.y); d.px_r(o.r); d.px_g(o.g); d.px_b(o.b);
     }
 };
@@ -314,16 +298,6 @@ TEST(PipelineFastPinsVerdict, AnotherSampleSetIsSeen) {
 
 // ---- Alone: renders through simulate_frame ----
 
-struct render_case {
-    const char* scene;
-    unsigned size;
-    scene::specular_device device;
-    evaluator e;
-    bool adaptive;
-};
-void PrintTo(const render_case& c, std::ostream* os) {
-    *os << c.scene << c.size << " " << scene::device_name(c.device) << " " << evaluator_name(c.e);
-}
 class PipelineFastRender : public ::testing::TestWithParam<render_case> {};
 
 // The fast pipeline's frame equals golden_frame bit for bit, every planned pixel written once in the
@@ -331,13 +305,8 @@ class PipelineFastRender : public ::testing::TestWithParam<render_case> {};
 // at most 10 per job).
 TEST_P(PipelineFastRender, BitExactAgainstTheGoldenFrame) {
     const auto rc = GetParam();
-    const scene::world w = scene::builtin_scene(rc.scene, SHADING_SOURCE_DIR, rc.size, rc.size);
-    const scene::rasterised r = scene::rasterise(w);
-    const frame_constants k = frame_constants_of(w);
-    scene::device_config dev;
-    dev.device = rc.device;
-    plan_config c;
-    c.eval = rc.e;
+    render_setup rs(rc);
+    auto& [w, r, k, dev, c] = rs;
     if (rc.adaptive) {
         c.length = length_policy::adaptive;
         c.degree = degree_policy::adaptive;
@@ -350,13 +319,8 @@ TEST_P(PipelineFastRender, BitExactAgainstTheGoldenFrame) {
     o.level = abstraction::fast;
     const sim_result s = simulate_frame(p, k, dev, c, o);
     EXPECT_EQ(s.mismatches, 0u);
-    std::vector<std::size_t> order;
-    for (const auto& j : p.jobs)
-        for (unsigned i = 0; i < j.len; ++i) order.push_back(std::size_t(j.y) * p.width + j.x0 + i);
-    EXPECT_EQ(s.write_order, order);
-    const frame g = golden_frame(p, k, dev, c);
-    EXPECT_EQ(s.f.px, g.px);
-    EXPECT_EQ(s.f.covered, g.covered);
+    EXPECT_EQ(s.write_order, job_order(p));
+    expect_golden_frame(s, p, k, dev, c);
     const hardware_counts hw = hardware_ops(p, c);
     EXPECT_GE(s.clocks, s.frame_load_clocks + hw.clocks);
     EXPECT_LE(s.clocks, s.frame_load_clocks + 20 + hw.clocks + 10 * p.jobs.size());
@@ -370,9 +334,6 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(render_case{"head", 64, scene::specular_device::patent, evaluator::horner, false},
                       render_case{"head", 64, scene::specular_device::ua22802, evaluator::fd, true},
                       render_case{"sphere", 48, scene::specular_device::minimax, evaluator::horner, true}),
-    [](const ::testing::TestParamInfo<render_case>& i) {
-        return std::string(i.param.scene) + std::to_string(i.param.size) + "_" + scene::device_name(i.param.device) +
-               "_" + evaluator_name(i.param.e);
-    });
+    render_case_name);
 
 }  // namespace

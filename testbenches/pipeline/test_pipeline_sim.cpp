@@ -17,6 +17,7 @@
 #include "common/vcd_names.h"
 #include "core/report_ids.h"
 #include "pipeline_sim.h"
+#include "pipeline_test.h"
 
 using namespace shading;
 using namespace shading::pipeline;
@@ -70,25 +71,6 @@ plan_config config(evaluator e, unsigned m = 4, interp::sample_set set = interp:
     c.m = m;
     c.set = set;
     return c;
-}
-
-// Every written pixel in the order the jobs list them.
-std::vector<std::size_t> job_order(const plan& p) {
-    std::vector<std::size_t> o;
-    for (const auto& j : p.jobs)
-        for (unsigned i = 0; i < j.len; ++i) o.push_back(std::size_t(j.y) * p.width + j.x0 + i);
-    return o;
-}
-
-// The frame's pixels against golden_frame, bit for bit (independent of the bench's own checker).
-void expect_golden_frame(const sim_result& r, const plan& p, const frame_constants& k, const scene::device_config& dev,
-                         const plan_config& c) {
-    const frame g = golden_frame(p, k, dev, c);
-    ASSERT_EQ(r.f.px.size(), g.px.size());
-    std::size_t diff = 0;
-    for (std::size_t i = 0; i < g.px.size(); ++i)
-        if (r.f.px[i] != g.px[i] || r.f.covered[i] != g.covered[i]) ++diff;
-    EXPECT_EQ(diff, 0u) << "pixels differing from golden_frame";
 }
 
 const scene::device_config patent{};
@@ -357,15 +339,6 @@ TEST(PipelineSimBad, FdBuiltForAnImpossibleM) {
 
 // ---- Small renders: make_plan on the built-in scenes, every device, both evaluators ----
 
-struct render_case {
-    const char* scene;
-    unsigned size;
-    scene::specular_device device;
-    evaluator e;
-};
-void PrintTo(const render_case& c, std::ostream* os) {
-    *os << c.scene << c.size << " " << scene::device_name(c.device) << " " << evaluator_name(c.e);
-}
 class PipelineSimRender : public ::testing::TestWithParam<render_case> {};
 
 // The SystemC frame equals golden_frame bit for bit (and the bench's own per-job check finds no
@@ -375,13 +348,8 @@ class PipelineSimRender : public ::testing::TestWithParam<render_case> {};
 // bounds.
 TEST_P(PipelineSimRender, BitExactAgainstTheGoldenFrame) {
     const auto rc = GetParam();
-    const scene::world w = scene::builtin_scene(rc.scene, SHADING_SOURCE_DIR, rc.size, rc.size);
-    const scene::rasterised r = scene::rasterise(w);
-    const frame_constants k = frame_constants_of(w);
-    scene::device_config dev;
-    dev.device = rc.device;
-    plan_config c;
-    c.eval = rc.e;
+    render_setup rs(rc);
+    auto& [w, r, k, dev, c] = rs;
     c.m = std::string(rc.scene) == "head" ? 4 : 3;
     c.degree = std::string(rc.scene) == "head" ? degree_policy::zones : degree_policy::adaptive;
     const plan p = make_plan(r, k, dev, c);
@@ -438,11 +406,7 @@ std::vector<render_case> render_cases() {
             for (auto e : {evaluator::horner, evaluator::fd}) v.push_back({sc.first, sc.second, d, e});
     return v;
 }
-INSTANTIATE_TEST_SUITE_P(Scenes, PipelineSimRender, ::testing::ValuesIn(render_cases()),
-                         [](const ::testing::TestParamInfo<render_case>& i) {
-                             return std::string(i.param.scene) + std::to_string(i.param.size) + "_" +
-                                    scene::device_name(i.param.device) + "_" + evaluator_name(i.param.e);
-                         });
+INSTANTIATE_TEST_SUITE_P(Scenes, PipelineSimRender, ::testing::ValuesIn(render_cases()), render_case_name);
 
 // ---- The waveform view ----
 
