@@ -5,15 +5,15 @@
 //     stepping; t > 1 reported as horner_ctrl does).
 //   - Falling edges: RG latches the step's value. At step 1 the request's inputs (stable at every
 //     falling edge from acceptance to done, the handshake's rule) give every step's RG at once
-//     through golden_horner_steps (src/golden/interp_golden.h, the shared Q16.16 / Q1.8 formats);
+//     through golden_horner_into (src/golden/interp_golden.h, the shared Q16.16 / Q1.8 formats);
 //     each falling edge then puts its step's RG on i_t and rg_value, with no clock-to-output delay.
-//   - Idle (no step running) with start low, the process sleeps until start rises.
+//   - Speed (issue 11): the process wakes only at edges that switch a pin or sample start; done and
+//     busy are written only when they change. Idle with start low, it sleeps until start rises.
 // rg_value is kept as a signal (the block model's RG net) so the same monitor checks every step.
 #pragma once
 
 #include <sstream>
 #include <systemc>
-#include <vector>
 
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
@@ -40,26 +40,38 @@ public:
 
     SC_HAS_PROCESS(horner_unit_fast);
     explicit horner_unit_fast(const sc_core::sc_module_name& name) : sc_module(name) {
+        // Statically on the falling edges (RG latches at each one while stepping, the usual case);
+        // rising edges and start are waited for dynamically, only when they matter.
         SC_METHOD(on_edge);
-        sensitive << clk;
-        dont_initialize();
+        sensitive << clk.neg();
     }
 
 private:
+    // Wakes only at the edges where something happens at the pins or must be sampled: the
+    // acceptance edge (start sampled; busy / done switch), every falling edge of a step (RG), the
+    // rising edge entering the last step (done rises) and, only when t > 1, the one entering step 2
+    // (the controller's report). The other rising edges of a step switch nothing: passing them
+    // costs no wakeup (the state advances at the falling edge before them).
     void on_edge() {
-        if (woken_by_start_) {
-            woken_by_start_ = false;
-            if (clk.posedge()) {  // start rose with the clock in the same delta: this edge samples it
-                rising();
+        switch (wake_) {
+            case wake::init:  // initialisation: the first rising edge samples start
+                wake_ = wake::rise;
+                next_trigger(clk.posedge_event());
                 return;
-            }
-            next_trigger(clk.posedge_event());  // start rose after a rising edge: the next one samples it
-            return;
+            case wake::start_rose:
+                if (clk.posedge()) {  // start rose with the clock in the same delta: this edge samples it
+                    rising();
+                    return;
+                }
+                wake_ = wake::rise;  // start rose after a rising edge: the next one samples it
+                next_trigger(clk.posedge_event());
+                return;
+            case wake::rise: rising(); return;
+            case wake::fall: falling(); return;
         }
-        if (clk.read()) rising();
-        else falling();
     }
 
+    // horner_ctrl's rising edge: state_ is the step that ends at this edge (0 idle).
     void rising() {
         const bool finishing = state_ != 0 && state_ == last_;
         unsigned next = 0;
@@ -69,23 +81,43 @@ private:
         if (next == 4 && deg2.read()) last_ = 4;
         if (next == 2) check_t();
         state_ = next;
-        done.write(state_ != 0 && state_ == last_);
-        busy.write(state_ != 0);
-        if (state_ == 0 && !start.read()) {  // idle: nothing happens until start rises
-            woken_by_start_ = true;
+        put(done, done_, state_ != 0 && state_ == last_);
+        put(busy, busy_, state_ != 0);
+        if (state_ != 0) {
+            wake_ = wake::fall;  // the static sensitivity: the next falling edge
+        } else {  // idle (start was low): nothing happens until start rises
+            wake_ = wake::start_rose;
             next_trigger(start.posedge_event());
         }
     }
 
+    // RG latches step state_'s value. At step 1 the request's inputs (stable at every falling edge
+    // from acceptance to done) give every step's RG and the step count (deg2 read here as at step 4:
+    // the handshake holds it).
     void falling() {
-        if (state_ == 0) return;  // RG recirculates
         if (state_ == 1) {
             const interp::cubic_coefs k{code(a), code(b), code(c), code(d)};
-            steps_ = interp::golden_horner_steps(k, t.read().to_uint64(), deg2.read());
+            t_code_ = t.read().to_uint64();
+            last_ = static_cast<unsigned>(interp::golden_horner_into(k, t_code_, deg2.read(), steps_));
         }
         const coef_t rg(steps_[state_ - 1]);
         rg_value.write(rg);
         i_t.write(rg);
+        // The next rising edge matters when it ends the request (acceptance), enters the last step
+        // (done rises) or enters step 2 with t > 1 (report); otherwise pass it and latch again.
+        const unsigned next = state_ + 1;
+        if (state_ == last_ || next == last_ || (next == 2 && t_code_ > interp::t_one)) {
+            wake_ = wake::rise;
+            next_trigger(clk.posedge_event());
+        } else {
+            state_ = next;  // the static sensitivity: the next falling edge
+        }
+    }
+
+    static void put(sc_core::sc_out<bool>& port, bool& now, bool v) {
+        if (v == now) return;
+        now = v;
+        port.write(v);
     }
 
     static int64_t code(const sc_core::sc_in<coef_t>& p) {
@@ -102,9 +134,12 @@ private:
         SC_REPORT_WARNING(msg::input, os.str().c_str());
     }
 
+    enum class wake { init, rise, fall, start_rose };
+    wake wake_ = wake::init;  // what the edge that wakes the process next is
     unsigned state_ = 0, last_ = 6;
-    bool woken_by_start_ = false;
-    std::vector<uint64_t> steps_;
+    bool done_ = false, busy_ = false;  // what done and busy were last written
+    uint64_t t_code_ = 0;
+    uint64_t steps_[6] = {};
 };
 
 }  // namespace shading
