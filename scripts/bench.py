@@ -6,6 +6,10 @@ issue's target where it has one, and whether it is met. Markdown with --markdown
 
   scripts/bench.py [--build DIR] [--quick] [--filter REGEX] [--min-time S] [--json FILE] [--markdown]
 
+Floor rows (floor/*: the harnesses with nothing inside, testbenches/perf/perf_floor.cpp) bound
+what any model in that harness can reach; an unmet target whose harness has a floor gets a
+footnote with it.
+
 Exit status: 0 when the program ran clean (no mismatch, no failed case), whatever the targets say;
 1 otherwise. Targets are reported, not enforced: speed depends on the machine.
 """
@@ -102,8 +106,28 @@ def main():
                 slow = rate(base) / rate(name)
                 target(name, rate(name), f"≤ 5× untraced ({slow:.2f}×)", slow <= 5)
 
+    # The floor under each target's harness (perf_floor.cpp): the rate of the harness alone, in the
+    # target's own measure (clocks per second for the Horner unit).
+    def floor_text(name):
+        if name.startswith("sc/ua60553"):
+            f, c = rate("floor/specular_harness"), rate("floor/sc_clock")
+            if not f:
+                return None
+            t = f"floor {fmt_rate(f)} ev/s: the specular harness around a null device (`floor/specular_harness`)"
+            if c:
+                t += f"; its sc_clock alone {fmt_rate(c)} cycles/s (`floor/sc_clock`)"
+            return t
+        if name.startswith("sc/interp_horner") and not name.endswith("/traced"):
+            f = rate("floor/horner_bench")
+            if f:
+                return (f"floor {fmt_rate(f)} clocks/s: the Horner bench's clock and processes with no work "
+                        "(`floor/horner_bench`)")
+        return None
+
     head = ["model", "rate /s", "unit", "ratio to golden", "target", "met?"]
     table = []
+    notes = []  # footnotes: the floors under unmet targets
+    marks = "¹²³⁴⁵⁶⁷⁸⁹"
     for b in data["benchmarks"]:
         name = b["name"]
         label = b.get("label", "")
@@ -116,8 +140,15 @@ def main():
         ratio_s = f"1/{1 / ratio:.0f}" if ratio and ratio < 0.2 else (f"{ratio:.2f}" if ratio else "—")
         goal, ok, _ = targets.get(name, ("", None, None))
         met = "" if ok is None else ("yes" if ok else "no")
+        if ok is False and floor_text(name):
+            note = floor_text(name)
+            if note not in notes:
+                notes.append(note)
+            met += marks[notes.index(note) % len(marks)]
         mism = b.get("mismatches", 0)
-        if mism:
+        if name.startswith("floor/"):
+            ratio_s = "—"  # a harness with a null device: its outputs are not results
+        elif mism:
             met = f"{int(mism)} MISMATCHES"
         table.append([name, fmt_rate(r), unit, ratio_s, goal, met])
 
@@ -131,6 +162,10 @@ def main():
         print("  ".join(h.ljust(w[i]) for i, h in enumerate(head)))
         for row in table:
             print("  ".join(str(c).ljust(w[i]) for i, c in enumerate(row)))
+    if notes:
+        print()
+        for i, n in enumerate(notes):
+            print(f"{marks[i % len(marks)]} {n}" + ("  " if a.markdown and i + 1 < len(notes) else ""))
     ctx = data.get("context", {})
     print(f"\n{ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, "
           f"{ctx.get('library_build_type', '')} Google Benchmark, {ctx.get('date', '')}")

@@ -10,6 +10,7 @@
 
 #include "perf_harness.h"
 #include "tlm/tlm_initiator.h"
+#include "tlm_utils/tlm_quantumkeeper.h"
 
 namespace shading::perf {
 
@@ -35,8 +36,24 @@ std::function<std::unique_ptr<harness>()> module(Args... args) {
     return [=] { return std::unique_ptr<harness>(new H("top", args...)); };
 }
 
-// A TLM wrapper shading whole lines from an initiator thread that waits out each access's
-// annotated delay (so simulated time advances in both modes and sc_start(batch) returns).
+// Loosely-timed practice (TLM-2.0 temporal decoupling): the initiator passes its local time into
+// each access, keeps the annotated delay it gets back (tlm_utils::tlm_quantumkeeper) and waits only
+// when the local time reaches the global quantum, 1 ms (about 49 lines of 1024 pixels
+// at 20 ns a pixel, 6 bursts of the line wrapper); a batch
+// is one quantum. Pin-accurate accesses wait inside b_transport and annotate nothing.
+inline sc_core::sc_time lt_quantum() { return sc_core::sc_time(1, sc_core::SC_MS); }
+
+// One access with the quantum keeper's local time as its incoming delay; keeps the annotated delay.
+inline void lt_access(tb::tlm_initiator& i, tlm_utils::tlm_quantumkeeper& qk, tlm::tlm_command cmd, uint64_t addr,
+                      unsigned char* data, unsigned len) {
+    i.delay_in = qk.get_local_time();
+    i.access(cmd, addr, data, len);
+    qk.set(i.last_delay);
+    if (qk.need_sync()) qk.sync();
+}
+
+// A TLM wrapper shading whole lines from an initiator thread (lt_access: simulated time advances in
+// both modes, so sc_start(batch) returns).
 class tlm_harness : public sc_core::sc_module, public harness {
 public:
     tb::tlm_initiator init;
@@ -58,6 +75,8 @@ private:
 // perf_specular.cpp: the specular devices (block level, fast, the Verilator twin) and the UA 60553
 // TLM wrapper in one timing mode (loosely timed, or pin-accurate when `pin`).
 void register_specular_cases();
+// perf_floor.cpp: the harnesses with nothing inside (the floors under the targets).
+void register_floor_cases();
 void add_specular_tlm(const std::string& name, bool pin);
 
 }  // namespace shading::perf

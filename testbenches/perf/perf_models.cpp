@@ -253,7 +253,8 @@ struct line_tlm_top : tlm_harness {
     using wrapper_t = line_tlm<5, interp::sample_set::case1, interp::div3_mode::shift_add>;
     wrapper_t w;
     line_tlm_top(const sc_core::sc_module_name& n, tlm_timing t)
-        : tlm_harness(n, &line_tlm_top::script, sc_core::sc_time(20 * 8400, sc_core::SC_NS),
+        : tlm_harness(n, &line_tlm_top::script,
+                      t == tlm_timing::loosely_timed ? perf::lt_quantum() : sc_core::sc_time(20 * 8400, sc_core::SC_NS),
                       sc_core::sc_time(20, sc_core::SC_NS)),
           w("w", t) {
         init.socket.bind(w.socket);
@@ -274,16 +275,16 @@ struct line_tlm_top : tlm_harness {
         }
         const auto golden = interp::golden_interp_line(ivs, 5, interp::sample_set::case1, interp::div3_mode::shift_add);
         std::vector<uint32_t> px(golden.size());
+        tlm_utils::tlm_quantumkeeper::set_global_quantum(perf::lt_quantum());
+        tlm_utils::tlm_quantumkeeper qk;
+        qk.reset();
         for (;;) {
-            sc_core::sc_time d = sc_core::SC_ZERO_TIME;
-            i.access(tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, bytes.data(), static_cast<unsigned>(bytes.size()));
-            d += i.last_delay;
-            i.access(tlm::TLM_READ_COMMAND, m::PIXEL_BLOCK, reinterpret_cast<unsigned char*>(px.data()),
-                     static_cast<unsigned>(4 * px.size()));
-            d += i.last_delay;
+            perf::lt_access(i, qk, tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, bytes.data(),
+                            static_cast<unsigned>(bytes.size()));
+            perf::lt_access(i, qk, tlm::TLM_READ_COMMAND, m::PIXEL_BLOCK, reinterpret_cast<unsigned char*>(px.data()),
+                            static_cast<unsigned>(4 * px.size()));
             for (std::size_t p = 0; p < px.size(); ++p) self.mismatches_ += px[p] != golden[p];
             self.items_ += px.size();
-            sc_core::wait(d);
         }
     }
 };
@@ -312,6 +313,7 @@ void add_pipeline(const std::string& name, pipeline::evaluator e, bool fast = fa
 }
 
 void register_cases() {
+    perf::register_floor_cases();
     perf::register_specular_cases();
 
     // Seed 004's units in the project's own benches (stimulus, DUT, monitor, golden checker).
