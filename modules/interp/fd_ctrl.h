@@ -8,12 +8,11 @@
 // the pixel is on the output at the rising edge that ends it: pixel k at acceptance + (k+1) clocks.
 #pragma once
 
-#include <sstream>
 #include <systemc>
 
-#include "core/report_ids.h"
 #include "core/timed_block.h"
 #include "formats/interp_formats.h"
+#include "interp/fd_count.h"
 
 namespace shading {
 
@@ -23,7 +22,8 @@ template <unsigned M>
 class fd_ctrl : public sc_core::sc_module, public timed_block {
 public:
     static constexpr unsigned n_pixels = 1u << M;
-    static constexpr unsigned sel_hold = 0, sel_load = 1, sel_step = 2;
+    static constexpr unsigned sel_hold = interp::fd_count::hold, sel_load = interp::fd_count::load,
+                              sel_step = interp::fd_count::step;
     static_assert(sel_step < interp::fd_mx_inputs, "select codes");
     using len_t = sc_dt::sc_uint<interp::len_width(M)>;
     using select = sc_dt::sc_uint<interp::code_width(interp::fd_mx_inputs)>;
@@ -46,33 +46,18 @@ public:
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
 
 private:
+    // The FSM is fd_count.h's (the fast units step the same one); len read at acceptance only.
     void on_clock() {
-        unsigned sel = sel_hold;
-        if (start.read() && remaining_ <= 1) {
-            length_ = len.read().to_uint();
-            if (length_ == 0 || length_ > n_pixels) {
-                std::ostringstream os;
-                os << name() << ": len = " << length_ << " at " << sc_core::sc_time_stamp()
-                   << " is outside 1.." << n_pixels << "; a full interval of " << n_pixels
-                   << " pixels is evaluated";
-                SC_REPORT_WARNING(msg::input, os.str().c_str());
-                length_ = n_pixels;
-            }
-            remaining_ = length_;
-            sel = sel_load;
-        } else if (remaining_ > 1) {
-            --remaining_;
-            sel = sel_step;
-        } else {
-            remaining_ = 0;
-        }
+        const unsigned sel = count_.rising(start.read(), [this] {
+            return interp::checked_len(name(), static_cast<unsigned>(len.read().to_uint()), n_pixels);
+        });
         fd_sel.write(sel);
-        pixel.write(remaining_ ? length_ - remaining_ : 0);
-        valid.write(remaining_ != 0);
-        last.write(remaining_ == 1);
+        pixel.write(count_.pixel());
+        valid.write(count_.valid());
+        last.write(count_.last());
     }
 
-    unsigned remaining_ = 0, length_ = 0;
+    interp::fd_count count_;
 };
 
 }  // namespace shading

@@ -11,11 +11,13 @@
 #pragma once
 
 #include <sstream>
+#include <string>
 #include <systemc>
 
 #include "core/report_ids.h"
 #include "core/timed_block.h"
 #include "formats/interp_formats.h"
+#include "interp/fd_count.h"
 #include "interp/fd_ctrl.h"
 
 namespace shading {
@@ -55,25 +57,18 @@ public:
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
 
 private:
+    // fd_ctrl's FSM (fd_count.h); at acceptance m and len are read and checked.
     void on_clock() {
-        unsigned sel = sel_hold;
-        if (start.read() && remaining_ <= 1) {
-            accept();
-            sel = sel_load;
-        } else if (remaining_ > 1) {
-            --remaining_;
-            sel = sel_step;
-        } else {
-            remaining_ = 0;
-        }
+        const unsigned sel = count_.rising(start.read(), [this] { return accept(); });
         fd_sel.write(sel);
         setup_sel.write(setup_);
-        pixel.write(remaining_ ? length_ - remaining_ : 0);
-        valid.write(remaining_ != 0);
-        last.write(remaining_ == 1);
+        pixel.write(count_.pixel());
+        valid.write(count_.valid());
+        last.write(count_.last());
     }
 
-    void accept() {
+    // The interval's m (setup_) and the length to evaluate.
+    unsigned accept() {
         unsigned mm = m.read().to_uint();
         if (mm != 0 && (mm < MMIN || mm > MMAX)) {
             std::ostringstream os;
@@ -82,20 +77,14 @@ private:
             SC_REPORT_WARNING(msg::input, os.str().c_str());
             mm = MMAX;
         }
-        const unsigned n_pixels = 1u << mm;
-        length_ = len.read().to_uint();
-        if (length_ == 0 || length_ > n_pixels) {
-            std::ostringstream os;
-            os << name() << ": len = " << length_ << " at " << sc_core::sc_time_stamp() << " is outside 1.." << n_pixels
-               << " for m = " << mm << "; a full interval of " << n_pixels << " pixels is evaluated";
-            SC_REPORT_WARNING(msg::input, os.str().c_str());
-            length_ = n_pixels;
-        }
+        const unsigned length = interp::checked_len(name(), static_cast<unsigned>(len.read().to_uint()), 1u << mm,
+                                                    " for m = " + std::to_string(mm));
         setup_ = mm == 0 ? 0 : mm - MMIN;
-        remaining_ = length_;
+        return length;
     }
 
-    unsigned remaining_ = 0, length_ = 0, setup_ = 0;
+    interp::fd_count count_;
+    unsigned setup_ = 0;
 };
 
 }  // namespace shading

@@ -29,6 +29,37 @@
 
 namespace shading {
 
+// The recurrence's wiring, the same in fd_eval and fd_eval_var (E: either; the same block and net
+// names): the adders P + D1, D1 + D2, D2 + D3 (carry-in 0), each register's hold / load / step
+// multiplexer (load: init_*, the set-up) on fd_sel, the registers on clk, RG_P onto i_px.
+template <class E>
+void wire_fd_recurrence(E& e) {
+    using ctrl_t = decltype(e.ctrl);
+    e.k_carry0.y(e.carry0);
+    e.add_p.a(e.p_value); e.add_p.b(e.d1_value); e.add_p.cin(e.carry0); e.add_p.s(e.p_sum);
+    e.add_d1.a(e.d1_value); e.add_d1.b(e.d2_value); e.add_d1.cin(e.carry0); e.add_d1.s(e.d1_sum);
+    e.add_d2.a(e.d2_value); e.add_d2.b(e.d3_value); e.add_d2.cin(e.carry0); e.add_d2.s(e.d2_sum);
+
+    const auto wire_mux = [&e](auto& mx, auto& hold, auto& load, auto& step, auto& out) {
+        mx.in[ctrl_t::sel_hold](hold);
+        mx.in[ctrl_t::sel_load](load);
+        mx.in[ctrl_t::sel_step](step);
+        mx.sel(e.fd_sel);
+        mx.y(out);
+    };
+    wire_mux(e.mx_p, e.p_value, e.init_p, e.p_sum, e.p_next);
+    wire_mux(e.mx_d1, e.d1_value, e.init_d1, e.d1_sum, e.d1_next);
+    wire_mux(e.mx_d2, e.d2_value, e.init_d2, e.d2_sum, e.d2_next);
+    wire_mux(e.mx_d3, e.d3_value, e.init_d3, e.d3_value, e.d3_keep);  // D3 is constant while stepping
+
+    e.rg_p.ctl(e.clk); e.rg_p.d(e.p_next); e.rg_p.q(e.p_value);
+    e.rg_d1.ctl(e.clk); e.rg_d1.d(e.d1_next); e.rg_d1.q(e.d1_value);
+    e.rg_d2.ctl(e.clk); e.rg_d2.d(e.d2_next); e.rg_d2.q(e.d2_value);
+    e.rg_d3.ctl(e.clk); e.rg_d3.d(e.d3_keep); e.rg_d3.q(e.d3_value);
+
+    e.out_align.x(e.p_value); e.out_align.y(e.i_px);
+}
+
 template <unsigned M>
 class fd_eval : public sc_core::sc_module {
     static_assert(M >= interp::m_min && M <= interp::m_max, "interval of 2^M pixels, M in 2..6");
@@ -87,22 +118,7 @@ public:
         setup_d2.in[0](a); setup_d2.in[1](b); setup_d2.y(init_d2);
         setup_d3.in[0](a); setup_d3.y(init_d3);
 
-        k_carry0.y(carry0);
-        add_p.a(p_value); add_p.b(d1_value); add_p.cin(carry0); add_p.s(p_sum);
-        add_d1.a(d1_value); add_d1.b(d2_value); add_d1.cin(carry0); add_d1.s(d1_sum);
-        add_d2.a(d2_value); add_d2.b(d3_value); add_d2.cin(carry0); add_d2.s(d2_sum);
-
-        wire_mux(mx_p, p_value, init_p, p_sum, p_next);
-        wire_mux(mx_d1, d1_value, init_d1, d1_sum, d1_next);
-        wire_mux(mx_d2, d2_value, init_d2, d2_sum, d2_next);
-        wire_mux(mx_d3, d3_value, init_d3, d3_value, d3_keep);  // D3 is constant while stepping
-
-        rg_p.ctl(clk); rg_p.d(p_next); rg_p.q(p_value);
-        rg_d1.ctl(clk); rg_d1.d(d1_next); rg_d1.q(d1_value);
-        rg_d2.ctl(clk); rg_d2.d(d2_next); rg_d2.q(d2_value);
-        rg_d3.ctl(clk); rg_d3.d(d3_keep); rg_d3.q(d3_value);
-
-        out_align.x(p_value); out_align.y(i_px);
+        wire_fd_recurrence(*this);
         ctrl.clk(clk); ctrl.start(start); ctrl.len(len);
         ctrl.fd_sel(fd_sel); ctrl.pixel(pixel); ctrl.valid(valid); ctrl.last(last);
         chk_clock.clk(clk);
@@ -112,16 +128,6 @@ public:
     // Shortest clock phases this unit works with (checked by chk_clock; after elaboration).
     const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
     const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
-
-private:
-    void wire_mux(mux<WF, interp::fd_mx_inputs>& m, sc_core::sc_signal<fd_t>& hold, sc_core::sc_signal<fd_t>& load,
-                  sc_core::sc_signal<fd_t>& step, sc_core::sc_signal<fd_t>& out) {
-        m.in[fd_ctrl<M>::sel_hold](hold);
-        m.in[fd_ctrl<M>::sel_load](load);
-        m.in[fd_ctrl<M>::sel_step](step);
-        m.sel(fd_sel);
-        m.y(out);
-    }
 };
 
 }  // namespace shading

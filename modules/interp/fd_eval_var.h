@@ -22,6 +22,7 @@
 #include "core/timing_graph.h"
 #include "formats/interp_formats.h"
 #include "interp/fd_ctrl_var.h"
+#include "interp/fd_eval.h"
 #include "interp/fd_setup.h"
 #include "interp/interp_delays.h"
 #include "monitors/phase_checker.h"
@@ -113,22 +114,7 @@ public:
         mx_setup_d2.sel(setup_sel); mx_setup_d2.y(init_d2);
         mx_setup_d3.sel(setup_sel); mx_setup_d3.y(init_d3);
 
-        k_carry0.y(carry0);
-        add_p.a(p_value); add_p.b(d1_value); add_p.cin(carry0); add_p.s(p_sum);
-        add_d1.a(d1_value); add_d1.b(d2_value); add_d1.cin(carry0); add_d1.s(d1_sum);
-        add_d2.a(d2_value); add_d2.b(d3_value); add_d2.cin(carry0); add_d2.s(d2_sum);
-
-        wire_mux(mx_p, p_value, init_p, p_sum, p_next);
-        wire_mux(mx_d1, d1_value, init_d1, d1_sum, d1_next);
-        wire_mux(mx_d2, d2_value, init_d2, d2_sum, d2_next);
-        wire_mux(mx_d3, d3_value, init_d3, d3_value, d3_keep);  // D3 is constant while stepping
-
-        rg_p.ctl(clk); rg_p.d(p_next); rg_p.q(p_value);
-        rg_d1.ctl(clk); rg_d1.d(d1_next); rg_d1.q(d1_value);
-        rg_d2.ctl(clk); rg_d2.d(d2_next); rg_d2.q(d2_value);
-        rg_d3.ctl(clk); rg_d3.d(d3_keep); rg_d3.q(d3_value);
-
-        out_align.x(p_value); out_align.y(i_px);
+        wire_fd_recurrence(*this);  // fd_eval.h's
         ctrl.clk(clk); ctrl.start(start); ctrl.len(len); ctrl.m(m);
         ctrl.fd_sel(fd_sel); ctrl.setup_sel(setup_sel); ctrl.pixel(pixel); ctrl.valid(valid); ctrl.last(last);
         chk_clock.clk(clk);
@@ -144,15 +130,6 @@ private:
     static std::string by_m(const char* base, std::size_t i) { return base + std::to_string(MMIN + i); }
     static auto named_net(const char* base) {
         return [base](const char*, std::size_t i) { return new sc_core::sc_signal<fd_t>(by_m(base, i).c_str()); };
-    }
-
-    void wire_mux(mux<WF, interp::fd_mx_inputs>& mx, sc_core::sc_signal<fd_t>& hold, sc_core::sc_signal<fd_t>& load,
-                  sc_core::sc_signal<fd_t>& step, sc_core::sc_signal<fd_t>& out) {
-        mx.in[ctrl_t::sel_hold](hold);
-        mx.in[ctrl_t::sel_load](load);
-        mx.in[ctrl_t::sel_step](step);
-        mx.sel(fd_sel);
-        mx.y(out);
     }
 };
 
