@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <systemc>
+#include <type_traits>
 #include <vector>
 
 #include "interp/fd_eval.h"
@@ -42,39 +43,58 @@ item_source<fd_interval> random_fd_intervals(std::size_t pixels, uint64_t seed) 
     });
 }
 
-struct fd_sample {
-    fd_interval iv;
+// The stimulus, monitor and checker below serve fd_bench (fd_eval<M>, fd_eval_fast<M>: Iv =
+// fd_interval, no m pin) and fd_var_bench (interp_fd_var_bench.h: fd_eval_var, Iv = fd_var_interval
+// with its m, MT the m pin's type).
+template <class Iv>
+struct fd_sample_of {
+    Iv iv;                     // as presented at acceptance
     std::size_t interval = 0;  // index of the accepted interval
     unsigned k = 0;            // pixel index within it
     uint64_t out = 0;
     sc_core::sc_time accepted, valid;
     bool matched = true;  // set by the checker
 };
+using fd_sample = fd_sample_of<fd_interval>;
+
+// The m pin: a port where the evaluator has one (MT its type), else nothing (fd_eval<M>).
+struct no_m_pin {
+    explicit no_m_pin(const char*) {}
+};
+template <template <class> class Port, class MT>
+struct m_pin_of {
+    using type = Port<MT>;
+};
+template <template <class> class Port>
+struct m_pin_of<Port, void> {
+    using type = no_m_pin;
+};
 
 // Moore source: presents interval 0 with start = 1; at each acceptance edge (start = 1 and
 // valid = 0 or last = 1) it drops start, holds the inputs one more clock (the registers load at
 // the falling edge after acceptance) and then presents the next interval with start = 1.
-template <unsigned M>
-class fd_stimulus : public sc_core::sc_module {
+template <class Iv, class LenT, class MT = void>
+class fd_stimulus_of : public sc_core::sc_module {
 public:
-    using len_t = typename fd_ctrl<M>::len_t;
+    using len_t = LenT;
     sc_core::sc_in<bool> clk{"clk"}, valid{"valid"}, last{"last"};
     sc_core::sc_out<bool> start{"start"};
     sc_core::sc_out<len_t> len{"len"};
+    typename m_pin_of<sc_core::sc_out, MT>::type m{"m"};
     sc_core::sc_out<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
 
-    SC_HAS_PROCESS(fd_stimulus);
-    fd_stimulus(const sc_core::sc_module_name& name, item_source<fd_interval> ivs)
-        : sc_module(name), ivs_(std::move(ivs)) {
+    SC_HAS_PROCESS(fd_stimulus_of);
+    fd_stimulus_of(const sc_core::sc_module_name& name, item_source<Iv> ivs) : sc_module(name), ivs_(std::move(ivs)) {
         SC_THREAD(run);
     }
     bool finished() const { return finished_; }
 
 private:
-    void present(const fd_interval& iv) {
+    void present(const Iv& iv) {
         a.write(coef_word(iv.k.a)); b.write(coef_word(iv.k.b));
         c.write(coef_word(iv.k.c)); d.write(coef_word(iv.k.d));
         len.write(len_t(iv.len));
+        if constexpr (!std::is_void_v<MT>) m.write(MT(iv.m));
         start.write(true);
     }
     void run() {
@@ -100,20 +120,23 @@ private:
         finished_ = true;
         sc_core::sc_stop();
     }
-    item_source<fd_interval> ivs_;
+    item_source<Iv> ivs_;
     bool finished_ = false;
 };
-
 template <unsigned M>
-class fd_monitor : public sc_core::sc_module {
+using fd_stimulus = fd_stimulus_of<fd_interval, typename fd_ctrl<M>::len_t>;
+
+template <class Iv, class LenT, class MT = void>
+class fd_monitor_of : public sc_core::sc_module {
 public:
-    using len_t = typename fd_ctrl<M>::len_t;
+    using len_t = LenT;
     sc_core::sc_in<bool> clk{"clk"}, start{"start"}, valid{"valid"}, last{"last"};
     sc_core::sc_in<len_t> len{"len"};
+    typename m_pin_of<sc_core::sc_in, MT>::type m{"m"};
     sc_core::sc_in<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"}, i_px{"i_px"};
 
-    SC_HAS_PROCESS(fd_monitor);
-    fd_monitor(const sc_core::sc_module_name& name, std::function<void(const fd_sample&)> sink)
+    SC_HAS_PROCESS(fd_monitor_of);
+    fd_monitor_of(const sc_core::sc_module_name& name, std::function<void(const fd_sample_of<Iv>&)> sink)
         : sc_module(name), sink_(std::move(sink)) {
         SC_METHOD(on_edge);
         sensitive << clk.pos();
@@ -125,7 +148,7 @@ private:
         const auto now = sc_core::sc_time_stamp();
         const bool v = valid.read(), l = last.read();
         if (v) {
-            fd_sample s;
+            fd_sample_of<Iv> s;
             s.iv = cur_;
             s.interval = index_ - 1;
             s.k = k_++;
@@ -137,48 +160,65 @@ private:
         if (start.read() && (!v || l)) {  // acceptance: the inputs are presented before it
             cur_.k = {coef_code(a.read()), coef_code(b.read()), coef_code(c.read()), coef_code(d.read())};
             cur_.len = len.read().to_uint();
+            if constexpr (!std::is_void_v<MT>) cur_.m = m.read().to_uint();
             accepted_ = now;
             k_ = 0;
             ++index_;
         }
     }
-    std::function<void(const fd_sample&)> sink_;
-    fd_interval cur_;
+    std::function<void(const fd_sample_of<Iv>&)> sink_;
+    Iv cur_;
     std::size_t index_ = 0;
     unsigned k_ = 0;
     sc_core::sc_time accepted_;
 };
-
 template <unsigned M>
-class fd_checker : public checker_log<fd_sample> {
-public:
-    static constexpr unsigned n_pixels = 1u << M;
-    explicit fd_checker(int frac = interp::fd_fmt.frac) : frac_(frac) {}
+using fd_monitor = fd_monitor_of<fd_interval, typename fd_ctrl<M>::len_t>;
 
-    void check(const fd_sample& s) {
-        fd_sample r = s;
-        const unsigned len = (s.iv.len == 0 || s.iv.len > n_pixels) ? n_pixels : s.iv.len;
+// An interval as the evaluator takes it (its bad-input rules applied): coefficients, m, length.
+struct fd_effective {
+    interp::cubic_coefs k;
+    unsigned m = 0, len = 0;
+};
+
+// Every pixel against golden_fd of its interval as the evaluator takes it (`effective`, from the
+// unit's documented rule, not its code), and against the Horner unit's golden result at the same t.
+// per_interval_m (fd_eval_var): the m is named in mismatch reports and pixels_of() is kept.
+template <class Iv>
+class fd_checker_of : public checker_log<fd_sample_of<Iv>> {
+public:
+    using sample = fd_sample_of<Iv>;
+    fd_checker_of(std::function<fd_effective(const Iv&)> effective, int frac, bool per_interval_m)
+        : effective_(std::move(effective)), frac_(frac), per_interval_m_(per_interval_m) {}
+
+    void check(const sample& s) {
+        sample r = s;
         if (s.interval != golden_interval_ || golden_.empty()) {  // one golden run per interval
-            golden_ = interp::golden_fd(s.iv.k, M, len, frac_);
+            e_ = effective_(s.iv);
+            golden_ = interp::golden_fd(e_.k, e_.m, e_.len, frac_);
             golden_interval_ = s.interval;
+            if (per_interval_m_) pixels_of_[s.interval] = 0;
         }
+        if (per_interval_m_) ++pixels_of_[s.interval];
         const bool in_range = s.k < golden_.size();
         uint64_t g = in_range ? golden_[s.k] : 0;
-        if (begin(s.accepted, s.valid)) g ^= 1;
+        if (this->begin(s.accepted, s.valid)) g ^= 1;
         if (!in_range || g != s.out) {
             r.matched = false;
-            ++mismatches_;
+            ++this->mismatches_;
             std::ostringstream os;
-            os << "forward differences at " << s.valid << " interval " << s.interval << " pixel " << s.k
-               << ": device 0x" << std::hex << s.out << " golden 0x" << g << std::dec;
-            report_mismatch(mismatches_, 10, os.str());
+            os << "forward differences";
+            if (per_interval_m_) os << " (m = " << e_.m << ")";
+            os << " at " << s.valid << " interval " << s.interval << " pixel " << s.k << ": device 0x" << std::hex
+               << s.out << " golden 0x" << g << std::dec;
+            report_mismatch(this->mismatches_, 10, os.str());
         }
-        record(r);
-        // Against Horner at the same t (t = k/N on Q1.8): FD is floor(P) of the exact polynomial,
+        this->record(r);
+        // Against Horner at the same t (t = k/2^m on Q1.8): FD is floor(P) of the exact polynomial,
         // Horner P minus less than 3 LSB of floors, so 0 <= FD - Horner <= 2 LSB.
-        const uint64_t t = static_cast<uint64_t>(s.k) << (interp::t_fmt.frac - M);
+        const uint64_t t = static_cast<uint64_t>(s.k) << (interp::t_fmt.frac - e_.m);
         const int64_t diff = code_value(s.out, interp::coef_fmt) -
-                             code_value(interp::golden_horner(s.iv.k, t, false), interp::coef_fmt);
+                             code_value(interp::golden_horner(e_.k, t, false), interp::coef_fmt);
         min_vs_horner_ = std::min(min_vs_horner_, diff);
         max_vs_horner_ = std::max(max_vs_horner_, diff);
         latencies_[s.k].insert(s.valid - s.accepted);
@@ -187,14 +227,33 @@ public:
     int64_t max_vs_horner() const { return max_vs_horner_; }
     bool within_horner_bound() const { return min_vs_horner_ >= 0 && max_vs_horner_ <= 2; }
     const std::map<unsigned, std::set<sc_core::sc_time>>& latencies() const { return latencies_; }
-    double cycles_per_pixel() const { return cycles_per_result(); }
+    // Pixels that came out per accepted interval (index -> count; per_interval_m only).
+    const std::map<std::size_t, unsigned>& pixels_of() const { return pixels_of_; }
+    double cycles_per_pixel() const { return this->cycles_per_result(); }
 
 private:
+    std::function<fd_effective(const Iv&)> effective_;
     int frac_;
+    bool per_interval_m_;
+    fd_effective e_;
     std::vector<uint64_t> golden_;
     std::size_t golden_interval_ = 0;
     int64_t min_vs_horner_ = INT64_MAX, max_vs_horner_ = INT64_MIN;
     std::map<unsigned, std::set<sc_core::sc_time>> latencies_;
+    std::map<std::size_t, unsigned> pixels_of_;
+};
+
+// fd_eval<M>: m = M; a len outside 1..2^M is evaluated as 2^M (fd_ctrl).
+template <unsigned M>
+class fd_checker : public fd_checker_of<fd_interval> {
+public:
+    static constexpr unsigned n_pixels = 1u << M;
+    explicit fd_checker(int frac = interp::fd_fmt.frac)
+        : fd_checker_of<fd_interval>(
+              [](const fd_interval& iv) {
+                  return fd_effective{iv.k, M, (iv.len == 0 || iv.len > n_pixels) ? n_pixels : iv.len};
+              },
+              frac, false) {}
 };
 
 // DUT: fd_eval<M> (block level) or fd_eval_fast<M> (the fast pin-level abstraction): the same pins.
