@@ -15,6 +15,7 @@
 #include "core/report_ids.h"
 #include "golden/interp_golden.h"
 #include "tlm/line_tlm.h"
+#include "tlm_bad_access.h"
 #include "tlm_initiator.h"
 
 using namespace shading;
@@ -162,54 +163,31 @@ TEST(LineTlmErrors, EveryErrorLeavesStateUnchanged) {
         const auto ivs = random_burst(rng, 32, 4);
         ASSERT_EQ(write_burst(i, ivs), tlm::TLM_OK_RESPONSE);
         const unsigned px = static_cast<unsigned>(pixels_of(ivs));
-        const auto s0 = snapshot(i);
         auto badlen = encode({{{1, 2, 3, 4}, 32}, {{1, 2, 3, 4}, 33}});
         auto zerolen = encode({{{1, 2, 3, 4}, 0}});
-        unsigned char buf[64] = {};
-        unsigned char be[4] = {0xFF, 0xFF, 0, 0};
-        struct bad {
-            const char* what;
-            tlm::tlm_command cmd;
-            uint64_t addr;
-            unsigned len;
-            unsigned char* data;
-            bool be;
-            unsigned sw;
-            tlm::tlm_response_status want;
-            uint32_t bit;
-        };
-        const bad cases[] = {
-            {"unmapped register", tlm::TLM_WRITE_COMMAND, 0x008, 4, buf, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
-            {"between windows", tlm::TLM_READ_COMMAND, 0x2000, 4, buf, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
-            {"past the map", tlm::TLM_READ_COMMAND, 0x20000, 4, buf, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
-            {"2-byte register", tlm::TLM_READ_COMMAND, m::STATUS, 2, buf, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"8-byte register", tlm::TLM_WRITE_COMMAND, m::STATUS, 8, buf, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"misaligned register", tlm::TLM_WRITE_COMMAND, m::CONTROL + 1, 4, buf, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"interval of 8 bytes", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, 8, buf, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"misaligned interval", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK + 8, 16, buf, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"intervals past the end", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK_END - 16, 32, badlen.data(), false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"streaming", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, 32, badlen.data(), false, 16, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"misaligned pixel", tlm::TLM_READ_COMMAND, m::PIXEL_BLOCK + 2, 4, buf, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
-            {"byte enables", tlm::TLM_WRITE_COMMAND, m::CONTROL, 4, buf, true, 0, tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, m::ERR_BYTE_ENABLE},
-            {"write STATUS", tlm::TLM_WRITE_COMMAND, m::STATUS, 4, buf, false, 0, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND},
-            {"write pixel window", tlm::TLM_WRITE_COMMAND, m::PIXEL_BLOCK, 16, buf, false, 0, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND},
-            {"pixels past the burst", tlm::TLM_READ_COMMAND, m::PIXEL_BLOCK + 4 * (px - 1), 8, buf, false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_NOT_READY},
-            {"len 33 > 2^M", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, 32, badlen.data(), false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_LENGTH},
-            {"len 0", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK + 16, 16, zerolen.data(), false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_LENGTH},
-        };
-        for (const bad& c : cases) {
-            if (c.data == buf) std::fill(std::begin(buf), std::end(buf), 0xA5);
-            const auto s = i.access(c.cmd, c.addr, c.data, c.len, c.be ? be : nullptr, c.sw);
-            EXPECT_EQ(s, c.want) << c.what;
-            EXPECT_EQ(i.last_elapsed, sc_core::SC_ZERO_TIME) << c.what;
-            EXPECT_EQ(i.last_delay, sc_core::SC_ZERO_TIME) << c.what;
-            EXPECT_EQ(i.read32(m::STATUS) & m::ERR_MASK, c.bit) << c.what << ": the bus-error log";
-            ASSERT_EQ(i.write32(m::CONTROL, m::CONTROL_CLEAR_ERR), tlm::TLM_OK_RESPONSE);
-            EXPECT_EQ(snapshot(i), s0) << c.what << ": state changed";
-            if (c.cmd == tlm::TLM_READ_COMMAND) {
-                EXPECT_EQ(c.data[0], 0xA5) << c.what << ": a failed read returned data";
-            }
-        }
+        expect_bad_accesses(
+            i,
+            {
+                {"unmapped register", tlm::TLM_WRITE_COMMAND, 0x008, 4, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
+                {"between windows", tlm::TLM_READ_COMMAND, 0x2000, 4, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
+                {"past the map", tlm::TLM_READ_COMMAND, 0x20000, 4, false, 0, tlm::TLM_ADDRESS_ERROR_RESPONSE, m::ERR_ADDRESS},
+                {"2-byte register", tlm::TLM_READ_COMMAND, m::STATUS, 2, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+                {"8-byte register", tlm::TLM_WRITE_COMMAND, m::STATUS, 8, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+                {"misaligned register", tlm::TLM_WRITE_COMMAND, m::CONTROL + 1, 4, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+                {"interval of 8 bytes", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, 8, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+                {"misaligned interval", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK + 8, 16, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+                {"intervals past the end", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK_END - 16, 32, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE, badlen.data()},
+                {"streaming", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, 32, false, 16, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE, badlen.data()},
+                {"misaligned pixel", tlm::TLM_READ_COMMAND, m::PIXEL_BLOCK + 2, 4, false, 0, tlm::TLM_BURST_ERROR_RESPONSE, m::ERR_SIZE},
+                {"byte enables", tlm::TLM_WRITE_COMMAND, m::CONTROL, 4, true, 0, tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, m::ERR_BYTE_ENABLE},
+                {"write STATUS", tlm::TLM_WRITE_COMMAND, m::STATUS, 4, false, 0, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND},
+                {"write pixel window", tlm::TLM_WRITE_COMMAND, m::PIXEL_BLOCK, 16, false, 0, tlm::TLM_COMMAND_ERROR_RESPONSE, m::ERR_COMMAND},
+                {"pixels past the burst", tlm::TLM_READ_COMMAND, m::PIXEL_BLOCK + 4 * (px - 1), 8, false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_NOT_READY},
+                {"len 33 > 2^M", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK, 32, false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_LENGTH, badlen.data()},
+                {"len 0", tlm::TLM_WRITE_COMMAND, m::INTERVAL_BLOCK + 16, 16, false, 0, tlm::TLM_GENERIC_ERROR_RESPONSE, m::ERR_LENGTH, zerolen.data()},
+            },
+            [](tlm_initiator& t) { return t.read32(m::STATUS) & m::ERR_MASK; },
+            [](tlm_initiator& t) { return t.write32(m::CONTROL, m::CONTROL_CLEAR_ERR); }, snapshot);
         // The burst's pixels are all readable, and they are the golden chain's.
         EXPECT_EQ(read_pixels(i, px), golden<cfg_m5>(ivs));
     });
