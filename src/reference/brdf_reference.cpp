@@ -29,4 +29,28 @@ double real_datapath_out(double a, double c, double ksi) {
     return std::clamp(quadratic(c, a), 0.0, 1.0) * ksi;
 }
 
+unsigned squared_k(unsigned n) {
+    unsigned k = 0;
+    while (n >> (k + 1)) ++k;  // floor(log2 n), 0 for n <= 1
+    return k;
+}
+
+double squared_f(unsigned n) {
+    if (n == 0) return 0.0;
+    return static_cast<double>(n) / static_cast<double>(1u << squared_k(n)) - 1.0;
+}
+
+double squared_a(unsigned n) {
+    const double f = squared_f(n);
+    return f + f * (1.0 - f) / static_cast<double>(1u << (squared_k(n) + 2));
+}
+
+double squared_law_with(double c, double a, unsigned k) {
+    double s = std::clamp(quadratic(c, a), 0.0, 1.0);
+    for (unsigned i = 0; i < k; ++i) s *= s;
+    return s;
+}
+
+double squared_law(double c, unsigned n) { return squared_law_with(c, squared_a(n), squared_k(n)); }
+
 }  // namespace shading::ref

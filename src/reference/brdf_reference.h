@@ -16,4 +16,14 @@ double cos_k_gamma(double c, double n, double k);   // cos(k * acos c)^(n/k), 0 
 // (saturate mode) times k_s*I, no rounding anywhere.
 double real_datapath_out(double a, double c, double ksi);
 
+// The squared-quadratic law (ours; formats/squared_formats.h) in real numbers: n = 2^k (1 + f) with
+// f in [0, 1), a = f + f (1 - f) / 2^(k + 2), the quadratic at n' = 1 + f clamped to [0, 1] and
+// squared k times. n < 1 is read as n = 1 (k = 0, a = 0), as the device does.
+unsigned squared_k(unsigned n);
+double squared_f(unsigned n);
+double squared_a(unsigned n);
+double squared_law(double c, unsigned n);
+// The same law with any a and k (the fit's studies): clamp(q(c, a), 0, 1)^(2^k).
+double squared_law_with(double c, double a, unsigned k);
+
 }  // namespace shading::ref

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "golden/specular_golden.h"
+#include "golden/squared_golden.h"
 #include "golden/ua22802_golden.h"
 #include "golden/ua60553_tuned_golden.h"
 #include "scene/scene.h"
@@ -72,17 +73,18 @@ const char* device_name(specular_device d) {
         case specular_device::minimax: return "minimax";
         case specular_device::rom_matched: return "rom_matched";
         case specular_device::ua22802: return "ua22802";
+        case specular_device::squared: return "squared";
     }
     return "?";
 }
 
-std::vector<std::string> device_names() { return {"patent", "minimax", "rom_matched", "ua22802"}; }
+std::vector<std::string> device_names() { return {"patent", "minimax", "rom_matched", "ua22802", "squared"}; }
 
 specular_device parse_device(const std::string& name) {
     for (auto d : {specular_device::patent, specular_device::minimax, specular_device::rom_matched,
-                   specular_device::ua22802})
+                   specular_device::ua22802, specular_device::squared})
         if (name == device_name(d)) return d;
-    throw scene_error("unknown specular device '" + name + "' (patent, minimax, rom_matched, ua22802)");
+    throw scene_error("unknown specular device '" + name + "' (patent, minimax, rom_matched, ua22802, squared)");
 }
 
 std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, uint32_t cos_code,
@@ -93,6 +95,7 @@ std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, ui
         case specular_device::rom_matched:
             return golden_ua60553_tuned(n, cos_code, ksi, dev.mode, ua60553::rom_matched).out;
         case specular_device::ua22802: return golden_ua22802(n, cos_code, ksi, dev.mode).out;
+        case specular_device::squared: return golden_squared(n, cos_code, ksi, dev.mode).out;
     }
     return {0, 0, 0};
 }

@@ -122,6 +122,9 @@ inline sim_result run_device(const plan& p, const frame_constants& k, const scen
             return run<a_gen_tuned, EVAL>(p, k, dev, c, ua60553::rom_matched, o);
         case scene::specular_device::ua22802:
             return run<a_gen_rom, EVAL>(p, k, dev, c, a_gen_rom::default_config(), o);
+        case scene::specular_device::squared:
+            SC_REPORT_ERROR(msg::config, "the block-level SystemC pipeline has no squared device yet");
+            break;
     }
     return {};
 }

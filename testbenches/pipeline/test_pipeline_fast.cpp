@@ -276,6 +276,8 @@ TEST_P(PipelineFastPins, SameAsBlockLevelAtEveryEdge) {
             if (horner) run_pair<a_gen_rom, pipe_eval::horner>(pc, a_gen_rom::default_config());
             else run_pair<a_gen_rom, pipe_eval::fd>(pc, a_gen_rom::default_config());
             break;
+        case scene::specular_device::squared:
+            FAIL() << "no squared case in this suite yet";
     }
 }
 
