@@ -78,6 +78,27 @@ public:
         out_path_ = out;
         loop_path_ = loop;
     }
+    // Requirements set from paths a unit derived itself (a unit whose registers are not all on this
+    // clock, e.g. the squared-quadratic device: strobe-latched RG1..RG5 beside the clocked RG_SQ).
+    // high: launched at the rising edge into a falling-edge register; out: a falling-edge register
+    // to the outputs sampled at the rising edge; loop: falling-edge register to falling-edge
+    // register over both phases (the setup time of the registers ending them included in all three).
+    void require(const timing_path& high, const timing_path& out, const timing_path& loop,
+                 const sc_core::sc_time& setup = sc_core::SC_ZERO_TIME) {
+        const sc_core::sc_time high_t = high.found ? high.delay + setup : sc_core::SC_ZERO_TIME;
+        const sc_core::sc_time loop_t = loop.found ? loop.delay + setup : sc_core::SC_ZERO_TIME;
+        min_high_ = high_t;
+        min_low_ = std::max(out.found ? out.delay : sc_core::SC_ZERO_TIME,
+                            loop_t > high_t ? loop_t - high_t : sc_core::SC_ZERO_TIME);
+        std::ostringstream os;
+        os << "high: " << (high.found ? high.to_string() : "no path") << "; low: "
+           << (out.found ? out.to_string() : "no path");
+        if (loop.found) os << "; register to register over both phases: " << loop.to_string();
+        paths_ = os.str();
+        high_path_ = high;
+        out_path_ = out;
+        loop_path_ = loop;
+    }
     // The paths derive() found: into a register in the high phase, to the outputs, and register to
     // register (not found: no such path).
     const timing_path& high_path() const { return high_path_; }

@@ -16,7 +16,10 @@ struct block_delays {
     sc_core::sc_time adder = delay_default::adder;
     sc_core::sc_time multiplier = delay_default::multiplier;
     sc_core::sc_time rom = delay_default::rom_access;  // UA 22802's ROM access time
-    sc_core::sc_time gate = delay_default::inverter;   // one gate level: OR gate, key block
+    sc_core::sc_time gate = delay_default::inverter;   // one gate level: OR gate, key block, AND gate
+    // The squared-quadratic device's squaring stage and normaliser: a multiplexer (MX_SQ, the LZC,
+    // one row of a barrel shifter).
+    sc_core::sc_time mux = delay_default::mux;
 };
 
 }  // namespace shading

@@ -15,8 +15,10 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <systemc>
+#include <type_traits>
 #include <vector>
 
 #include "reference/brdf_reference.h"
@@ -73,7 +75,28 @@ struct strobe_timing {
     // How long before the latching edge in18 changes; zero makes it change at the edge (a setup
     // violation, for the tests of that bad input). Negative values are not allowed.
     sc_core::sc_time cos_lead = t_high / 2;
+    // The clock of a device with a `clk` pin (the squared-quadratic device's squaring stage; the
+    // bench makes an sc_clock of this period, first rising edge at 0); others have none.
+    sc_core::sc_time clk_period{20, sc_core::SC_NS};
 };
+
+// Fig. 3 for the squared-quadratic device: output 29 rises at most 11 clocks after strobe 17 fell
+// (k = 9: the taking edge, 9 squares, the done edge), so a pixel period of 13 clocks (12 low,
+// 1 high) never strobes before the previous result is valid.
+inline strobe_timing squared_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
+    strobe_timing t;
+    t.clk_period = clk_period;
+    t.t_low = 12 * clk_period;
+    t.t_high = clk_period;
+    t.cos_lead = t.t_high / 2;
+    return t;
+}
+
+// Whether a device has a clock pin (the bench then drives it).
+template <typename D, typename = void>
+struct has_clk : std::false_type {};
+template <typename D>
+struct has_clk<D, std::void_t<decltype(std::declval<D&>().clk)>> : std::true_type {};
 
 struct pixel_sample {
     uint64_t n = 0, cos = 0;
@@ -313,7 +336,8 @@ private:
 };
 
 // A bench that owns the pins' signals, the device, the stimulus, the monitor and the checker.
-// Device is any specular_device<AGen> (device_ua60553, device_ua22802, device_ua60553_tuned).
+// Device is any specular_device<AGen> (device_ua60553, device_ua22802, device_ua60553_tuned), its
+// fast model, or the squared-quadratic device (with its clock).
 template <typename Device>
 class specular_bench : public sc_core::sc_module {
 public:
@@ -325,6 +349,7 @@ public:
     sc_core::sc_signal<bool> out29_valid{"out29_valid"};
 
     specular_checker checker;
+    std::unique_ptr<sc_core::sc_clock> clk;  // devices with a clk pin only
     Device dut;
     specular_stimulus stim;
     specular_monitor mon;
@@ -334,9 +359,11 @@ public:
                    specular_checker::golden_fn golden, DeviceArgs&&... device_args)
         : sc_module(name),
           checker(std::move(golden)),
+          clk(has_clk<Device>::value ? std::make_unique<sc_core::sc_clock>("clk", t.clk_period) : nullptr),
           dut("dut", std::forward<DeviceArgs>(device_args)...),
           stim("stim", std::move(surfaces), t),
           mon("mon", [this](const pixel_sample& s) { checker.check(s); }) {
+        if constexpr (has_clk<Device>::value) dut.clk(*clk);
         bind(dut);
         bind(stim);
         bind(mon);

@@ -1,0 +1,303 @@
+// The squared-quadratic device's own tests (the shared ones are in test_specular_devices.cpp's
+// typed suite): its latency in clocks against hand-computed instants, the derived paths against
+// hand sums of the default delays, each timing rule and bad input reported with its documented
+// result, the trace and its view. Each TEST elaborates one bench: ctest runs each in its own process.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "common/report_log.h"
+#include "common/sim_guard.h"
+#include "common/vcd_names.h"
+#include "core/report_ids.h"
+#include "core/trace.h"
+#include "golden/squared_golden.h"
+#include "squared/squared_device.h"
+#include "squared_script.h"
+
+using namespace shading;
+using namespace shading::tb;
+using sc_core::SC_NS;
+using sc_core::SC_PS;
+using sc_core::sc_time;
+
+namespace {
+
+using bench_t = scripted_bench<squared_device>;
+const sc_time clk20(20, SC_NS);
+const sc_time gate(100, SC_PS);  // output 29's AND gate (block_delays::gate)
+
+// The first rising edge of a clock of `period` (rising at 0, period, ...) strictly after t.
+sc_time next_rise(const sc_time& t, const sc_time& period) {
+    const auto k = static_cast<uint64_t>(std::floor(t / period)) + 1;
+    return period * static_cast<double>(k);
+}
+
+void run(bench_t& bench, const sc_time& limit = sc_time(1, sc_core::SC_MS)) {
+    ASSERT_TRUE(run_to_completion(bench, limit)) << "the script did not finish";
+}
+
+void expect_golden(const pixel_sample& s, overflow_mode mode = overflow_mode::saturate) {
+    EXPECT_EQ(s.out, golden_squared(s.n, s.cos, s.ksi, mode).out) << "n " << s.n << " cos 0x" << std::hex << s.cos;
+}
+
+}  // namespace
+
+TEST(SquaredTiming, OutputTwentyNineRisesKPlusTwoRisingEdgesAfterTheStrobe) {
+    // Strobe 17 falls at 105 ns into each 400 ns slot and rises 10 ns later: output 29 waits for
+    // the stage's done, which rises at the (k + 2)-th rising edge after the fall (the taking edge
+    // counted), i.e. next_rise(fall) + (k + 1) clocks, plus the AND gate's delay.
+    const std::vector<std::pair<unsigned, unsigned>> nk{{1, 0}, {2, 1}, {3, 1}, {20, 4}, {512, 9}, {1000, 9}};
+    bench_t bench("tb", clk20, [&](bench_t& b) {
+        for (std::size_t j = 0; j < nk.size(); ++j) {
+            b.until(sc_time(400.0 * j, SC_NS));
+            b.load(nk[j].first, 255);
+            b.strobe(sc_time(400.0 * j + 105, SC_NS), 0x7A00 + 0x100 * static_cast<uint32_t>(j), sc_time(10, SC_NS));
+        }
+        b.until(sc_time(400.0 * nk.size(), SC_NS));
+    });
+    run(bench);
+    ASSERT_EQ(bench.power_up_rise.size(), 1u);
+    EXPECT_EQ(bench.power_up_rise[0], gate) << "idle: output 29 follows strobe 17, high";
+    ASSERT_EQ(bench.valid_rises.size(), nk.size());
+    ASSERT_EQ(bench.samples.size(), nk.size());
+    for (std::size_t j = 0; j < nk.size(); ++j) {
+        const sc_time fall(400.0 * j + 105, SC_NS);
+        const sc_time want = next_rise(fall, clk20) + clk20 * static_cast<double>(nk[j].second + 1) + gate;
+        EXPECT_EQ(bench.valid_rises[j], want) << "n = " << nk[j].first;
+        expect_golden(bench.samples[j]);
+    }
+    EXPECT_EQ(bench.dut.stage().ctl_sq.dropped(), 0u);
+}
+
+TEST(SquaredTiming, OutputTwentyNineFollowsStrobeSeventeenOnceTheResultIsReady) {
+    // Strobe 17 held low for 250 ns, longer than any n needs: output 29 rises with it (Fig. 3).
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(1000, 200);
+        b.strobe(sc_time(105, SC_NS), 0x7FF0, sc_time(250, SC_NS));
+        b.until(sc_time(500, SC_NS));
+    });
+    run(bench);
+    ASSERT_EQ(bench.valid_rises.size(), 1u);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(355, SC_NS) + gate);
+    ASSERT_EQ(bench.samples.size(), 1u);
+    expect_golden(bench.samples[0]);
+}
+
+TEST(SquaredTiming, DerivedPathsAreTheHandSumsOfTheDefaultDelays) {
+    // Default delays: register 0.2, multiplier 3, adder 1, inverter 0.1, multiplexer 0.3 ns
+    // (LZC one multiplexer, a barrel shifter of 4 rows four).
+    bench_t bench("tb", clk20, [](bench_t&) {});
+    sc_core::sc_start(sc_core::SC_ZERO_TIME);
+    const auto& d = bench.dut;
+    // RG2 -> MUL7 -> ADD9 -> MUL10 -> ADD11 -> MX_SQ: 0.2 + 3 + 1 + 3 + 1 + 0.3.
+    EXPECT_EQ(d.rg2_to_load().delay, sc_time(8500, SC_PS)) << d.rg2_to_load().to_string();
+    // RG1 -> LZC -> BSH1 -> INV_F -> MUL_E -> BSH2 -> ADD_A -> MUL10 -> ADD11 -> MX_SQ:
+    // 0.2 + 0.3 + 1.2 + 0.1 + 3 + 1.2 + 1 + 3 + 1 + 0.3.
+    EXPECT_EQ(d.rg1_to_load().delay, sc_time(11300, SC_PS)) << d.rg1_to_load().to_string();
+    // High phase: the controller's select through MX_SQ (0.3); low phase: RG_SQ -> MUL12 (0.2 + 3),
+    // which also covers the squaring loop RG_SQ -> MUL_SQ -> MX_SQ (3.5) less the high phase.
+    EXPECT_EQ(d.min_high(), sc_time(300, SC_PS));
+    EXPECT_EQ(d.min_low(), sc_time(3200, SC_PS));
+    EXPECT_EQ(d.chk_clk.loop_path().delay, sc_time(3500, SC_PS)) << d.chk_clk.loop_path().to_string();
+    // Strobes 20, 22, 24: RG3..5 -> MUL12..14 (0.2 + 3), checked at output 29's rise.
+    EXPECT_EQ(d.chk_timing.path(0), sc_time(3200, SC_PS));
+}
+
+TEST(SquaredTiming, ClockLowPhaseOnePicosecondLongerThanItsPathIsSilent) {
+    // A clock of 6.402 ns: low phase 3.201 ns > 3.2 ns (no strobe 17: a load needs 8.5 ns).
+    const sc_time period(6402, SC_PS);
+    bench_t bench("tb", period, [&](bench_t& b) {
+        b.load(20, 255);
+        b.until(sc_time(300, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(bench.dut.chk_clk.violations(), 0u);
+}
+
+TEST(SquaredTiming, ClockLowPhaseNotLongerThanItsPathIsReported) {
+    report_log::get().expect(msg::timing);
+    bench_t bench("tb", sc_time(6400, SC_PS), [](bench_t& b) {
+        b.load(20, 255);
+        b.until(sc_time(60, SC_NS));
+    });
+    run(bench);
+    EXPECT_GT(bench.dut.chk_clk.low_violations(), 0u);
+    EXPECT_EQ(bench.dut.chk_clk.high_violations(), 0u);
+    EXPECT_GT(report_log::get().count(msg::timing), 0u);
+}
+
+TEST(SquaredTiming, LoadTooSoonAfterStrobeSeventeenIsReported) {
+    // A 10 ns clock: the load latches 5 ns after the taking edge. Strobe 17 falling 1 ns before a
+    // rising edge leaves RG2's 8.5 ns path 6 ns: reported once; falling 1 ns after one leaves it
+    // 14 ns: silent.
+    report_log::get().expect(msg::timing);
+    const sc_time clk10(10, SC_NS);
+    bench_t bench("tb", clk10, [](bench_t& b) {
+        b.load(4, 255);
+        b.strobe(sc_time(99, SC_NS), 0x7000, sc_time(5, SC_NS));
+        b.strobe(sc_time(201, SC_NS), 0x7100, sc_time(5, SC_NS));
+        b.until(sc_time(300, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(bench.dut.chk_load.violations(), 1u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 1u);
+    ASSERT_EQ(bench.samples.size(), 2u);
+    expect_golden(bench.samples[1]);
+}
+
+TEST(SquaredTiming, NLoadedBetweenTheStrobeAndTheLoadIsReported) {
+    // Strobe 17 falls at 105 ns, the load latches at 130 ns; strobe 15 falling at 119 ns leaves
+    // RG1's 11.3 ns path 11 ns.
+    report_log::get().expect(msg::timing);
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(20, 255);
+        b.until(sc_time(104, SC_NS));
+        b.in18_cos.write(0x7800);
+        b.until(sc_time(105, SC_NS));
+        b.ctl17.write(false);
+        b.until(sc_time(118, SC_NS));
+        b.load_n(100);  // ctl15 falls at 119 ns
+        b.until(sc_time(400, SC_NS));
+        b.ctl17.write(true);
+        b.until(sc_time(500, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(bench.dut.chk_load.violations(), 1u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 1u);
+}
+
+TEST(SquaredBadInput, StrobeBeforeTheResultIsValidIsReportedAndTheResultDropped) {
+    // n = 1000 (k = 9): the first cos is taken at 120 ns and still being squared when strobe 17
+    // falls again at 150 ns: reported, that result never validated; the second is taken at 160 ns
+    // and output 29 rises at 160 + 10 * 20 ns.
+    report_log::get().expect(msg::timing);
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(1000, 255);
+        b.strobe(sc_time(105, SC_NS), 0x7000, sc_time(10, SC_NS));
+        b.strobe(sc_time(150, SC_NS), 0x7F00, sc_time(10, SC_NS));
+        b.until(sc_time(500, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(bench.dut.stage().ctl_sq.dropped(), 1u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 1u);
+    ASSERT_EQ(bench.valid_rises.size(), 1u);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(360, SC_NS) + gate);
+    ASSERT_EQ(bench.samples.size(), 1u);
+    EXPECT_EQ(bench.samples[0].cos, 0x7F00u);
+    expect_golden(bench.samples[0]);
+}
+
+TEST(SquaredBadInput, TwoStrobesBeforeTheTakingEdgeReportTheFirstAsDropped) {
+    report_log::get().expect(msg::timing);
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(7, 128);
+        b.strobe(sc_time(103, SC_NS), 0x6000, sc_time(2, SC_NS));
+        b.strobe(sc_time(108, SC_NS), 0x6800, sc_time(2, SC_NS));
+        b.until(sc_time(300, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(bench.dut.stage().ctl_sq.dropped(), 1u);
+    ASSERT_EQ(bench.samples.size(), 1u);
+    EXPECT_EQ(bench.samples[0].cos, 0x6800u);
+    expect_golden(bench.samples[0]);
+    // k = 2 for n = 7: taken at 120 ns, done at 120 + 3 * 20 ns.
+    ASSERT_EQ(bench.valid_rises.size(), 1u);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(180, SC_NS) + gate);
+}
+
+TEST(SquaredBadInput, NZeroIsReportedAndReadAsNOne) {
+    // n = 0: the LZC counts 10 zeros, a = 0, no squaring: the outputs are n = 1's, cos * k_s*I.
+    report_log::get().expect(msg::input);
+    const std::vector<uint32_t> cs{0x0000, 0x2345, 0x4000, 0x7FFF, 0x8000};
+    bench_t bench("tb", clk20, [&](bench_t& b) {
+        b.load(0, 255);
+        for (std::size_t i = 0; i < cs.size(); ++i) b.strobe(sc_time(100.0 + 100 * i, SC_NS), cs[i], sc_time(10, SC_NS));
+        b.until(sc_time(700, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(report_log::get().count(msg::input), 1u);
+    ASSERT_EQ(bench.samples.size(), cs.size());
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+        EXPECT_EQ(bench.samples[i].out, golden_squared(1, cs[i], {255, 255, 255}, overflow_mode::saturate).out);
+        EXPECT_EQ(bench.samples[i].out[0], (uint64_t{cs[i]} * 255u) >> 7) << "cos * k_s*I on Q9.8";
+        // n = 0 takes no squaring: output 29 rises 2 rising edges after the strobe. The strobe falls
+        // at a rising edge (100 ns, 200 ns, ...): taken at the next one, as the controller orders them.
+        EXPECT_EQ(bench.valid_rises[i], next_rise(sc_time(100.0 + 100 * i, SC_NS), clk20) + clk20 + gate);
+    }
+}
+
+TEST(SquaredBadInput, NAbove1000IsReportedAndExtendsTheLaw) {
+    report_log::get().expect(msg::input);
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(1023, 255);
+        b.strobe(sc_time(105, SC_NS), 0x7FFF, sc_time(250, SC_NS));
+        b.until(sc_time(400, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(report_log::get().count(msg::input), 1u);
+    ASSERT_EQ(bench.samples.size(), 1u);
+    expect_golden(bench.samples[0]);
+    // k = 9, a = 511/512 + 0: (1 - 2^-15)^1023 = 0.9693 within its 1 % of the code's cos^1023.
+    const double q = static_cast<double>(bench.samples[0].out[0]) / 256.0 / 255.0;
+    EXPECT_NEAR(q, std::pow(0x7FFF / 32768.0, 1023), 0.01);
+}
+
+TEST(SquaredBadInput, CosAboveOneSaturatesToFullIntensity) {
+    // cos > 1.0 is reported; saturate mode clamps ADD11 to 1.0, which every square keeps: k_s*I.
+    report_log::get().expect(msg::input);
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(100, 201);
+        b.strobe(sc_time(105, SC_NS), 0xC000, sc_time(250, SC_NS));
+        b.strobe(sc_time(405, SC_NS), 0xFFFF, sc_time(250, SC_NS));
+        b.until(sc_time(700, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(report_log::get().count(msg::input), 2u);
+    ASSERT_EQ(bench.samples.size(), 2u);
+    for (const auto& s : bench.samples) EXPECT_EQ(s.out[0], 201u << 8);
+}
+
+TEST(SquaredBadInput, CosAboveOneInWrapModeIsReportedAndBitExact) {
+    report_log::get().expect(msg::input);
+    bench_t bench(
+        "tb", clk20,
+        [](bench_t& b) {
+            b.load(3, 255);
+            b.strobe(sc_time(105, SC_NS), 0xC000, sc_time(250, SC_NS));
+            b.strobe(sc_time(405, SC_NS), 0x9001, sc_time(250, SC_NS));
+            b.until(sc_time(700, SC_NS));
+        },
+        overflow_mode::wrap);
+    run(bench);
+    EXPECT_EQ(report_log::get().count(msg::input), 2u);
+    ASSERT_EQ(bench.samples.size(), 2u);
+    for (const auto& s : bench.samples) expect_golden(s, overflow_mode::wrap);
+}
+
+TEST(SquaredConfig, ZeroDelaysAreAConfigurationError) {
+    // With every delay zero, RG_SQ's own square would reach its input at the latching instant.
+    report_log::get().expect(msg::config);
+    report_log::get().expect(msg::setup);
+    block_delays zero;
+    zero.reg = zero.inverter = zero.adder = zero.multiplier = zero.rom = zero.gate = zero.mux = sc_core::SC_ZERO_TIME;
+    bench_t bench("tb", clk20, [](bench_t&) {}, overflow_mode::saturate, zero);
+    EXPECT_EQ(report_log::get().count(msg::config), 1u);
+}
+
+TEST(SquaredChecker, AMonitorSampleOffTheGoldenModelIsCaught) {
+    // The comparison these tests make must be able to fail: the device's own sample against the
+    // golden model of a neighbouring n differs.
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(20, 255);
+        b.strobe(sc_time(105, SC_NS), 0x7A00, sc_time(250, SC_NS));
+        b.until(sc_time(400, SC_NS));
+    });
+    run(bench);
+    ASSERT_EQ(bench.samples.size(), 1u);
+    const auto& s = bench.samples[0];
+    EXPECT_EQ(s.out, golden_squared(20, s.cos, s.ksi, overflow_mode::saturate).out);
+    EXPECT_NE(s.out, golden_squared(21, s.cos, s.ksi, overflow_mode::saturate).out);
+}
