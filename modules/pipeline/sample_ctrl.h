@@ -24,9 +24,13 @@
 // interval registers latch where it falls. Seeing ld_e = 1 this controller drops samples_ready; the
 // next interval's samples latch no earlier than the falling edge after the interval registers did
 // (until then ctl17 stays low and ready stays 0).
+// A device that takes more than one clock (the squared-quadratic device): ctl17 rises after its
+// clock low as before, but the sample latches at the first falling edge where output 29 (dev_valid)
+// is high, and `ready` is raised at the job's last latch instead of a clock ahead of it.
 // Bad input (shading/input): a job with m neither 0 nor m_min..m_max, len 0 or above 2^m, m = 0
 // with deg2 (golden_interval refuses both), or, with the forward-difference evaluator built for M,
 // an interval with m != M: reported and dropped (no sample, no pixel).
+// The FSM is plain state (sample_fsm.h), stepped the same way by the fast pin-level pipeline.
 #pragma once
 
 #include <sstream>
@@ -35,6 +39,7 @@
 #include "core/report_ids.h"
 #include "core/timed_block.h"
 #include "formats/interp_formats.h"
+#include "pipeline/sample_fsm.h"
 
 namespace shading {
 
@@ -49,6 +54,7 @@ public:
     sc_core::sc_in<sc_dt::sc_uint<m_bits>> m{"m"};
     sc_core::sc_in<sc_dt::sc_uint<1>> deg2{"deg2"};
     sc_core::sc_in<bool> ld_e{"ld_e"};
+    sc_core::sc_in<bool> dev_valid{"dev_valid"};  // the device's output 29 (read only with wait_valid)
     sc_core::sc_out<bool> ready{"ready"}, ld_job{"ld_job"}, ld_d{"ld_d"};
     sc_core::sc_out<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"}, ld_k{"ld_k"};
     sc_core::sc_out<sel_t> smp_sel{"smp_sel"};
@@ -57,7 +63,9 @@ public:
 
     SC_HAS_PROCESS(sample_ctrl);
     // fd_m: 0 for the Horner unit (any m), else the m the forward-difference evaluator is built for.
-    sample_ctrl(const sc_core::sc_module_name& name, unsigned fd_m) : sc_module(name), fd_m_(fd_m) {
+    // wait_valid: the device needs more than one clock (sample_fsm.h).
+    sample_ctrl(const sc_core::sc_module_name& name, unsigned fd_m, bool wait_valid = false)
+        : sc_module(name), fd_m_(fd_m), fsm_(wait_valid) {
         SC_METHOD(on_clock);
         sensitive << clk.neg();
         dont_initialize();
@@ -69,140 +77,61 @@ public:
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
 
-    // Nothing taken and no interval waiting for the pixel controller.
-    bool idle() const { return state_ == idle_st && bank_ != bank_full; }
-    std::size_t jobs() const { return jobs_; }
-    std::size_t dropped() const { return dropped_; }
-    std::size_t samples() const { return samples_; }
+    bool idle() const { return fsm_.idle(); }
+    std::size_t jobs() const { return fsm_.jobs(); }
+    std::size_t dropped() const { return fsm_.dropped(); }
+    std::size_t samples() const { return fsm_.samples(); }
 
 private:
-    enum state { idle_st, frame_st, check_st, low_st, high_st };
-    // The sample registers' interval: free, full (samples_ready = 1), or being taken (ld_e seen at
-    // this edge: the interval registers latch half a clock later, the sample registers not before).
-    enum bank { bank_free, bank_full, bank_taking };
+    // sample_fsm's view of the pins: reads see the values before the edge, writes drive the strobes.
+    struct pins {
+        sample_ctrl& c;
+        bool start() const { return c.start.read(); }
+        bool load_frame() const { return c.load_frame.read(); }
+        bool ld_e() const { return c.ld_e.read(); }
+        bool dev_valid() const { return c.dev_valid.read(); }
+        unsigned check_job() const { return c.check_job(); }
+        void ready(bool v) { c.ready.write(v); }
+        void ld_job(bool v) { c.ld_job.write(v); }
+        void ld_d(bool v) { c.ld_d.write(v); }
+        void ctl17(bool v) { c.ctl17.write(v); }
+        void smp_sel(unsigned k) { c.smp_sel.write(sel_t(k)); }
+        void samples_ready(bool v) { c.samples_ready.write(v); }
+        void frame_strobes(bool v) {
+            for (auto* s : {&c.ctl15, &c.ctl20, &c.ctl22, &c.ctl24, &c.ld_k}) s->write(v);
+        }
+        // Which sample registers sample k goes to: all four for an exact pixel, else I(k+1).
+        void sample_strobe(unsigned k, unsigned count, bool v) {
+            sc_core::sc_out<bool>* ld[] = {&c.ld_i1, &c.ld_i2, &c.ld_i3, &c.ld_i4};
+            if (count == 1) {
+                for (auto* l : ld) l->write(v);
+            } else {
+                ld[k]->write(v);
+            }
+        }
+    };
 
     void on_clock() {
-        if (bank_ == bank_taking) bank_ = bank_free;
-        if (bank_ == bank_full && ld_e.read()) {
-            bank_ = bank_taking;
-            samples_ready.write(false);
-        }
-        switch (state_) {
-            case idle_st:
-                take_request();
-                break;
-            case frame_st:
-                frame_strobes(false);  // RG1, RG3-5, k_d*I and ambient latch
-                ready.write(true);
-                ready_ = true;
-                state_ = idle_st;
-                break;
-            case check_st:
-                if (!plan_job()) {
-                    ++dropped_;
-                    ready.write(true);
-                    ld_job.write(true);
-                    ready_ = true;
-                    state_ = idle_st;
-                    break;
-                }
-                sample_ = 0;
-                begin_sample();
-                break;
-            case low_st:  // the device's outputs have settled: validate and latch the sample
-                if (bank_ != bank_free) break;  // the previous interval is still in the sample registers
-                ctl17.write(true);
-                strobe(sample_, false);
-                ++samples_;
-                if (++sample_ < count_) {
-                    smp_sel.write(sample_);
-                    state_ = high_st;
-                    break;
-                }
-                ld_d.write(false);  // the descriptor registers latch this job's y, x0, len, m, deg2
-                samples_ready.write(true);
-                bank_ = bank_full;
-                state_ = idle_st;
-                take_request();  // the next job may be taken at this same edge (ready is 1 already)
-                break;
-            case high_st:
-                begin_sample();
-                break;
-        }
-        // The last sample's latch is the edge where the next request can be taken: announce it one
-        // clock ahead, once it is sure to happen there (the sample registers free by then).
-        if (state_ == low_st && sample_ + 1 == count_ && bank_ != bank_full && !ready_) {
-            ready.write(true);
-            ld_job.write(true);
-            ready_ = true;
-        }
+        pins p{*this};
+        fsm_.falling(p);
     }
 
-    void take_request() {
-        if (load_frame.read()) {
-            frame_strobes(true);
-            ready.write(false);
-            ready_ = false;
-            state_ = frame_st;
-        } else if (start.read()) {
-            ready.write(false);
-            ready_ = false;
-            ld_job.write(false);  // the job registers latch the pins now
-            smp_sel.write(0);
-            ++jobs_;
-            state_ = check_st;
-        }
-    }
-
-    void begin_sample() {
-        ctl17.write(false);  // RG2 latches N.H of sample `sample_`
-        strobe(sample_, true);
-        if (sample_ + 1 == count_) ld_d.write(true);
-        state_ = low_st;
-    }
-
-    // Which sample registers sample k goes to: all four for an exact pixel, else I(k+1).
-    void strobe(unsigned k, bool level) {
-        sc_core::sc_out<bool>* ld[] = {&ld_i1, &ld_i2, &ld_i3, &ld_i4};
-        if (count_ == 1) {
-            for (auto* l : ld) l->write(level);
-        } else {
-            ld[k]->write(level);
-        }
-    }
-
-    void frame_strobes(bool level) {
-        for (auto* s : {&ctl15, &ctl20, &ctl22, &ctl24, &ld_k}) s->write(level);
-    }
-
-    bool plan_job() {
+    unsigned check_job() const {
         const unsigned mm = m.read().to_uint(), n = len.read().to_uint();
-        std::ostringstream os;
-        if (mm != 0 && (mm < interp::m_min || mm > interp::m_max))
-            os << "m = " << mm << " is neither 0 (exact pixel) nor " << interp::m_min << ".." << interp::m_max;
-        else if (n == 0 || n > (1u << mm))
-            os << "len = " << n << " is outside 1.." << (1u << mm) << " for m = " << mm;
-        else if (mm == 0 && deg2.read() == 1)
-            os << "an exact pixel (m = 0) is cubic, not quadratic";
-        else if (fd_m_ != 0 && mm != 0 && mm != fd_m_)
-            os << "m = " << mm << " but the forward-difference evaluator is built for m = " << fd_m_;
-        if (!os.str().empty()) {
+        const bool d2 = deg2.read() == 1;
+        const std::string problem = pipe::job_problem(mm, n, d2, fd_m_);
+        if (!problem.empty()) {
             std::ostringstream msg;
-            msg << name() << ": job checked at " << sc_core::sc_time_stamp() << " (taken one clock before): " << os.str()
+            msg << name() << ": job checked at " << sc_core::sc_time_stamp() << " (taken one clock before): " << problem
                 << "; dropped (no pixel written)";
             SC_REPORT_WARNING(msg::input, msg.str().c_str());
-            return false;
+            return 0;
         }
-        count_ = mm == 0 ? 1 : (deg2.read() == 1 ? 3 : 4);
-        return true;
+        return pipe::job_samples(mm, d2);
     }
 
     unsigned fd_m_;
-    state state_ = idle_st;
-    bank bank_ = bank_free;
-    bool ready_ = true;
-    unsigned sample_ = 0, count_ = 0;
-    std::size_t jobs_ = 0, dropped_ = 0, samples_ = 0;
+    pipe::sample_fsm fsm_;
 };
 
 }  // namespace shading

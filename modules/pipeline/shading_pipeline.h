@@ -6,9 +6,10 @@
 //   rg_dy, rg_dx0, rg_dlen, rg_dm, rg_ddeg2  the descriptor of the interval in the sample
 //                  registers (ld_d, at its last sample's latch), read by the pixel controller
 //   mx_nh, mx_nl   the sample being formed (smp_sel)
-//   dev            the specular device of UA 60553, Fig. 1, with the generator of `a` AGen
-//                  (a_gen_linear: the patent's constants; a_gen_tuned: minimax / rom_matched;
-//                  a_gen_rom: UA 22802), driven through its Fig. 3 strobes: ctl15, ctl20, ctl22,
+//   dev            the specular device (pipe_device.h): UA 60553, Fig. 1, with the generator of
+//                  `a` AGen (a_gen_linear: the patent's constants; a_gen_tuned: minimax /
+//                  rom_matched; a_gen_rom: UA 22802), or the squared-quadratic device (AGen =
+//                  squared_device, on clk), driven through its Fig. 3 strobes: ctl15, ctl20, ctl22,
 //                  ctl24 once per frame, ctl17 once per sample (out29_valid is its output 29)
 //   rg_kd_r/g/b, rg_amb_r/g/b  the frame's k_d*I and ambient codes (strobe ld_k)
 //   smp_r/g/b      per channel: diffuse multiplier, adders, sample registers I1..I4, interval
@@ -36,11 +37,11 @@
 #include "pipeline/fd_pixel_ctrl.h"
 #include "pipeline/horner_channel.h"
 #include "pipeline/horner_pixel_ctrl.h"
+#include "pipeline/pipe_device.h"
 #include "pipeline/pipe_eval.h"
 #include "pipeline/sample_channel.h"
 #include "pipeline/sample_ctrl.h"
 #include "specular/block_delays.h"
-#include "specular/specular_device.h"
 
 namespace shading {
 
@@ -124,7 +125,7 @@ public:
     reg<1> rg_ddeg2;
     reg<WCOS> rg_nh1, rg_nh2, rg_nh3, rg_nh4, rg_nl1, rg_nl2, rg_nl3, rg_nl4;
     mux<WCOS, 4> mx_nh, mx_nl;
-    specular_device<AGen> dev;
+    typename pipe_device<AGen>::type dev;
     reg<pipe::kdi_fmt.width> rg_kd_r, rg_kd_g, rg_kd_b;
     reg<WI> rg_amb_r, rg_amb_g, rg_amb_b;
     sample_channel smp_r, smp_g, smp_b;
@@ -148,7 +149,7 @@ public:
           smp_r("smp_r", set, div, dl), smp_g("smp_g", set, div, dl), smp_b("smp_b", set, div, dl),
           ev_r(horner ? "horner_r" : "fd_r", fd_m, dl), ev_g(horner ? "horner_g" : "fd_g", fd_m, dl),
           ev_b(horner ? "horner_b" : "fd_b", fd_m, dl),
-          ctl_sample("ctl_sample", horner ? 0 : fd_m), ctl_pixel("ctl_pixel") {
+          ctl_sample("ctl_sample", horner ? 0 : fd_m, pipe_device<AGen>::clocked), ctl_pixel("ctl_pixel") {
         // Job registers: latched where ld_job falls.
         rg_y.ctl(ld_job); rg_y.d(in_y); rg_y.q(y);
         rg_x0.ctl(ld_job); rg_x0.d(in_x0); rg_x0.q(x0);
@@ -182,6 +183,7 @@ public:
         dev.in16_n(in_n); dev.in18_cos(in18_cos);
         dev.in19_ksi_r(in_ksi_r); dev.in21_ksi_g(in_ksi_g); dev.in23_ksi_b(in_ksi_b);
         dev.out25_r(out25_r); dev.out26_g(out26_g); dev.out27_b(out27_b); dev.out29_valid(out29_valid);
+        if constexpr (pipe_device<AGen>::clocked) dev.clk(clk);
         rg_kd_r.ctl(ld_k); rg_kd_r.d(in_kdi_r); rg_kd_r.q(kdi_r);
         rg_kd_g.ctl(ld_k); rg_kd_g.d(in_kdi_g); rg_kd_g.q(kdi_g);
         rg_kd_b.ctl(ld_k); rg_kd_b.d(in_kdi_b); rg_kd_b.q(kdi_b);
@@ -217,6 +219,7 @@ public:
 
         ctl_sample.clk(clk); ctl_sample.start(start); ctl_sample.load_frame(load_frame);
         ctl_sample.len(len); ctl_sample.m(m); ctl_sample.deg2(deg2_job); ctl_sample.ld_e(ld_e);
+        ctl_sample.dev_valid(out29_valid);
         ctl_sample.ready(ready); ctl_sample.ld_job(ld_job); ctl_sample.ld_d(ld_d);
         ctl_sample.ctl15(ctl15); ctl_sample.ctl17(ctl17); ctl_sample.ctl20(ctl20); ctl_sample.ctl22(ctl22);
         ctl_sample.ctl24(ctl24); ctl_sample.ld_k(ld_k);

@@ -4,9 +4,11 @@
 //     the same rising edges, and px_r/g/b hold the pixel's codes at every rising edge where
 //     px_valid = 1 (the frame buffer's sampling edges). Between those edges px_r/g/b hold the
 //     last pixel (the block model shows the evaluator's partial sums through the clamp there).
-//   - The controllers are the block model's (sample_ctrl.h, horner_pixel_ctrl.h with
-//     horner_ctrl.h, fd_pixel_ctrl.h with fd_ctrl.h / fd_ctrl_var.h), stepped here as plain state
-//     at each edge, every read seeing the value before the edge as a signal would.
+//   - The controllers are the block model's (sample_fsm.h, the sample controller's own plain state;
+//     horner_pixel_ctrl.h with horner_ctrl.h, fd_pixel_ctrl.h with fd_ctrl.h / fd_ctrl_var.h),
+//     stepped here at each edge, every read seeing the value before the edge as a signal would. With
+//     the squared-quadratic device the sample controller waits for output 29, which that device
+//     raises k + 2 clocks after its strobe (k = its squarings for the frame's n): counted here.
 //   - The datapath is one function call per interval: golden_interval() (src/pipeline/pipeline.h:
 //     the device's specular term, the diffuse and ambient adders, the coefficient units and the
 //     Horner unit or forward differences, the output clamp, from the shared format definitions),
@@ -27,6 +29,9 @@
 #include "formats/ua60553_formats.h"
 #include "pipeline/pipe_eval.h"
 #include "pipeline/pipeline.h"
+#include "pipeline/sample_fsm.h"
+#include "squared/sq_count.h"
+#include "golden/squared_golden.h"
 
 namespace shading {
 
@@ -70,7 +75,8 @@ public:
     // per interval; ignored for Horner.
     shading_pipeline_fast(const sc_core::sc_module_name& name, const scene::device_config& dev,
                           interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4)
-        : sc_module(name), dev_(dev), set_(set), div_(div), fd_m_(horner ? 0 : fd_m) {
+        : sc_module(name), dev_(dev), set_(set), div_(div), fd_m_(horner ? 0 : fd_m),
+          fsm_(dev.device == scene::specular_device::squared) {
         SC_METHOD(on_edge);
         sensitive << clk;
         dont_initialize();
@@ -80,12 +86,12 @@ public:
 
     // Nothing taken and not yet written out (shading_pipeline::idle()).
     bool idle() const {
-        const bool sample_idle = state_ == idle_st && bank_ != bank_full;
+        const bool sample_idle = fsm_.idle();
         if constexpr (horner) return sample_idle && !cur_.active && !pend_.active && !ld_e_ && !in_flight_;
         else return sample_idle && !pend_.active && !ld_e_ && !start_ && left_ == 0 && f_rem_ == 0;
     }
-    std::size_t jobs() const { return jobs_; }
-    std::size_t dropped() const { return dropped_; }
+    std::size_t jobs() const { return fsm_.jobs(); }
+    std::size_t dropped() const { return fsm_.dropped(); }
 
 private:
     using rgb = pipeline::rgb_codes;
@@ -94,8 +100,6 @@ private:
         unsigned y = 0, x0 = 0, len = 0, m = 0, issued = 0;
         std::vector<rgb> px;  // golden_interval's codes of its pixels
     };
-    enum state { idle_st, frame_st, check_st, low_st, high_st };
-    enum bank { bank_free, bank_full, bank_taking };
 
     // Every edge of clk, but a falling edge where nothing can happen is skipped: the sample
     // controller waiting with its registers full for the pixel controller's ld_e (set only at rising
@@ -106,57 +110,45 @@ private:
             return;
         }
         rising();
-        const bool waiting = state_ == low_st && bank_ == bank_full && !ld_e_;
+        const bool waiting = fsm_.current() == pipe::sample_fsm::low_st &&
+                             fsm_.sample_bank() == pipe::sample_fsm::bank_full && !ld_e_ && !fsm_.wait_valid();
         const bool finishing = horner ? h_done_ : f_rem_ != 0;
         if (waiting && !finishing) next_trigger(clk.posedge_event());
     }
 
-    // ---- Falling edges: sample_ctrl.h, and the evaluator's registers ----
+    // ---- Falling edges: the sample controller (sample_fsm.h), and the evaluator's registers ----
+    // sample_fsm's view of the pins: the job and frame registers latch where their strobes fall.
+    struct pins {
+        shading_pipeline_fast& u;
+        bool start() const { return u.start.read(); }
+        bool load_frame() const { return u.load_frame.read(); }
+        bool ld_e() const { return u.ld_e_; }
+        // The squared-quadratic device's output 29, high from the (k + 2)-th falling edge after its
+        // strobe fell (its done rises at the (k + 2)-th rising edge, the taking edge counted).
+        bool dev_valid() const { return u.edges_ - u.strobe_edge_ >= u.dev_clocks_; }
+        unsigned check_job() const { return u.check_job(); }
+        void ready(bool v) { u.ready.write(v); }
+        void ld_job(bool v) {
+            if (!v) u.take_job();
+        }
+        void ld_d(bool v) {
+            if (!v) u.d_ = u.job_;  // the descriptor (and the samples) for the pixel controller
+        }
+        void ctl17(bool v) {
+            if (!v) u.strobe_edge_ = u.edges_;
+        }
+        void frame_strobes(bool v) {
+            if (!v) u.latch_frame();
+        }
+        void smp_sel(unsigned) {}
+        void sample_strobe(unsigned, unsigned, bool) {}
+        void samples_ready(bool v) { u.samples_ready_ = v; }
+    };
+
     void falling() {
-        if (bank_ == bank_taking) bank_ = bank_free;
-        if (bank_ == bank_full && ld_e_) {
-            bank_ = bank_taking;
-            samples_ready_ = false;
-        }
-        switch (state_) {
-            case idle_st:
-                take_request();
-                break;
-            case frame_st:  // RG1, RG3-5, k_d*I and ambient latch (the device's frame strobes fall)
-                k_.n = static_cast<unsigned>(in_n.read().to_uint());
-                k_.ksi = {in_ksi_r.read().to_uint64(), in_ksi_g.read().to_uint64(), in_ksi_b.read().to_uint64()};
-                k_.kdi = {in_kdi_r.read().to_uint64(), in_kdi_g.read().to_uint64(), in_kdi_b.read().to_uint64()};
-                k_.ambient = {in_amb_r.read().to_uint64(), in_amb_g.read().to_uint64(), in_amb_b.read().to_uint64()};
-                set_ready(true);
-                state_ = idle_st;
-                break;
-            case check_st:
-                if (!plan_job()) {
-                    ++dropped_;
-                    set_ready(true);
-                    state_ = idle_st;
-                    break;
-                }
-                sample_ = 0;
-                state_ = low_st;  // begin_sample: ctl17 falls
-                break;
-            case low_st:
-                if (bank_ != bank_free) break;
-                if (++sample_ < count_) {
-                    state_ = high_st;
-                    break;
-                }
-                d_ = job_;  // ld_d falls: the descriptor (and the samples) for the pixel controller
-                samples_ready_ = true;
-                bank_ = bank_full;
-                state_ = idle_st;
-                take_request();
-                break;
-            case high_st:
-                state_ = low_st;
-                break;
-        }
-        if (state_ == low_st && sample_ + 1 == count_ && bank_ != bank_full && !ready_) set_ready(true);
+        ++edges_;
+        pins p{*this};
+        fsm_.falling(p);
 
         // The evaluator's output register latches the pixel it finishes in this clock.
         if constexpr (horner) {
@@ -166,62 +158,49 @@ private:
         }
     }
 
-    void set_ready(bool v) {
-        ready_ = v;
-        ready.write(v);
+    // RG1, RG3-5, k_d*I and ambient: the device's frame strobes fall.
+    void latch_frame() {
+        k_.n = static_cast<unsigned>(in_n.read().to_uint());
+        k_.ksi = {in_ksi_r.read().to_uint64(), in_ksi_g.read().to_uint64(), in_ksi_b.read().to_uint64()};
+        k_.kdi = {in_kdi_r.read().to_uint64(), in_kdi_g.read().to_uint64(), in_kdi_b.read().to_uint64()};
+        k_.ambient = {in_amb_r.read().to_uint64(), in_amb_g.read().to_uint64(), in_amb_b.read().to_uint64()};
+        dev_clocks_ = squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k_.n).z)) + 2;
     }
 
-    void take_request() {
-        if (load_frame.read()) {
-            set_ready(false);
-            state_ = frame_st;
-        } else if (start.read()) {
-            set_ready(false);
-            // The job registers latch the pins.
-            job_.y = static_cast<unsigned>(in_y.read().to_uint());
-            job_.x0 = static_cast<unsigned>(in_x0.read().to_uint());
-            job_.len = static_cast<unsigned>(in_len.read().to_uint());
-            job_.m = static_cast<unsigned>(in_m.read().to_uint());
-            job_.deg2 = in_deg2.read() == 1;
-            const sc_core::sc_in<cos_t>* nh[] = {&in_nh1, &in_nh2, &in_nh3, &in_nh4};
-            const sc_core::sc_in<cos_t>* nl[] = {&in_nl1, &in_nl2, &in_nl3, &in_nl4};
-            for (int i = 0; i < 4; ++i) {
-                job_s_[i].cos_nh = static_cast<uint32_t>((*nh[i])->read().to_uint());
-                job_s_[i].cos_nl = static_cast<uint32_t>((*nl[i])->read().to_uint());
-            }
-            ++jobs_;
-            state_ = check_st;
+    // The job registers latch the pins.
+    void take_job() {
+        job_.y = static_cast<unsigned>(in_y.read().to_uint());
+        job_.x0 = static_cast<unsigned>(in_x0.read().to_uint());
+        job_.len = static_cast<unsigned>(in_len.read().to_uint());
+        job_.m = static_cast<unsigned>(in_m.read().to_uint());
+        job_.deg2 = in_deg2.read() == 1;
+        const sc_core::sc_in<cos_t>* nh[] = {&in_nh1, &in_nh2, &in_nh3, &in_nh4};
+        const sc_core::sc_in<cos_t>* nl[] = {&in_nl1, &in_nl2, &in_nl3, &in_nl4};
+        for (int i = 0; i < 4; ++i) {
+            job_s_[i].cos_nh = static_cast<uint32_t>((*nh[i])->read().to_uint());
+            job_s_[i].cos_nl = static_cast<uint32_t>((*nl[i])->read().to_uint());
         }
     }
 
-    // sample_ctrl::plan_job's checks, then the interval's pixels through the golden pipeline.
-    bool plan_job() {
-        const unsigned mm = job_.m, n = job_.len;
-        std::ostringstream os;
-        if (mm != 0 && (mm < interp::m_min || mm > interp::m_max))
-            os << "m = " << mm << " is neither 0 (exact pixel) nor " << interp::m_min << ".." << interp::m_max;
-        else if (n == 0 || n > (1u << mm))
-            os << "len = " << n << " is outside 1.." << (1u << mm) << " for m = " << mm;
-        else if (mm == 0 && job_.deg2)
-            os << "an exact pixel (m = 0) is cubic, not quadratic";
-        else if (fd_m_ != 0 && mm != 0 && mm != fd_m_)
-            os << "m = " << mm << " but the forward-difference evaluator is built for m = " << fd_m_;
-        if (!os.str().empty()) {
+    // sample_ctrl's check (sample_fsm.h's job_problem), then the interval's pixels through the
+    // golden pipeline. Returns the job's samples, 0 for a dropped job.
+    unsigned check_job() {
+        const std::string problem = pipe::job_problem(job_.m, job_.len, job_.deg2, fd_m_);
+        if (!problem.empty()) {
             std::ostringstream msg;
-            msg << name() << ": job checked at " << sc_core::sc_time_stamp() << " (taken one clock before): " << os.str()
+            msg << name() << ": job checked at " << sc_core::sc_time_stamp() << " (taken one clock before): " << problem
                 << "; dropped (no pixel written)";
             SC_REPORT_WARNING(msg::input, msg.str().c_str());
-            return false;
+            return 0;
         }
-        count_ = mm == 0 ? 1 : (job_.deg2 ? 3 : 4);
         pipeline::interval_job j;
-        j.len = n;
-        j.m = mm;
+        j.len = job_.len;
+        j.m = job_.m;
         j.deg2 = job_.deg2;
         j.s = job_s_;
         job_.px = pipeline::golden_interval(j, k_, dev_, horner ? pipeline::evaluator::horner : pipeline::evaluator::fd,
                                             set_, div_);
-        return true;
+        return pipe::job_samples(job_.m, job_.deg2);
     }
 
     void write_px(const rgb& v) {
@@ -326,11 +305,10 @@ private:
     unsigned fd_m_;
     pipeline::frame_constants k_;
     // Sample controller.
-    state state_ = idle_st;
-    bank bank_ = bank_free;
-    bool ready_ = true, samples_ready_ = false;
-    unsigned sample_ = 0, count_ = 0;
-    std::size_t jobs_ = 0, dropped_ = 0;
+    pipe::sample_fsm fsm_;
+    bool samples_ready_ = false;
+    uint64_t edges_ = 0, strobe_edge_ = 0;  // falling edges so far; the last one strobe 17 fell at
+    uint64_t dev_clocks_ = 2;               // the squared-quadratic device's k + 2 for the frame's n
     interval job_, d_;  // the job registers (with the samples' pixels) and the descriptor registers
     std::array<pipeline::sample_geometry, 4> job_s_{};
     // Pixel controller.

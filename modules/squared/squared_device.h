@@ -48,6 +48,11 @@ class squared_device : public sc_core::sc_module {
     using q_t = sc_dt::sc_uint<WQ>;
 
 public:
+    // A generator-like face for tops that take a specular unit by its generator of `a`
+    // (pipeline/pipe_device.h): the law has no constants to choose, so its config is empty.
+    struct config {};
+    static config default_config() { return {}; }
+    static constexpr qfmt n_fmt = squared::n_fmt;
     static constexpr const char* n_out_of_range =
         "n = 0 is read as n = 1 (the LZC counts 10 zeros: a = 0, no squaring, outputs cos * k_s*I); "
         "n > 1000 extends the law (k = 9, f up to 511/512)";
@@ -160,6 +165,10 @@ public:
         chk_load.clk(clk); chk_load.sel(sq.mx_sq_sel); chk_load.ctl[0](ctl15); chk_load.ctl[1](ctl17);
         chk_clk.clk(clk);
     }
+
+    // The constructor of specular_device<AGen> (name, mode, generator config, delays).
+    squared_device(const sc_core::sc_module_name& name, overflow_mode mode, const config&, const block_delays& t)
+        : squared_device(name, mode, t) {}
 
     // Derived paths (valid from end of elaboration): RG1's and RG2's into RG_SQ (checked at each
     // load), and the clock's phase requirements (the squaring loop, RG_SQ to the outputs).

@@ -30,6 +30,7 @@
 #include "golden/squared_golden.h"
 #include "specular/block_delays.h"
 #include "squared/sq_count.h"
+#include "squared/squared_device.h"
 
 namespace shading {
 
@@ -40,6 +41,7 @@ class squared_fast : public sc_core::sc_module {
 
 public:
     static constexpr abstraction level = abstraction::fast;
+    using config = squared_device::config;  // squared_device's constructors, for tops that switch by type
 
     // The pins of squared_device.
     sc_core::sc_in<bool> clk{"clk"};
@@ -79,6 +81,9 @@ public:
         dont_initialize();
         SC_METHOD(power_up);  // once, as the block model's gate computes its first output
     }
+
+    squared_fast(const sc_core::sc_module_name& name, overflow_mode mode, const config&, const block_delays& t)
+        : squared_fast(name, mode, t) {}
 
     // The block model's derived paths and clock requirements (squared_device's accessors).
     const sc_core::sc_time& rg1_to_load() const { return load_path_[0]; }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "golden/interp_golden.h"
+#include "golden/squared_golden.h"
 #include "pipeline/pipeline.h"
 #include "scene/scene.h"
 
@@ -235,7 +236,18 @@ scene::op_counts times(scene::op_counts c, uint64_t k) {
 
 }  // namespace
 
+scene::op_counts device_sample_ops(const scene::device_config& dev, unsigned n) {
+    scene::op_counts ops = device_per_sample;
+    if (dev.device == scene::specular_device::squared) ops.mul += golden_squared_a(n).k;  // MUL_SQ, k times
+    return ops;
+}
+
 hardware_counts hardware_ops(const plan& p, const plan_config& c) {
+    return hardware_ops(p, c, scene::device_config{}, 0);
+}
+
+hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::device_config& dev, unsigned n) {
+    const scene::op_counts device_per_sample = device_sample_ops(dev, n);
     hardware_counts h;
     h.geometry = p.geometry;
     h.geometry += p.decision;

@@ -179,6 +179,13 @@ struct hardware_counts {
         return t;
     }
 };
+// A device's operations per colour sample (the sample stage's specular part): Fig. 1's datapath for
+// UA 60553, UA 22802 and the tuned generators (MUL7, MUL10, MUL12..14; ADD9, ADD11: 5 mul, 2 add);
+// the squared-quadratic device adds one multiplication per squaring, k = floor(log2 n) for the
+// frame's n (its generator, like the others', works once per frame on RG1).
+scene::op_counts device_sample_ops(const scene::device_config& dev, unsigned n);
+// The counts with the frame's device (dev, n); without them, a Fig. 1 device's.
+hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::device_config& dev, unsigned n);
 hardware_counts hardware_ops(const plan& p, const plan_config& c);
 
 // ---- Error measures over covered pixels and the three channels, in 8-bit units ----

@@ -16,6 +16,7 @@
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"
+#include "squared/squared_device.h"
 
 namespace shading::pipeline::sim_detail {
 
@@ -40,10 +41,11 @@ inline double cpu_seconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-// A watchdog far beyond any plan: 12 clocks per job plus 6 per pixel, and the frame load.
+// A watchdog far beyond any plan: 12 clocks per job and per sample (the squared-quadratic device's
+// k + 3 <= 12 clocks per sample), 6 per pixel, and the frame load.
 inline sc_core::sc_time time_limit(const plan& p) {
     uint64_t clocks = 100;
-    for (const auto& j : p.jobs) clocks += 12 + 6ull * std::min(j.len, 64u);
+    for (const auto& j : p.jobs) clocks += 12 + 12 * 4 + 6ull * std::min(j.len, 64u);
     return pipeline_period() * static_cast<double>(clocks);
 }
 
@@ -123,8 +125,7 @@ inline sim_result run_device(const plan& p, const frame_constants& k, const scen
         case scene::specular_device::ua22802:
             return run<a_gen_rom, EVAL>(p, k, dev, c, a_gen_rom::default_config(), o);
         case scene::specular_device::squared:
-            SC_REPORT_ERROR(msg::config, "the block-level SystemC pipeline has no squared device yet");
-            break;
+            return run<squared_device, EVAL>(p, k, dev, c, squared_device::default_config(), o);
     }
     return {};
 }

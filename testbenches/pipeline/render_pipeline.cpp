@@ -339,7 +339,7 @@ int render(const options& o) {
     t = std::chrono::steady_clock::now();
     const scene::shaded_image devref = scene::render_device(r, dev, &sd);
     wall["device_reference"] = seconds_since(t);
-    const hardware_counts hc = hardware_ops(p, cfg);
+    const hardware_counts hc = hardware_ops(p, cfg, dev, k.n);
 
     // The SystemC pipeline: the same plan through the hardware, which must give the golden frame.
     json sim_j = {{"ran", false}};

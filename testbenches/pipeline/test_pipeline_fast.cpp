@@ -26,6 +26,8 @@
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"
+#include "golden/squared_golden.h"
+#include "squared/squared_device.h"
 
 using namespace shading;
 using namespace shading::pipeline;
@@ -229,7 +231,7 @@ void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_
                           : c.set == interp::sample_set::case1 ? interp::sample_set::case2 : interp::sample_set::case1;
     auto bench = std::make_unique<pair_bench<AGen, EVAL>>("tb", p, k, dev, c, gen, fast_set);
     uint64_t clocks = 100;  // a watchdog far beyond the plan (pipeline_sim_run.h's, doubled)
-    for (const auto& j : p.jobs) clocks += 2 * (12 + 6ull * std::min(j.len, 64u));
+    for (const auto& j : p.jobs) clocks += 2 * (12 + 12 * 4 + 6ull * std::min(j.len, 64u));
     sc_core::sc_start(pipeline_period() * static_cast<double>(clocks));
     ASSERT_TRUE(bench->finished());
     bench->chk_b.finish();
@@ -277,7 +279,9 @@ TEST_P(PipelineFastPins, SameAsBlockLevelAtEveryEdge) {
             else run_pair<a_gen_rom, pipe_eval::fd>(pc, a_gen_rom::default_config());
             break;
         case scene::specular_device::squared:
-            FAIL() << "no squared case in this suite yet";
+            if (horner) run_pair<squared_device, pipe_eval::horner>(pc, squared_device::default_config());
+            else run_pair<squared_device, pipe_eval::fd>(pc, squared_device::default_config());
+            break;
     }
 }
 
@@ -288,7 +292,9 @@ INSTANTIATE_TEST_SUITE_P(
                       pair_case{"horner_minimax", scene::specular_device::minimax, pipe_eval::horner, 0, 3},
                       pair_case{"fd_any_m_rom_matched", scene::specular_device::rom_matched, pipe_eval::fd, 0, 4},
                       pair_case{"fd_m4_patent", scene::specular_device::patent, pipe_eval::fd, 4, 5},
-                      pair_case{"fd_m2_minimax", scene::specular_device::minimax, pipe_eval::fd, 2, 6}),
+                      pair_case{"fd_m2_minimax", scene::specular_device::minimax, pipe_eval::fd, 2, 6},
+                      pair_case{"horner_squared", scene::specular_device::squared, pipe_eval::horner, 0, 8},
+                      pair_case{"fd_any_m_squared", scene::specular_device::squared, pipe_eval::fd, 0, 9}),
     [](const ::testing::TestParamInfo<pair_case>& i) { return std::string(i.param.name); });
 
 // The comparison can fail: the fast pipeline built with the other sample set differs at the pins.
@@ -325,7 +331,12 @@ TEST_P(PipelineFastRender, BitExactAgainstTheGoldenFrame) {
     expect_golden_frame(s, p, k, dev, c);
     const hardware_counts hw = hardware_ops(p, c);
     EXPECT_GE(s.clocks, s.frame_load_clocks + hw.clocks);
-    EXPECT_LE(s.clocks, s.frame_load_clocks + 20 + hw.clocks + 10 * p.jobs.size());
+    // The squared-quadratic device adds k + 1 clocks to each of a job's samples (sample_fsm.h).
+    const uint64_t per_job =
+        10 + (dev.device == scene::specular_device::squared
+                  ? 4 * (squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k.n).z)) + 1)
+                  : 0);
+    EXPECT_LE(s.clocks, s.frame_load_clocks + 20 + hw.clocks + per_job * p.jobs.size());
     std::printf("%s%u %s %s fast: %zu pixels, %.2f clocks/pixel, %.0f pixels per CPU second\n", rc.scene, rc.size,
                 scene::device_name(rc.device), evaluator_name(rc.e), p.pixels, double(s.clocks) / p.pixels,
                 s.cpu_seconds > 0 ? p.pixels / s.cpu_seconds : 0.0);
@@ -335,7 +346,8 @@ INSTANTIATE_TEST_SUITE_P(
     Scenes, PipelineFastRender,
     ::testing::Values(render_case{"head", 64, scene::specular_device::patent, evaluator::horner, false},
                       render_case{"head", 64, scene::specular_device::ua22802, evaluator::fd, true},
-                      render_case{"sphere", 48, scene::specular_device::minimax, evaluator::horner, true}),
+                      render_case{"sphere", 48, scene::specular_device::minimax, evaluator::horner, true},
+                      render_case{"head", 64, scene::specular_device::squared, evaluator::fd, true}),
     render_case_name);
 
 }  // namespace

@@ -548,6 +548,23 @@ TEST(PipelineOps, HornerHandSums) {
     EXPECT_EQ(h.total(), (scene::op_counts{51 + 112 + 309, 2, 1, 64 + 112 + 654, 3}));
 }
 
+// The squared-quadratic device adds one MUL_SQ per squaring to each sample: at n = 20 (k = 4) each of
+// the 14 samples and 5 check samples costs 9 mul + 2 add (device) + 3 mul + 6 add; at n = 1 (k = 0)
+// and with a Fig. 1 device the hand sums above.
+TEST(PipelineOps, SquaredDeviceSamplesCountTheirSquarings) {
+    const scene::device_config sq{scene::specular_device::squared, overflow_mode::saturate};
+    EXPECT_EQ(device_sample_ops(sq, 20), (scene::op_counts{9, 0, 0, 2, 0}));
+    EXPECT_EQ(device_sample_ops(sq, 1), (scene::op_counts{5, 0, 0, 2, 0}));
+    EXPECT_EQ(device_sample_ops(sq, 1000), (scene::op_counts{14, 0, 0, 2, 0}));
+    EXPECT_EQ(device_sample_ops(scene::device_config{}, 1000), (scene::op_counts{5, 0, 0, 2, 0}));
+    plan_config c;
+    c.eval = evaluator::horner;
+    const hardware_counts h = hardware_ops(mixed_plan(), c, sq, 20);
+    EXPECT_EQ(h.sample_stage, (scene::op_counts{14 * 12, 0, 0, 14 * 8, 0}));
+    EXPECT_EQ(h.geometry, (scene::op_counts{10 + 1 + 5 * 12, 2, 1, 20 + 4 + 5 * 8, 3}));
+    EXPECT_EQ(hardware_ops(mixed_plan(), c, sq, 1).sample_stage, hardware_ops(mixed_plan(), c).sample_stage);
+}
+
 // FD, case 2, exact /3: cubic unit 18 adders + 2 divisions per channel (5 x 3 = 15 units: 270 add,
 // 30 div), quadratic 15 add, FD set-up 6 intervals x 3 x 5 = 90 add, 37 pixels x 3 x 3 = 333 add;
 // one clock per pixel.

@@ -74,6 +74,7 @@ plan_config config(evaluator e, unsigned m = 4, interp::sample_set set = interp:
 }
 
 const scene::device_config patent{};
+const scene::device_config squared{scene::specular_device::squared, overflow_mode::saturate};
 
 }  // namespace
 
@@ -296,6 +297,32 @@ TEST(PipelineSimClocks, FdOnePixelPerClock) {
     EXPECT_EQ(r.clocks, r.frame_load_clocks + fill_clocks + hw.clocks) << "frame loaded at clock " << r.frame_load_clocks;
 }
 
+// The squared-quadratic device takes k + 2 clocks from its strobe to output 29 (k = 9 - z, its
+// squarings for the frame's n) where a Fig. 1 device takes one: the sample controller raises strobe
+// 17 after its clock low as before and latches at the first falling edge with output 29 high, so
+// each sample costs k + 1 clocks more (sample_fsm.h). One cubic job of 16 pixels: the fill latency
+// of a Fig. 1 device (12 clocks, above) plus 4 (k + 1), then the Horner units' 16 x 6 clocks.
+class PipelineSimSquaredClocks : public ::testing::TestWithParam<std::pair<unsigned, unsigned>> {};
+
+TEST_P(PipelineSimSquaredClocks, EachSampleWaitsKPlusOneClocksMore) {
+    const auto [n, k_squarings] = GetParam();
+    auto k = hand_constants();
+    k.n = n;
+    const plan p = make_hand_plan(16, 1, {job(0, 0, 4, 16, false)});
+    const plan_config c = config(evaluator::horner);
+    const sim_result sq = simulate_frame(p, k, squared, c, traced());
+    EXPECT_EQ(sq.mismatches, 0u);
+    expect_golden_frame(sq, p, k, squared, c);
+    EXPECT_EQ(sq.clocks, sq.frame_load_clocks + fill_clocks + 4 * (k_squarings + 1) + 16 * 6)
+        << "frame loaded at clock " << sq.frame_load_clocks;
+}
+INSTANTIATE_TEST_SUITE_P(N, PipelineSimSquaredClocks,
+                         ::testing::Values(std::pair<unsigned, unsigned>{1, 0}, std::pair<unsigned, unsigned>{20, 4},
+                                           std::pair<unsigned, unsigned>{512, 9}),
+                         [](const ::testing::TestParamInfo<std::pair<unsigned, unsigned>>& i) {
+                             return "n" + std::to_string(i.param.first);
+                         });
+
 // ---- Bad input ----
 
 // Jobs the units cannot take are reported (shading/input) and dropped; the others still come out
@@ -402,7 +429,7 @@ std::vector<render_case> render_cases() {
     std::vector<render_case> v;
     for (auto sc : {std::pair<const char*, unsigned>{"sphere", 32}, {"head", 48}})
         for (auto d : {scene::specular_device::patent, scene::specular_device::minimax, scene::specular_device::rom_matched,
-                       scene::specular_device::ua22802})
+                       scene::specular_device::ua22802, scene::specular_device::squared})
             for (auto e : {evaluator::horner, evaluator::fd}) v.push_back({sc.first, sc.second, d, e});
     return v;
 }
