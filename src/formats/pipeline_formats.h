@@ -9,12 +9,17 @@
 
 namespace shading::pipeline {
 
-// k_d * I_l per channel: an 8-bit code like the device's k_s * I (spec::ksi_fmt), a frame constant.
-inline constexpr qfmt kdi_fmt = spec::ksi_fmt;
-// Diffuse multiplier: k_d*I (8.0) x N.L (Q1.15) -> Q9.15, the 7 low wires dropped (floor) -> Q9.8,
+// k_d * I_l per channel: 255 k_d I as Q8.8 (rounded), a frame constant. Why 8 fraction bits: an
+// 8-bit integer code, like the device's k_s*I pins (spec::ksi_fmt), rounds 255 k_d I by up to half a
+// level, a bias over every lit pixel of the frame: on the head at 512 (k_d = 0.66, 0.50, 0.42:
+// 168.3, 127.5, 107.1) it was the sample stage's whole error against the double reference (NMSE
+// 4.3e-6 of 4.3e-6; 5.9e-7 once exact), more than half of what the hardware image may lose against
+// Phong. Cost: three diffuse multipliers 16 x 16 instead of 8 x 16, three 16-bit registers.
+inline constexpr qfmt kdi_fmt{16, false, 8};
+// Diffuse multiplier: k_d*I (Q8.8) x N.L (Q1.15) -> Q9.23, the 15 low wires dropped (floor) -> Q9.8,
 // in 8-bit image units like the device's out25..27 (spec::out_fmt).
 inline constexpr qfmt diffuse_fmt = spec::out_fmt;
-inline constexpr unsigned diffuse_drop = spec::cos_fmt.frac + kdi_fmt.frac - diffuse_fmt.frac;  // 7
+inline constexpr unsigned diffuse_drop = spec::cos_fmt.frac + kdi_fmt.frac - diffuse_fmt.frac;  // 15
 // Ambient term per channel: 255 * ambient as an unsigned Q8.8 code (rounded), a frame constant.
 inline constexpr qfmt ambient_fmt = interp::sample_fmt;
 // ambient + diffuse: Q8.8 + Q9.8 -> Q10.8, one bit wider, never overflows.

@@ -35,6 +35,11 @@ void check_job(const interval_job& job) {
 
 }  // namespace
 
+uint64_t kdi_code(double kd_times_i) {
+    const double v = std::round(255.0 * std::clamp(kd_times_i, 0.0, 1.0) * (1u << kdi_fmt.frac));
+    return std::min<uint64_t>(static_cast<uint64_t>(v), kdi_fmt.mask());
+}
+
 frame_constants frame_constants_of(const scene::world& s) {
     // Zero lights is refused too: the sample stage reads light 0's N.L and N.H.
     if (s.lights.size() != 1)
@@ -51,7 +56,7 @@ frame_constants frame_constants_of(const scene::world& s) {
     k.n = m.n;
     for (int c = 0; c < 3; ++c) {
         k.ksi[c] = scene::ksi_code(m.k_s[c] * l.intensity[c]);
-        k.kdi[c] = scene::ksi_code(m.k_d[c] * l.intensity[c]);
+        k.kdi[c] = kdi_code(m.k_d[c] * l.intensity[c]);
         // 255 * ambient in Q8.8, rounded to nearest, clamped to the largest code.
         const double a = std::round(255.0 * std::clamp(m.ambient[c], 0.0, 1.0) * (1u << ambient_fmt.frac));
         k.ambient[c] = std::min<uint64_t>(static_cast<uint64_t>(a), ambient_fmt.mask());
@@ -75,7 +80,7 @@ rgb_codes golden_sample(const scene::device_config& dev, const frame_constants& 
     const auto spec = scene::device_specular(dev, k.n, g.cos_nh, k.ksi);  // out_fmt Q9.8
     rgb_codes out{};
     for (int c = 0; c < 3; ++c) {
-        // k_d*I (8.0) x N.L (Q1.15) = Q9.15, diffuse_drop = 7 low wires dropped (floor) -> Q9.8.
+        // k_d*I (Q8.8) x N.L (Q1.15) = Q9.23, diffuse_drop = 15 low wires dropped (floor) -> Q9.8.
         const uint64_t diffuse = (k.kdi[c] * g.cos_nl) >> diffuse_drop;
         const uint64_t sum = k.ambient[c] + diffuse + spec[c];  // Q.8, at most 18 bits: no wrap
         out[c] = std::min(sum, colour_fmt.mask());             // saturated to colour_fmt

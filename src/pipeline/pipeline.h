@@ -38,12 +38,14 @@ using rgb_codes = std::array<uint64_t, 3>;
 struct frame_constants {
     unsigned n = 32;           // the device's in16 (1..1000)
     rgb_codes ksi{};           // k_s * I_l, 8-bit codes (scene::ksi_code)
-    rgb_codes kdi{};           // k_d * I_l, 8-bit codes (scene::ksi_code)
+    rgb_codes kdi{};           // 255 k_d I_l, Q8.8 codes (kdi_code)
     rgb_codes ambient{};       // 255 * ambient, Q8.8 codes
 };
 // The frame constants of a scene. The hardware path shades one material under one light: throws
 // scene::scene_error naming the scene if it has more than one light or its objects' materials differ.
 frame_constants frame_constants_of(const scene::world& s);
+// 255 k_d I as a Q8.8 code (pipeline_formats.h: kdi_fmt): rounded to nearest, k_d I clamped to [0, 1].
+uint64_t kdi_code(double kd_times_i);
 
 // What the geometry side delivers per sample point: in18's Q1.15 codes (scene::cos_code) of N.H and
 // N.L; both 0 where N.L <= 0 (no highlight where the light does not reach, as the references gate it).

@@ -136,7 +136,8 @@ public:
     sc_core::sc_out<sc_dt::sc_uint<1>> deg2{"deg2"};
     sc_core::sc_vector<sc_core::sc_out<cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_out<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
-    sc_core::sc_vector<sc_core::sc_out<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3}, kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_out<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
+    sc_core::sc_vector<sc_core::sc_out<pipe::kdi_t>> kdi{"kdi", 3};
     sc_core::sc_vector<sc_core::sc_out<pipe::sample_t>> amb{"amb", 3};
 
     SC_HAS_PROCESS(geometry_source);
@@ -250,7 +251,8 @@ public:
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
     sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
-    sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3}, kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipe::kdi_t>> kdi{"kdi", 3};
     sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
     sc_core::sc_signal<bool> px_valid{"px_valid"};
     sc_core::sc_signal<coord_t> px_x{"px_x"}, px_y{"px_y"};

@@ -928,7 +928,7 @@ int main(int argc, char* argv[]) {
     app.add_option("--set", o.set, "cubic sample points: case1 (0, 1/4, 1/2, 1) or case2 (0, 1/2, 3/4, 1)")
         ->check(CLI::IsMember({"case1", "case2"}));
     app.add_option("--div3", o.div3, "division by 3 in the coefficient unit")->check(CLI::IsMember({"shift_add", "exact"}));
-    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802 (--sweep: default all of the grid's)");
+    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared (--sweep: default all of the grid's)");
     app.add_option("--mode", o.mode, "overflow mode of the device's ADD11")->check(CLI::IsMember({"saturate", "wrap"}));
     app.add_option("--depth-step", o.pc.depth_step, "depth jump (world units) that ends a segment of a raster line")
         ->check(CLI::PositiveNumber);

@@ -89,7 +89,7 @@ frame_constants random_constants(uint64_t seed) {
     k.n = static_cast<unsigned>(r.range(1, 1000));
     for (int c = 0; c < 3; ++c) {
         k.ksi[c] = r.range(0, 255);
-        k.kdi[c] = r.range(0, 255);
+        k.kdi[c] = r.range(0, pipeline::kdi_fmt.mask());
         k.ambient[c] = r.range(0, 255 * 256);
     }
     return k;
@@ -160,7 +160,8 @@ public:
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
     sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
-    sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3}, kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipe::kdi_t>> kdi{"kdi", 3};
     sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
     outs ob, of;
 

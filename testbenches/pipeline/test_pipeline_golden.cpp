@@ -19,9 +19,11 @@ using namespace shading::pipeline;
 
 namespace {
 
-// Frame constants with no specular term (k_s*I = 0, so the device adds 0) and k_d*I = 128:
-// 128 x cos_nl >> 7 = cos_nl, so a sample's code is ambient + cos_nl, chosen freely up to 0x8000.
+// Frame constants with no specular term (k_s*I = 0, so the device adds 0) and k_d*I = 128.0
+// (Q8.8 0x8000): 0x8000 x cos_nl >> 15 = cos_nl, so a sample's code is ambient + cos_nl, chosen
+// freely up to 0x8000. kdi in whole levels (times 256 here).
 frame_constants diffuse_only(uint64_t kdi = 128, uint64_t ambient = 0) {
+    kdi *= 256;
     frame_constants k;
     k.n = 32;
     k.ksi = {0, 0, 0};
@@ -55,22 +57,31 @@ std::vector<scene::device_config> all_devices() {
 
 // ---- Sample stage ----
 
-// k_d*I = 153 (0.6 x 255) at N.L = 1 (0x8000): 153 x 32768 >> 7 = 153 x 256, exactly 153.0 levels.
+// k_d*I = 153.0 (0.6 x 255) at N.L = 1 (0x8000): 153 x 256 x 32768 >> 15 = 153 x 256, exactly 153.0
+// levels.
 TEST(PipelineSample, DiffuseHandWorked) {
     const frame_constants k = diffuse_only(153);
     EXPECT_EQ(golden_sample(patent, k, diffuse_sample(0x8000)), (rgb_codes{153 * 256, 153 * 256, 153 * 256}));
     // 200 x 0.5: 200 x 16384 >> 7 = 25600 = 100.0 levels.
     EXPECT_EQ(golden_sample(patent, diffuse_only(200), diffuse_sample(0x4000))[1], 25600u);
-    // Floor: 255 x 32767 = 8355585, / 128 = 65278.0078 -> 65278.
+    // Floor: 255 x 256 x 32767 / 32768 = 255 x 32767 / 128 = 65278.0078 -> 65278.
     EXPECT_EQ(golden_sample(patent, diffuse_only(255), diffuse_sample(0x7FFF))[0], 65278u);
-    // 3 x 1 / 128 < 1 LSB: floored to 0, the ambient alone remains.
+    // 3 x 256 x 1 / 32768 < 1 LSB: floored to 0, the ambient alone remains.
     EXPECT_EQ(golden_sample(patent, diffuse_only(3, 77), diffuse_sample(1))[2], 77u);
+    // The fraction of k_d*I counts: 127.5 levels (0x7F80) at N.L = 1 is 0x7F80 = 127.5 levels,
+    // where an 8-bit code would have been 127 or 128.
+    frame_constants f = diffuse_only();
+    f.kdi = {0x7F80, 0x7F80, 0x7F80};
+    EXPECT_EQ(golden_sample(patent, f, diffuse_sample(0x8000))[0], 0x7F80u);
+    // 100.25 (0x6440) x 0.75 (0x6000) = 75.1875 levels = 19248 (0x4B30), exact.
+    f.kdi = {0x6440, 0, 0};
+    EXPECT_EQ(golden_sample(patent, f, diffuse_sample(0x6000))[0], 0x4B30u);
 }
 
 // Per channel: the three channels' constants are independent.
 TEST(PipelineSample, ChannelsIndependent) {
     frame_constants k = diffuse_only();
-    k.kdi = {128, 64, 0};
+    k.kdi = {128 * 256, 64 * 256, 0};
     k.ambient = {1, 2, 3};
     EXPECT_EQ(golden_sample(patent, k, diffuse_sample(0x1000)), (rgb_codes{0x1001, 0x802, 3}));
 }
@@ -137,14 +148,19 @@ scene::world one_light_world() {
 }
 }  // namespace
 
-// ksi = round(255 k_s I), kdi = round(255 k_d I), ambient = round(255 x 256 x ambient).
+// ksi = round(255 k_s I), kdi = round(255 x 256 x k_d I), ambient = round(255 x 256 x ambient).
 TEST(PipelineSample, FrameConstantsHandWorked) {
     const frame_constants k = frame_constants_of(one_light_world());
     EXPECT_EQ(k.n, 77u);
     // k_s I = 0.4, 0.35, 1.0: 102, 89.25 -> 89, 255.
     EXPECT_EQ(k.ksi, (rgb_codes{102, 89, 255}));
-    // k_d I = 0.6, 0.15, 0: 153, 38.25 -> 38, 0.
-    EXPECT_EQ(k.kdi, (rgb_codes{153, 38, 0}));
+    // k_d I = 0.6, 0.15, 0: 153 x 256 = 39168, 38.25 x 256 = 9792 (exact on Q8.8), 0.
+    EXPECT_EQ(k.kdi, (rgb_codes{39168, 9792, 0}));
+    // Rounded to the nearest Q8.8 code: 0.5 x 255 x 256 = 32640; 1/3 x 255 x 256 = 21760; clamped.
+    EXPECT_EQ(kdi_code(0.5), 32640u);
+    EXPECT_EQ(kdi_code(1.0 / 3.0), 21760u);
+    EXPECT_EQ(kdi_code(1.7), 65280u);
+    EXPECT_EQ(kdi_code(-0.2), 0u);
     // 0.05 x 255 x 256 = 3264, 0.1 -> 6528, 1.0 -> 65280.
     EXPECT_EQ(k.ambient, (rgb_codes{3264, 6528, 65280}));
 }
@@ -390,14 +406,14 @@ TEST(PipelineFrame, GoldenFrameHandBuiltPlan) {
 // Per-pixel shading through the same device against the scene's double-precision device reference
 // (render_device): the specular terms are the same codes, so per channel the two differ only by the
 // sample stage's quantisation, bounded by
-//   |kdi - 255 k_d I| x N.L   (k_d*I rounded to an 8-bit code; N.L <= 1)
-// + kdi x 2^-16             (N.L rounded to Q1.15: at most half an LSB, 2^-16)
+//   |kdi / 256 - 255 k_d I| x N.L   (k_d*I rounded to Q8.8; N.L <= 1)
+// + kdi / 256 x 2^-16             (N.L rounded to Q1.15: at most half an LSB, 2^-16)
 // + 1/256                   (the diffuse product floored to Q.8)
 // + |ambient code / 256 - 255 ambient|  (the ambient rounded to Q8.8).
 // The reference is clamped to 255 and golden_sample saturates at 255.996: both compared after
 // min(., 255) (a clamp can only shrink a difference).
 TEST(PipelineFrame, PerPixelFrameAgainstDeviceReference) {
-    for (double kd : {0.6, 0.5}) {  // 0.6 x 255 = 153 exactly; 0.5 x 255 = 127.5 rounds to 128
+    for (double kd : {0.6, 0.5, 0.66}) {  // 153 and 127.5 exact on Q8.8; 168.3 rounds to 168.30078
         scene::world w = scene::builtin_scene("sphere", SHADING_SOURCE_DIR, 32, 32);
         for (auto& o : w.objects) o.mat.k_d = {kd, kd, kd};
         const scene::rasterised r = scene::rasterise(w);
@@ -412,8 +428,8 @@ TEST(PipelineFrame, PerPixelFrameAgainstDeviceReference) {
             double worst = 0.0;
             for (int c = 0; c < 3; ++c) {
                 const double kdi_real = 255.0 * m.k_d[c] * l.intensity[c];
-                const double bound = std::abs(static_cast<double>(k.kdi[c]) - kdi_real) +
-                                     static_cast<double>(k.kdi[c]) / 65536.0 + 1.0 / 256.0 +
+                const double kdi = static_cast<double>(k.kdi[c]) / 256.0;
+                const double bound = std::abs(kdi - kdi_real) + kdi / 65536.0 + 1.0 / 256.0 +
                                      std::abs(static_cast<double>(k.ambient[c]) / 256.0 - 255.0 * m.ambient[c]) + 1e-9;
                 for (std::size_t i = 0; i < f.px.size(); ++i) {
                     if (!f.covered[i]) {
@@ -430,12 +446,10 @@ TEST(PipelineFrame, PerPixelFrameAgainstDeviceReference) {
             }
             EXPECT_EQ(n, 3 * r.covered_pixels());
             EXPECT_GT(r.covered_pixels(), 200u);  // the sphere is a disc about 19 pixels across
-            // The bound is not loose: with k_d*I = 127.5 coded as 128 the error reaches most of 0.5.
-            if (kd == 0.5) {
-                EXPECT_GT(worst, 0.4) << scene::device_name(dev.device);
-            } else {
-                EXPECT_LT(worst, 0.01) << scene::device_name(dev.device);
-            }
+            // With k_d*I on Q8.8 every difference stays within the floors: under 0.01 level, where an
+            // 8-bit code (127.5 coded as 128) reached most of 0.5.
+            EXPECT_LT(worst, 0.01) << scene::device_name(dev.device) << " k_d " << kd;
+            EXPECT_GT(worst, 1.0 / 512.0) << "the floors of Q.8 do show: the measure can see them";
         }
     }
 }

@@ -29,7 +29,7 @@ frame_constants hand_constants() {
     frame_constants k;
     k.n = 32;
     k.ksi = {200, 180, 90};
-    k.kdi = {150, 100, 60};
+    k.kdi = {150 * 256, 100 * 256 + 128, 60 * 256 + 77};  // Q8.8: 150.0, 100.5, 60.3
     k.ambient = {10 * 256, 8 * 256 + 77, 12 * 256 + 3};
     return k;
 }
@@ -204,7 +204,7 @@ TEST_P(PipelineSimSaturate, SaturatingSamplesAndClampedPixels) {
     frame_constants k;
     k.n = 4;
     k.ksi = {255, 255, 255};
-    k.kdi = {255, 255, 40};
+    k.kdi = {255 * 256, 255 * 256, 40 * 256};
     k.ambient = {200 * 256, 10 * 256, 0};
     interval_job bright = job(0, 0, 4, 16, false);
     bright.s = {sample_geometry{32768, 32768}, sample_geometry{0, 0}, sample_geometry{32768, 32768}, sample_geometry{0, 0}};

@@ -221,7 +221,7 @@ TEST(VcdWriter, SameFileAsSystemCOnThePipeline) {
     pipeline::frame_constants k;
     k.n = 32;
     k.ksi = {200, 180, 90};
-    k.kdi = {150, 100, 60};
+    k.kdi = {150 * 256, 100 * 256, 60 * 256};  // Q8.8
     k.ambient = {10 * 256, 8 * 256 + 77, 12 * 256 + 3};
     pipeline::plan_config c;
     c.eval = pipeline::evaluator::horner;
