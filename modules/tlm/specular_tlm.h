@@ -485,9 +485,11 @@ private:
                 shaded_[i] = generation_;
             }
             if constexpr (variant::clocked) {
+                // Every pixel ends a fixed time after its strobe's falling clock edge, so each one
+                // after the first starts at the same phase and takes the same time as the second.
                 const sc_core::sc_time now = sc_core::sc_time_stamp();
-                sc_core::sc_time t = now + delay;
-                for (std::size_t i = 0; i < count; ++i) t = pixel_end(t);
+                sc_core::sc_time t = pixel_end(now + delay);
+                if (count > 1) t += (pixel_end(t) - t) * static_cast<double>(count - 1);
                 delay = t - now;
             } else {
                 delay += t_.pixel_time() * static_cast<double>(count);
