@@ -26,6 +26,8 @@ trap 'rm -rf "$work"' EXIT
     printf 'ua60553_%s\tua60553_tb --generator %s --mode MODE\n' "$gen" "$gen"
   done
   printf 'ua22802\tua22802_tb --mode MODE\n'
+  printf 'squared\tsquared_tb --mode MODE\n'
+  printf 'squared_fast\tsquared_tb --abstraction fast --mode MODE\n'
   printf 'interp_fd_m6\tinterp_fd_tb --m 6\n'
   printf 'interp_line\tinterp_line_tb --case CASE --div3 DIV\n'  # chunks: both sample sets x both /3
   printf 'interp_horner\tinterp_horner_tb\n'

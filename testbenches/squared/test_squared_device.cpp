@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +17,8 @@
 #include "core/report_ids.h"
 #include "core/trace.h"
 #include "golden/squared_golden.h"
+#include "scene/scene.h"
+#include "specular/specular_view.h"
 #include "squared/squared_device.h"
 #include "squared_script.h"
 
@@ -300,4 +305,70 @@ TEST(SquaredChecker, AMonitorSampleOffTheGoldenModelIsCaught) {
     const auto& s = bench.samples[0];
     EXPECT_EQ(s.out, golden_squared(20, s.cos, s.ksi, overflow_mode::saturate).out);
     EXPECT_NE(s.out, golden_squared(21, s.cos, s.ksi, overflow_mode::saturate).out);
+}
+
+namespace {
+
+// The bench squared_tb's default run builds: a sphere's raster line of 48 pixels at n = 10, 100 and
+// 1000 (Fig. 3 with 13 clocks per pixel), traced into `stem`.vcd.
+void trace_default_run(const std::string& stem) {
+    std::vector<uint32_t> line;
+    for (double c : scene::sphere_line_cos(0.2, 48, 0.3, 0.4, 1.0)) line.push_back(scene::cos_code(c));
+    std::vector<surface> s;
+    for (unsigned n : {10u, 100u, 1000u}) s.push_back({n, {255, 180, 60}, line});
+    specular_bench<squared_device> bench("tb", s, squared_timing(), [](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        datapath_nets r{};
+        r.out = golden_squared(n, c, k, overflow_mode::saturate).out;
+        return r;
+    });
+    vcd_file vcd(stem);
+    vcd.trace(bench);
+    sc_core::sc_start(bench.stim.duration() * 1.01 + sc_time(1, sc_core::SC_US));
+    EXPECT_TRUE(bench.finished());
+    EXPECT_EQ(bench.checker.samples(), 3u * 48u);
+    EXPECT_EQ(bench.checker.mismatches(), 0u);
+}
+
+}  // namespace
+
+TEST(SquaredTrace, VcdDeclaresTheDeviceNetsAndTheViewShowsOnlyThose) {
+    const std::string stem = ::testing::TempDir() + "squared_trace";
+    trace_default_run(stem);
+    const auto declared = vcd_declared(stem + ".vcd");
+    for (const char* net : {"tb.clk", "tb.ctl17", "tb.out29_valid", "tb.dut.rg1_n[9:0]", "tb.dut.z_lead[3:0]",
+                            "tb.dut.a_coef[11:0]", "tb.dut.a_gen.mul_e_f_x_not_f[17:0]", "tb.dut.mul10_a_x_diff[19:0]",
+                            "tb.dut.add11_q[18:0]", "tb.dut.sq_brdf[18:0]", "tb.dut.sq.mx_sq_sel[1:0]",
+                            "tb.dut.sq.mul_sq_square[18:0]", "tb.dut.sq_done", "tb.out25_r[16:0]"})
+        EXPECT_EQ(declared.count(std::string("SystemC.") + net), 1u) << net;
+    for (const auto& n : declared) EXPECT_EQ(n.find(' '), std::string::npos) << n;
+    const auto shown = gtkw_listed(source_path("traces/squared.gtkw"));
+    EXPECT_GE(shown.size(), 35u);
+    for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+}
+
+TEST(SquaredTrace, GtkwaveViewReadsAtFirstSight) {
+    // traces/squared.gtkw against the VCD of squared_tb's default run: dump file, marker inside the
+    // window and off every edge, every bus a number in its format from src/formats.
+    const std::string stem = ::testing::TempDir() + "squared_view";
+    trace_default_run(stem);
+    view_formats f = specular_view_formats();
+    f.erase("tb.dut.mul10_a_x_diff");
+    f.erase("tb.dut.add11_brdf");
+    f["tb.dut.mul10_a_x_diff"] = squared::mul10_fmt;
+    f["tb.in16_n"] = f["tb.dut.rg1_n"] = squared::n_fmt;
+    f["tb.dut.z_lead"] = qfmt{squared::z_width, false, 0};
+    f["tb.dut.a_gen.bsh1_mant"] = squared::mant_fmt;
+    f["tb.dut.a_gen.f_frac"] = f["tb.dut.a_gen.inv_f_not_f"] = squared::f_fmt;
+    f["tb.dut.a_gen.mul_e_f_x_not_f"] = squared::e_fmt;
+    f["tb.dut.a_gen.bsh2_e_shifted"] = qfmt{squared::esh_width, false, squared::esh_frac};
+    f["tb.dut.a_gen.bend"] = squared::bend_fmt;
+    f["tb.dut.a_gen.f_aligned"] = f["tb.dut.a_coef"] = squared::a_fmt;
+    f["tb.dut.cos_aligned"] = f["tb.dut.add11_q"] = f["tb.dut.sq.mx_sq_next"] = f["tb.dut.sq_brdf"] =
+        f["tb.dut.sq.mul_sq_square"] = squared::q_fmt;
+    f["tb.dut.brdf_q15"] = spec::brdf_fmt;
+    f["tb.dut.sq.mx_sq_sel"] = qfmt{2, false, 0};
+    const auto problems = view_problems(source_path("traces/squared.gtkw"), stem + ".vcd", "squared", f,
+                                        {"tb.ctl17", "tb.clk", "tb.out29_valid", "tb.out25_r", "tb.out26_g",
+                                         "tb.out27_b", "tb.dut.sq_brdf", "tb.dut.sq.mx_sq_sel"});
+    EXPECT_TRUE(problems.empty()) << joined(problems);
 }
