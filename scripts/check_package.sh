@@ -28,7 +28,8 @@ for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVe
          include/shading/ua60553/ua60553.h include/shading/golden/specular_golden.h \
          include/shading/formats/fixed_point.h include/shading/ua22802_a_rom.h \
          include/shading/tlm/tlm_target_base.h include/shading/tlm/specular_tlm.h \
-         include/shading/squared/squared_device.h include/shading/squared/squaring_stage.h \
+         include/shading/squared/squared.h include/shading/squared/squared_device.h \
+         include/shading/squared/squared_fast.h include/shading/squared/squaring_stage.h \
          include/shading/blocks/lzc.h include/shading/blocks/barrel_shifter.h include/shading/blocks/and_gate.h \
          include/shading/monitors/load_checker.h include/shading/monitors/phase_checker.h \
          include/shading/formats/squared_formats.h include/shading/formats/sqmul_formats.h \

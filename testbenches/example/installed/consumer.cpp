@@ -1,7 +1,7 @@
 // A consumer of the installed package: binds a specular device's pins to its own nets, shades a few
 // pixels through Fig. 3's strobes, reads R, G, B at output 29's rising edge and compares every word
-// with the device's golden model. Two platforms in one elaboration: device_ua60553, and the
-// squared-quadratic device (ours), the same pins plus its squaring stage's clock, which the
+// with the device's golden model. Two platforms in one elaboration: device_ua60553, and
+// device_squared (ours), the same pins plus its squaring stage's clock, which the
 // platform's 20 ns clock drives. Built against the installed tree only (CMakeLists.txt here);
 // exits 0 only if all of it matched.
 #include <array>
@@ -13,7 +13,7 @@
 
 #include "golden/specular_golden.h"   // shading::golden
 #include "golden/squared_golden.h"    // shading::golden
-#include "squared/squared_device.h"   // shading::modules
+#include "squared/squared.h"          // shading::modules
 #include "ua60553/ua60553.h"          // shading::modules
 
 using sc_core::SC_NS;
@@ -22,7 +22,7 @@ using golden_fn = std::array<uint64_t, 3> (*)(unsigned n, unsigned cos, const st
 
 template <class Device>
 struct platform : sc_core::sc_module {
-    static constexpr bool clocked = std::is_same_v<Device, shading::squared_device>;
+    static constexpr bool clocked = std::is_same_v<Device, shading::device_squared>;
 
     sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
     sc_core::sc_signal<sc_dt::sc_uint<10>> n{"n"};
@@ -102,7 +102,7 @@ int sc_main(int, char*[]) {
     platform<shading::device_ua60553> top("top", [](unsigned n, unsigned c, const std::array<uint64_t, 3>& k) {
         return shading::golden_ua60553(n, c, k, overflow_mode::saturate).out;
     });
-    platform<shading::squared_device> top_sq("top_squared", [](unsigned n, unsigned c, const std::array<uint64_t, 3>& k) {
+    platform<shading::device_squared> top_sq("top_squared", [](unsigned n, unsigned c, const std::array<uint64_t, 3>& k) {
         return shading::golden_squared(n, c, k, overflow_mode::saturate).out;
     });
     sc_core::sc_start(20, sc_core::SC_US);
