@@ -349,6 +349,52 @@ TEST(SpecularTlmTiming, SquaredLooselyTimedDelayFollowsTheClockPhase) {
     ASSERT_TRUE(run_to_completion(b, limit));
 }
 
+// Another clock and a long strobe: a 10 ns clock (falling edges at 5, 15, 25 ns, ...) and strobe
+// 17 low 40 ns, so for k <= 2 output 29 follows strobe 17's rise, for k >= 3 the squaring stage's
+// done. By hand: KSI_R and N = 1 (k = 0) from 0 ns, then COS from 16 ns: set-up to 18.5 ns, strobe
+// 17 falls at 25 ns, done rises at 40 ns, strobe 17 at 65 ns, output 29 at 65.1 ns: 49.1 ns. N = 8
+// (k = 3), then COS from 73.1 ns: falls at 85 ns, taken at 90 ns, done at 130 ns (after the strobe's
+// 125 ns), output 29 at 130.1 ns: 57 ns. Then random n and pixels, both modes equal in data and time.
+struct squared_10ns_long_strobe : specular_tlm_squared {
+    static tlm_strobe_timing timing() {
+        tlm_strobe_timing t;
+        t.clk_period = sc_time(10, SC_NS);
+        t.t_low = sc_time(40, SC_NS);
+        return t;
+    }
+    squared_10ns_long_strobe(const sc_core::sc_module_name& name, tlm_timing t)
+        : specular_tlm_squared(name, t, {}, timing()) {}
+};
+TEST(SpecularTlmTiming, SquaredOtherClockAndLongStrobe) {
+    tlm_pair_bench<squared_10ns_long_strobe> b("b", [](tlm_initiator& lt, tlm_initiator& pin) {
+        // Writes through both; the pin-accurate access's elapsed time (= the LT one's delay).
+        auto both_write = [&](uint64_t addr, uint32_t v) {
+            EXPECT_EQ(lt.write32(addr, v), tlm::TLM_OK_RESPONSE);
+            EXPECT_EQ(pin.write32(addr, v), tlm::TLM_OK_RESPONSE);
+            const sc_time elapsed = pin.last_elapsed;
+            EXPECT_EQ(elapsed, lt.last_delay) << "access at 0x" << std::hex << addr;
+            for (uint64_t r = m::RESULT_R; r <= m::RESULT_B; r += 4)
+                if (addr == m::COS) EXPECT_EQ(pin.read32(r), lt.read32(r));
+            return elapsed;
+        };
+        both_write(m::KSI_R, 200);
+        both_write(m::N, 1);
+        EXPECT_EQ(both_write(m::COS, 0x7000), sc_time(49.1, SC_NS));
+        both_write(m::N, 8);
+        EXPECT_EQ(both_write(m::COS, 0x7000), sc_time(57, SC_NS));
+        std::mt19937_64 rng(10);
+        for (int p = 0; p < 60; ++p) {
+            if (p % 4 == 0) both_write(m::N, static_cast<uint32_t>(rng() % 1000 + 1));
+            both_write(m::COS, static_cast<uint32_t>(rng() % (spec::cos_one + 1)));
+        }
+    });
+    ASSERT_TRUE(run_to_completion(b, limit));
+    for (const auto* d : {b.pin.dev_sat.get(), b.pin.dev_wrap.get()}) {
+        EXPECT_EQ(d->chk_load.violations(), 0u);
+        EXPECT_EQ(d->chk_clk.violations(), 0u);
+    }
+}
+
 // A whole raster line (1024 pixels) in one burst, each mode against the golden model and the
 // hand-worked time, then the same results by debug transport. `total` is the burst's time by hand:
 // UA 60553 20 ns a pixel; squared (n = 300: k = 8) the first pixel from 0 ns (loosely timed: no
