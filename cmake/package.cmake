@@ -1,12 +1,15 @@
-# The installed package (issue 9): `cmake --install <build> --prefix <p>` gives
+# The installed package: `cmake --install <build> --prefix <p>` gives
 #   <p>/include/shading/...          the include root, as modules/ and src/ are in the tree
-#                                    ("ua60553/ua60553.h", "formats/x.h", "golden/x.h")
-#   <p>/lib/libshading_golden.a      the golden models (no SystemC)
+#                                    ("ua60553/ua60553.h", "squared/squared_device.h", "formats/x.h",
+#                                    "golden/x.h"): every device, block, monitor and TLM wrapper
+#   <p>/lib/libshading_golden.a      the golden models (no SystemC): UA 60553, its tuned generators,
+#                                    UA 22802, the squared-quadratic device, square-and-multiply
 #   <p>/lib/cmake/shading/           find_package(shading CONFIG): shading::modules, ::golden, ...
 #   <p>/lib/pkgconfig/shading.pc     pkg-config: Requires: systemc
 #   <p>/lib/libshading_scene.a, libshading_pipeline.a, shading-scene.pc   when built (tinyobjloader,
-#                                    libpng): the scenes, rasteriser and seed 004's golden pipeline,
-#                                    shading::scene and shading::pipeline (export set shadingSceneTargets)
+#                                    libpng): the scenes, rasteriser and the interpolation paper's
+#                                    golden pipeline, shading::scene and shading::pipeline (export
+#                                    set shadingSceneTargets)
 #   <p>/share/shading/data/head/     the head scan with its attribution (CC BY 3.0), for the scenes
 # Every installed path is relative to <p>, so the tree can be moved. scripts/check_package.sh
 # (ctest package.install_and_consume) installs into a temporary prefix and builds a consumer.
@@ -26,14 +29,14 @@ set_target_properties(shading_golden PROPERTIES EXPORT_NAME golden POSITION_INDE
 set_target_properties(shading_modules PROPERTIES EXPORT_NAME modules)
 set_target_properties(shading_ua22802 PROPERTIES EXPORT_NAME ua22802)
 set(SHADING_EXPORTED shading_formats shading_golden shading_modules shading_ua22802)
-# --- TLM-2.0 wrappers (issue 9, modules/tlm): exported as shading::tlm once the target exists.
+# --- TLM-2.0 wrappers (modules/tlm): exported as shading::tlm once the target exists.
 # Its headers are under modules/ and installed below with the rest; its include directories must be
 # wrapped in $<BUILD_INTERFACE:...> (or come from shading_modules) for the export to succeed.
 if(TARGET shading_tlm)
   set_target_properties(shading_tlm PROPERTIES EXPORT_NAME tlm)
   list(APPEND SHADING_EXPORTED shading_tlm)
 endif()
-# --- The scene library and seed 004's golden pipeline (src/scene, src/pipeline), when their Debian
+# --- The scene library and the interpolation paper's golden pipeline (src/scene, src/pipeline), when their Debian
 # packages were found: shading::scene, shading::pipeline, in their own export set so that a consumer
 # without tinyobjloader or libpng still gets the rest. Their public headers include GLM.
 set(SHADING_SCENE_EXPORTED)
@@ -64,7 +67,9 @@ install(TARGETS ${SHADING_EXPORTED} EXPORT shadingTargets
         INCLUDES DESTINATION ${SHADING_INSTALL_INCLUDEDIR})
 
 # Public headers: modules/** (every block, monitor, device and wrapper), the number formats, the
-# golden models and references, scene.h (compiled into shading_golden) and the generated ROM.
+# golden models and references, scene.h (compiled into shading_golden) and the generated ROM. By
+# directory, so a new device's headers (modules/squared, formats/squared_formats.h, ...) come along;
+# scripts/check_package.sh checks a list of them.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${SHADING_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/formats DESTINATION ${SHADING_INSTALL_INCLUDEDIR}

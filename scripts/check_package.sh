@@ -3,8 +3,9 @@
 #   1. cmake --install <build> into a temporary prefix; no absolute source or build path, nor the
 #      prefix itself, may appear in it; then the tree is moved elsewhere (it must be relocatable);
 #   2. configure, build and run testbenches/example/installed against the moved tree with
-#      find_package(shading) (CMAKE_PREFIX_PATH=<prefix> only): the pin-level consumer and the TLM
-#      virtual platform, which reads the installed head scan through SHADING_DATA_DIR;
+#      find_package(shading) (CMAKE_PREFIX_PATH=<prefix> only): the pin-level consumer (UA 60553 and
+#      the squared-quadratic device) and the TLM virtual platform, which reads the installed head
+#      scan through SHADING_DATA_DIR;
 #   3. build and run one file with `pkg-config --cflags --libs shading` (PKG_CONFIG_PATH=<prefix>/...)
 #      and check shading-scene.pc's libraries and data directory.
 # Usage: scripts/check_package.sh [build-dir]   (default: build). Everything temporary is removed.
@@ -26,9 +27,22 @@ for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVe
          lib/libshading_scene.a lib/libshading_pipeline.a \
          include/shading/ua60553/ua60553.h include/shading/golden/specular_golden.h \
          include/shading/formats/fixed_point.h include/shading/ua22802_a_rom.h \
-         include/shading/tlm/tlm_target_base.h include/shading/scene/world.h include/shading/pipeline/pipeline.h \
+         include/shading/tlm/tlm_target_base.h include/shading/tlm/specular_tlm.h \
+         include/shading/squared/squared.h include/shading/squared/squared_device.h \
+         include/shading/squared/squared_fast.h include/shading/squared/squaring_stage.h \
+         include/shading/blocks/lzc.h include/shading/blocks/barrel_shifter.h include/shading/blocks/and_gate.h \
+         include/shading/monitors/load_checker.h include/shading/monitors/phase_checker.h \
+         include/shading/formats/squared_formats.h include/shading/formats/sqmul_formats.h \
+         include/shading/golden/squared_golden.h include/shading/golden/sqmul_golden.h \
+         include/shading/scene/world.h include/shading/pipeline/pipeline.h \
          share/shading/data/head/lee_perry_smith_head.obj share/shading/data/head/README.md; do
   [ -e "$stage/$f" ] || { echo "check_package: $f not installed" >&2; exit 1; }
+done
+# Every golden model is in libshading_golden (its sources are globbed at configure time).
+golden_symbols="$(nm -C "$stage/lib/libshading_golden.a")"
+for sym in golden_ua60553 golden_ua22802 golden_ua60553_tuned golden_squared golden_sqmul; do
+  grep -qF " T shading::$sym(" <<<"$golden_symbols" \
+    || { echo "check_package: libshading_golden.a does not define shading::$sym" >&2; exit 1; }
 done
 # The head scan's licence (CC BY 3.0) travels with it.
 grep -q "Lee Perry-Smith" "$stage/share/shading/data/head/README.md" \

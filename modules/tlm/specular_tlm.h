@@ -1,13 +1,16 @@
-// TLM-2.0 wrapper of the UA 60553 device family (specular/specular_device.h with any generator of
-// `a`): a tlm_utils::simple_target_socket `socket` with b_transport and transport_dbg over the
-// register map below, in one of two timing modes chosen at construction:
+// TLM-2.0 wrapper of the specular devices (UA 60553's pins): the UA 60553 family
+// (specular/specular_device.h with any generator of `a`) and the squared-quadratic device (ours,
+// squared/squared_device.h, with a `clk` pin): a tlm_utils::simple_target_socket `socket` with
+// b_transport and transport_dbg over the register map below, in one of two timing modes chosen at
+// construction:
 //   pin_accurate   - the wrapper owns the signal-level devices and drives UA 60553, Fig. 3's
 //                    strobes from the b_transport caller's thread with wait(): an access costs the
 //                    model's real time and the waveform shows it;
 //   loosely_timed  - the golden model (src/golden) computes the result; the access is annotated
 //                    with the same delay (added to b_transport's delay argument, no wait).
-// Both give bit-identical data (testbenches/tlm). One class template per device, as the devices
-// are (AGen is a_gen_linear, a_gen_rom or a_gen_tuned); aliases at the end of the file.
+// Both give bit-identical data (testbenches/tlm). One class template, specular_tlm<V>, whose V
+// names the device as tlm_variant<V> describes it (a_gen_linear, a_gen_rom, a_gen_tuned: UA 60553's
+// Fig. 1 with that generator; squared_device); aliases at the end of the file.
 //
 // Register map (byte addresses; registers are 32-bit words in host byte order, little-endian on
 // the supported hosts; reserved bits read 0, writes to them are ignored):
@@ -25,7 +28,8 @@
 //                      CONTROL.CLEAR_ERR. The log is the wrapper's, not the device's state.
 //   0x024 CONTROL  RW  bit 0 OVF: 0 saturate, 1 wrap (ADD11's overflow mode; a change clears
 //                      READY and invalidates the result window); bits 5:4 VARIANT, read-only
-//                      (0 UA 60553, 1 UA 22802 ROM, 2 tuned UA 60553); bit 8 TIMING, read-only
+//                      (0 UA 60553, 1 UA 22802 ROM, 2 tuned UA 60553, 3 squared-quadratic);
+//                      bit 8 TIMING, read-only
 //                      (0 loosely timed, 1 pin-accurate); bit 31 CLEAR_ERR, write 1 to clear
 //                      STATUS bits 5:1, reads 0.
 //   0x1000-0x17FF COS_BLOCK    RW  1024 cos codes, 16 bits each (pixel i at 0x1000 + 2i). A write
@@ -46,7 +50,14 @@
 //   read of RESULT_* or RESULT_BLOCK before it is ready -> TLM_GENERIC_ERROR_RESPONSE
 // TLM_IGNORE_COMMAND completes with TLM_OK_RESPONSE and does nothing.
 // Access time (both modes): a write of N or KSI_* costs one load pulse pair, 2 x load_pulse
-// (8 ns by default); a COS write t_high + t_low (20 ns) per pixel, as Fig. 3's strobe 17;
+// (8 ns by default); each pixel of a COS write or a COS_BLOCK burst one period of strobe 17:
+//   UA 60553 family  t_high + t_low (20 ns), as Fig. 3;
+//   squared device   until output 29 rises: cos is set up t_high / 2, strobe 17 falls at the next
+//                    falling edge of the device clock (`clk`, clk_period, rising at 0, P, 2P, ...),
+//                    the squaring stage takes it at the next rising edge and output 29 rises
+//                    k + 1 clocks later (k = 9 - leading zeros of n) plus the AND gate's delay; so
+//                    it depends on n and, for a burst's first pixel, on the clock's phase at the
+//                    access's local time (back-to-back pixels take (k + 2) clocks each);
 // everything else 0. In pin-accurate mode an access that drives strobes first waits the incoming
 // delay (and returns it as 0); the others return at once with the delay untouched.
 // Debug transport: reads of any byte range within one region (registers 0x000-0x027, COS_BLOCK,
@@ -57,6 +68,7 @@
 #include <tlm>
 #include <tlm_utils/simple_target_socket.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -64,10 +76,13 @@
 #include <systemc>
 
 #include "formats/specular_formats.h"
+#include "formats/squared_formats.h"
 #include "golden/specular_golden.h"
+#include "golden/squared_golden.h"
 #include "golden/ua22802_golden.h"
 #include "golden/ua60553_tuned_golden.h"
 #include "specular/specular_device.h"
+#include "squared/squared_device.h"
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "tlm/tlm_target_base.h"
@@ -92,39 +107,92 @@ inline constexpr uint32_t CONTROL_OVF = 1u << 0, CONTROL_VARIANT_SHIFT = 4, CONT
                           CONTROL_TIMING = 1u << 8, CONTROL_CLEAR_ERR = 1u << 31;
 }  // namespace tlm_map
 
-// Strobe timing of Fig. 3 the wrapper drives (the defaults of testbenches/specular's stimulus).
+// Strobe timing of Fig. 3 the wrapper drives (the defaults of testbenches/specular's stimulus),
+// and the clock of a device with a `clk` pin (the squared device's squaring stage).
 struct tlm_strobe_timing {
     sc_core::sc_time t_low{15, sc_core::SC_NS};      // strobe 17 low: the settling phase T
     sc_core::sc_time t_high{5, sc_core::SC_NS};      // strobe 17 high; cos changes in its middle
     sc_core::sc_time load_pulse{4, sc_core::SC_NS};  // each half of a ctl15/20/22/24 pulse
+    // The wrapper's own clock, pin-accurate mode: an sc_clock of this period, 50 %, rising at 0,
+    // P, 2P, ... (sc_clock's defaults); the loosely-timed mode computes its edges from the period.
+    sc_core::sc_time clk_period{20, sc_core::SC_NS};
     sc_core::sc_time load_time() const { return load_pulse * 2.0; }
-    sc_core::sc_time pixel_time() const { return t_high + t_low; }
+    sc_core::sc_time pixel_time() const { return t_high + t_low; }  // the UA 60553 family's pixel
 };
 
-// Per generator of `a`: the variant code in CONTROL and the golden a(n) the loosely-timed path uses.
-template <class AGen>
+// What specular_tlm<V> needs to know of the device named by V (tlm_variant<V>):
+//   device, config, default_config()  the signal-level device and what it is built from
+//   make(name, mode, config, delays)  one build of it (pin-accurate mode owns a saturating and a
+//                                     wrapping one; ADD11's mode is fixed in silicon)
+//   code, n_fmt                       CONTROL.VARIANT; RG1's bus
+//   law(n, config)                    what the golden path keeps per n (a(n), or n itself)
+//   outputs(law, cos, ksi, mode)      outputs 25..27 from the golden model
+//   clocked                           false: Fig. 3's fixed strobe; true: a `clk` pin, and
+//   latency(n)                        the clocks from the rising edge that takes strobe 17 to the
+//                                     one that makes the result valid
+template <class V>
 struct tlm_variant;
+
+// UA 60553's Fig. 1 with a generator of `a`, AGen (specular_device<AGen>).
+template <class AGen>
+struct tlm_fig1_variant {
+    using device = specular_device<AGen>;
+    using config = typename AGen::config;
+    static config default_config() { return AGen::default_config(); }
+    static constexpr qfmt n_fmt = AGen::n_fmt;
+    static constexpr bool clocked = false;
+    static std::unique_ptr<device> make(const char* name, overflow_mode m, const config& g, const block_delays& d) {
+        return std::make_unique<device>(name, m, g, d);
+    }
+    static std::array<uint64_t, 3> outputs(uint64_t a, uint64_t cos, const std::array<uint64_t, 3>& ksi,
+                                           overflow_mode m) {
+        return golden_datapath(a, AGen::a_fmt.frac, cos, ksi, m).out;
+    }
+};
 template <>
-struct tlm_variant<a_gen_linear> {
+struct tlm_variant<a_gen_linear> : tlm_fig1_variant<a_gen_linear> {
     static constexpr uint32_t code = 0;
-    static uint64_t a(uint64_t n, const a_gen_linear::config& g) { return golden_a_linear(n, g); }
+    static uint64_t law(uint64_t n, const config& g) { return golden_a_linear(n, g); }
 };
 template <>
-struct tlm_variant<a_gen_rom> {
+struct tlm_variant<a_gen_rom> : tlm_fig1_variant<a_gen_rom> {
     static constexpr uint32_t code = 1;
-    // The ROM's own words (default: the content generated from seed 001's formula), as the device.
-    static uint64_t a(uint64_t n, const a_gen_rom::config& words) { return n < words.size() ? words[n] : 0; }
+    // The ROM's own words (default: the content generated from the quadratic-BRDF paper's exact
+    // a(n)), as the device.
+    static uint64_t law(uint64_t n, const config& words) { return n < words.size() ? words[n] : 0; }
 };
 template <>
-struct tlm_variant<a_gen_tuned> {
+struct tlm_variant<a_gen_tuned> : tlm_fig1_variant<a_gen_tuned> {
     static constexpr uint32_t code = 2;
-    static uint64_t a(uint64_t n, const a_gen_tuned::config& g) { return golden_a_tuned(n, g); }
+    static uint64_t law(uint64_t n, const config& g) { return golden_a_tuned(n, g); }
+};
+// The squared-quadratic device (ours): a from n alone, so nothing to configure; the squaring
+// stage's latency is k + 1 clocks (sq_count.h: LOAD at the taking edge, k SQUAREs, done).
+template <>
+struct tlm_variant<squared_device> {
+    using device = squared_device;
+    struct config {};
+    static config default_config() { return {}; }
+    static constexpr uint32_t code = 3;
+    static constexpr qfmt n_fmt = squared::n_fmt;
+    static constexpr bool clocked = true;
+    static std::unique_ptr<device> make(const char* name, overflow_mode m, const config&, const block_delays& d) {
+        return std::make_unique<device>(name, m, d);
+    }
+    static uint64_t law(uint64_t n, const config&) { return n & n_fmt.mask(); }
+    static unsigned latency(uint64_t n) { return golden_squared_a(n).k + 1; }
+    static std::array<uint64_t, 3> outputs(uint64_t n, uint64_t cos, const std::array<uint64_t, 3>& ksi,
+                                           overflow_mode m) {
+        return golden_squared(n, cos, ksi, m).out;
+    }
 };
 
-template <class AGen>
+template <class V>
 class specular_tlm : public tlm_target_base {
-    using device_t = specular_device<AGen>;
-    using n_t = sc_dt::sc_uint<AGen::n_fmt.width>;
+    using variant = tlm_variant<V>;
+    using device_t = typename variant::device;
+    using config_t = typename variant::config;
+    using n_t = sc_dt::sc_uint<variant::n_fmt.width>;
     using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
     using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
     using out_t = sc_dt::sc_uint<spec::out_fmt.width>;
@@ -141,19 +209,29 @@ public:
     net<n_t> in16_n{"in16_n"};
     net<cos_t> in18_cos{"in18_cos"};
     net<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
-    std::array<std::array<sc_core::sc_signal<out_t>, 3>, 2> out;  // [saturate, wrap][R, G, B]
-    std::array<sc_core::sc_signal<bool>, 2> out29;
+    using out_net = sc_core::sc_signal<out_t>;
+    std::array<std::array<out_net, 3>, 2> out{{{out_net{"sat_out25_r"}, out_net{"sat_out26_g"}, out_net{"sat_out27_b"}},
+                                                {out_net{"wrap_out25_r"}, out_net{"wrap_out26_g"},
+                                                 out_net{"wrap_out27_b"}}}};  // [saturate, wrap][R, G, B]
+    std::array<sc_core::sc_signal<bool>, 2> out29{{sc_core::sc_signal<bool>{"sat_out29_valid"},
+                                                   sc_core::sc_signal<bool>{"wrap_out29_valid"}}};
+    // A clocked device's clock, pin-accurate mode only: the wrapper's own sc_clock of
+    // t.clk_period, not a clock port, so the loosely-timed mode (no device, no clock) knows every
+    // edge from the period alone and annotates the exact pin-accurate time; every variant is built
+    // from (name, timing) alike; and a loosely-timed model pays for no clock events.
+    std::unique_ptr<sc_core::sc_clock> clk;
     std::unique_ptr<device_t> dev_sat, dev_wrap;  // pin-accurate mode only
 
-    specular_tlm(const sc_core::sc_module_name& name, tlm_timing timing,
-                 const typename AGen::config& gen = AGen::default_config(), const tlm_strobe_timing& t = {},
-                 const block_delays& delays = {})
-        : tlm_target_base(name, timing), gen_(gen), t_(t), a_(tlm_variant<AGen>::a(0, gen)) {
+    specular_tlm(const sc_core::sc_module_name& name, tlm_timing timing, const config_t& gen = variant::default_config(),
+                 const tlm_strobe_timing& t = {}, const block_delays& delays = {})
+        : tlm_target_base(name, timing), gen_(gen), t_(t), gate_(delays.gate) {
         socket.register_b_transport(this, &specular_tlm::b_transport);
         socket.register_transport_dbg(this, &specular_tlm::transport_dbg);
+        set_n(0);
         if (timing_ == tlm_timing::pin_accurate) {
-            dev_sat = std::make_unique<device_t>("dev_sat", overflow_mode::saturate, gen, delays);
-            dev_wrap = std::make_unique<device_t>("dev_wrap", overflow_mode::wrap, gen, delays);
+            if constexpr (variant::clocked) clk = std::make_unique<sc_core::sc_clock>("clk", t_.clk_period);
+            dev_sat = variant::make("dev_sat", overflow_mode::saturate, gen, delays);
+            dev_wrap = variant::make("dev_wrap", overflow_mode::wrap, gen, delays);
             bind(*dev_sat, 0);
             bind(*dev_wrap, 1);
         }
@@ -224,12 +302,12 @@ private:
     }
 
     void bind(device_t& d, std::size_t i) {
+        if constexpr (variant::clocked) d.clk(*clk);
         d.ctl15(ctl15); d.ctl17(ctl17); d.ctl20(ctl20); d.ctl22(ctl22); d.ctl24(ctl24);
         d.in16_n(in16_n); d.in18_cos(in18_cos);
         d.in19_ksi_r(in19_ksi_r); d.in21_ksi_g(in21_ksi_g); d.in23_ksi_b(in23_ksi_b);
         d.out25_r(out[i][0]); d.out26_g(out[i][1]); d.out27_b(out[i][2]); d.out29_valid(out29[i]);
     }
-
     // The map's regions for check_access(): registers, COS_BLOCK (16-bit codes), RESULT_BLOCK (words).
     static constexpr tlm_region map_[] = {{0, tlm_map::REG_END, 4, true},
                                           {tlm_map::COS_BLOCK, tlm_map::COS_BLOCK_END, 2, false},
@@ -273,7 +351,7 @@ private:
             case tlm_map::RESULT_B: return rgb_[2];
             case tlm_map::STATUS: return (ready_ ? tlm_map::STATUS_READY : 0u) | errors_;
             case tlm_map::CONTROL:
-                return (wrap_ ? tlm_map::CONTROL_OVF : 0u) | (tlm_variant<AGen>::code << tlm_map::CONTROL_VARIANT_SHIFT) |
+                return (wrap_ ? tlm_map::CONTROL_OVF : 0u) | (variant::code << tlm_map::CONTROL_VARIANT_SHIFT) |
                        (timing_ == tlm_timing::pin_accurate ? tlm_map::CONTROL_TIMING : 0u);
             default: return 0;
         }
@@ -284,11 +362,16 @@ private:
         ++generation_;
     }
 
+    void set_n(uint32_t n) {
+        n_ = n & static_cast<uint32_t>(variant::n_fmt.mask());
+        law_ = variant::law(n_, gen_);
+        if constexpr (variant::clocked) latency_ = variant::latency(n_);
+    }
+
     void reg_write(uint64_t addr, uint32_t v, sc_core::sc_time& delay) {
         switch (addr) {
             case tlm_map::N:
-                n_ = v & static_cast<uint32_t>(AGen::n_fmt.mask());
-                a_ = tlm_variant<AGen>::a(n_, gen_);
+                set_n(v);
                 load(ctl15, in16_n, n_, delay);
                 invalidate();
                 break;
@@ -334,55 +417,102 @@ private:
         wait(t_.load_pulse);
     }
 
-    // One pixel: golden model (loosely timed) or strobe 17 through the device (pin-accurate).
-    std::array<uint32_t, 3> shade(uint32_t code, sc_core::sc_time& delay) {
-        if (timing_ == tlm_timing::loosely_timed) {
-            delay += t_.pixel_time();
-            const auto nets = golden_datapath(a_, AGen::a_fmt.frac, code, {ksi_[0], ksi_[1], ksi_[2]},
-                                              wrap_ ? overflow_mode::wrap : overflow_mode::saturate);
-            return {static_cast<uint32_t>(nets.out[0]), static_cast<uint32_t>(nets.out[1]),
-                    static_cast<uint32_t>(nets.out[2])};
+    std::array<uint32_t, 3> golden(uint32_t code) const {
+        const auto o = variant::outputs(law_, code, {ksi_[0], ksi_[1], ksi_[2]},
+                                        wrap_ ? overflow_mode::wrap : overflow_mode::saturate);
+        return {static_cast<uint32_t>(o[0]), static_cast<uint32_t>(o[1]), static_cast<uint32_t>(o[2])};
+    }
+
+    // A clocked device's clock: the first falling edge at or after t (edges as sc_clock puts them).
+    sc_core::sc_time next_fall(const sc_core::sc_time& t) const {
+        const sc_core::sc_time high = t_.clk_period * 0.5;
+        const uint64_t p = t_.clk_period.value();
+        const uint64_t periods = t <= high ? 0 : (t.value() - high.value() + p - 1) / p;
+        return sc_core::sc_time::from_value(high.value() + periods * p);
+    }
+
+    // Loosely timed: when a pixel started at local time `start` ends in pin-accurate mode.
+    // UA 60553 family: Fig. 3's strobe period. Clocked: pixel_pins() worked out: strobe 17 falls
+    // at the first falling edge >= start + t_high / 2, the next rising edge takes it, done rises
+    // latency(n) clocks later, output 29 a gate delay after the later of done and strobe 17's rise.
+    sc_core::sc_time pixel_end(const sc_core::sc_time& start) const {
+        if constexpr (variant::clocked) {
+            const sc_core::sc_time fall = next_fall(start + t_.t_high / 2);
+            const sc_core::sc_time done =
+                fall + (t_.clk_period - t_.clk_period * 0.5) + t_.clk_period * static_cast<double>(latency_);
+            return std::max(done, fall + t_.t_low) + gate_;
+        } else {
+            return start + t_.pixel_time();
         }
-        in18_cos.write(code);  // in the middle of the high phase: half of it is setup time
+    }
+
+    // Pin-accurate: one pixel through the devices' pins (the caller's thread waits).
+    std::array<uint32_t, 3> pixel_pins(uint32_t code) {
+        in18_cos.write(code);  // half of strobe 17's high phase ahead of its fall: set-up time
         wait(t_.t_high / 2);
-        ctl17.write(false);    // RG2 latches: Fig. 3
+        if constexpr (variant::clocked) {  // the fall synchronous to the clock: its falling edge
+            const sc_core::sc_time now = sc_core::sc_time_stamp(), fall = next_fall(now);
+            if (fall > now) wait(fall - now);
+        }
+        ctl17.write(false);  // RG2 latches: Fig. 3
         wait(t_.t_low);
-        ctl17.write(true);   // output 29 rises: outputs 25..27 valid
-        wait(t_.t_high / 2);
-        const auto& o = out[wrap_ ? 1 : 0];
+        ctl17.write(true);
+        const std::size_t i = wrap_ ? 1 : 0;
+        if constexpr (variant::clocked) {
+            wait(out29[i].posedge_event());  // output 29 = strobe 17 AND done: outputs 25..27 valid
+        } else {
+            wait(t_.t_high / 2);  // output 29 (strobe 17 through a wire) rose at the strobe's rise
+        }
+        const auto& o = out[i];
         return {static_cast<uint32_t>(o[0].read().to_uint64()), static_cast<uint32_t>(o[1].read().to_uint64()),
                 static_cast<uint32_t>(o[2].read().to_uint64())};
     }
 
+    // One pixel: golden model and its delay (loosely timed) or strobe 17 through the device.
+    std::array<uint32_t, 3> shade(uint32_t code, sc_core::sc_time& delay) {
+        if (timing_ == tlm_timing::pin_accurate) return pixel_pins(code);
+        const sc_core::sc_time now = sc_core::sc_time_stamp();
+        delay = pixel_end(now + delay) - now;
+        return golden(code);
+    }
+
     void shade_block(std::size_t first, std::size_t count, sc_core::sc_time& delay) {
         if (timing_ == tlm_timing::loosely_timed) {
-            // The hot path: the golden datapath per pixel, one annotation for the whole burst.
-            const std::array<uint64_t, 3> k{ksi_[0], ksi_[1], ksi_[2]};
-            const overflow_mode m = wrap_ ? overflow_mode::wrap : overflow_mode::saturate;
+            // The hot path: the golden model per pixel, one annotation for the whole burst.
             for (std::size_t i = first; i < first + count; ++i) {
-                const auto nets = golden_datapath(a_, AGen::a_fmt.frac, cos_[i], k, m);
-                results_[i] = {static_cast<uint32_t>(nets.out[0]), static_cast<uint32_t>(nets.out[1]),
-                               static_cast<uint32_t>(nets.out[2]), cos_[i]};
+                const auto rgb = golden(cos_[i]);
+                results_[i] = {rgb[0], rgb[1], rgb[2], cos_[i]};
                 shaded_[i] = generation_;
             }
-            delay += t_.pixel_time() * static_cast<double>(count);
+            if constexpr (variant::clocked) {
+                // Every pixel ends a fixed time after its strobe's falling clock edge, so each one
+                // after the first starts at the same phase and takes the same time as the second.
+                const sc_core::sc_time now = sc_core::sc_time_stamp();
+                sc_core::sc_time t = pixel_end(now + delay);
+                if (count > 1) t += (pixel_end(t) - t) * static_cast<double>(count - 1);
+                delay = t - now;
+            } else {
+                delay += t_.pixel_time() * static_cast<double>(count);
+            }
             return;
         }
         for (std::size_t i = first; i < first + count; ++i) {
-            const auto rgb = shade(cos_[i], delay);
+            const auto rgb = pixel_pins(cos_[i]);
             results_[i] = {rgb[0], rgb[1], rgb[2], cos_[i]};
             shaded_[i] = generation_;
         }
     }
 
-    typename AGen::config gen_;
+    config_t gen_;
     tlm_strobe_timing t_;
+    sc_core::sc_time gate_;  // output 29's AND gate (a clocked device's pixel ends there)
 
     // The model's state (registers, latched results, windows).
     uint32_t n_ = 0, cos_reg_ = 0;
     std::array<uint32_t, 3> ksi_{}, rgb_{};
     bool ready_ = false, wrap_ = false;
-    uint64_t a_;  // golden a(n) for the loosely-timed path
+    uint64_t law_ = 0;      // the golden model's per-n value (a(n), or n)
+    unsigned latency_ = 1;  // a clocked device's clocks from taking the strobe to done, for n_
     std::array<uint16_t, tlm_map::BLOCK_PIXELS> cos_{};
     std::array<std::array<uint32_t, 4>, tlm_map::BLOCK_PIXELS> results_{};
     std::array<uint64_t, tlm_map::BLOCK_PIXELS> shaded_{};  // generation a pixel was shaded in
@@ -392,5 +522,6 @@ private:
 using specular_tlm_ua60553 = specular_tlm<a_gen_linear>;
 using specular_tlm_ua22802 = specular_tlm<a_gen_rom>;
 using specular_tlm_ua60553_tuned = specular_tlm<a_gen_tuned>;
+using specular_tlm_squared = specular_tlm<squared_device>;
 
 }  // namespace shading

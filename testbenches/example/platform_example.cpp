@@ -1,17 +1,25 @@
 // How to drop UA 60553 into your own SystemC platform: your top owns the nets, binds the device's
 // pins by name, drives Fig. 3's strobes and reads the outputs at the rising edge of out29.
-// Built and run by ctest (example.platform), so this file stays true; the README quotes it.
+// The squared-quadratic device (ours) is the one-line swap plus its clock:
+//     shading::device_squared spec{"spec"};  sc_core::sc_clock clk{"clk", 20, SC_NS};  spec.clk(clk);
+// (`platform_example squared` runs this file so). Built and run by ctest (example.platform,
+// example.platform.squared), so this file stays true; the README quotes it.
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <systemc>
+#include <type_traits>
 
-#include "golden/specular_golden.h"  // the bit-accurate golden model, to check what we read
+#include "golden/specular_golden.h"  // the bit-accurate golden models, to check what we read
+#include "golden/squared_golden.h"
+#include "squared/squared.h"          // shading::device_squared (link shading_modules)
 #include "ua60553/ua60553.h"          // shading::device_ua60553 (link shading_modules)
 
-using shading::device_ua60553;
 using sc_core::SC_NS;
 
+template <class Device>
 struct my_platform : sc_core::sc_module {
+    static constexpr bool squared = std::is_same_v<Device, shading::device_squared>;
     // Nets of the platform, one per device pin.
     sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
     sc_core::sc_signal<sc_dt::sc_uint<10>> n{"n"};
@@ -19,12 +27,14 @@ struct my_platform : sc_core::sc_module {
     sc_core::sc_signal<sc_dt::sc_uint<8>> ks_r{"ks_r"}, ks_g{"ks_g"}, ks_b{"ks_b"};
     sc_core::sc_signal<sc_dt::sc_uint<17>> r{"r"}, g{"g"}, b{"b"};  // Q9.8
     sc_core::sc_signal<bool> valid{"valid"};
+    sc_core::sc_clock clk{"clk", 20, SC_NS};  // the squared device's squaring stage (UA 60553 has no clock)
 
-    device_ua60553 spec{"spec"};  // saturate mode, the patent's constants, default delays
+    Device spec{"spec"};  // saturate mode, default delays (UA 60553: the patent's constants)
     unsigned errors = 0;
 
     SC_HAS_PROCESS(my_platform);
     explicit my_platform(const sc_core::sc_module_name& name) : sc_module(name) {
+        if constexpr (squared) spec.clk(clk);
         spec.ctl15(ctl15); spec.in16_n(n);
         spec.ctl17(ctl17); spec.in18_cos(cos);
         spec.ctl20(ctl20); spec.in19_ksi_r(ks_r);
@@ -54,22 +64,30 @@ struct my_platform : sc_core::sc_module {
             cos.write(c);
             wait(2, SC_NS);
             ctl17.write(false);  // latch
-            wait(15, SC_NS);     // longer than the 11.2 ns critical path
-            ctl17.write(true);   // out29 rises: r, g, b are valid now
-            wait(sc_core::SC_ZERO_TIME);
-            const auto want = shading::golden_ua60553(40, c, {255, 200, 90}, shading::overflow_mode::saturate);
+            wait(15, SC_NS);     // longer than UA 60553's 11.2 ns critical path
+            ctl17.write(true);
+            wait(valid.posedge_event());  // out29 rises (with ctl17, or once squared): r, g, b are valid
+            const std::array<uint64_t, 3> k{255, 200, 90};
+            const auto want = squared ? shading::golden_squared(40, c, k, shading::overflow_mode::saturate).out
+                                      : shading::golden_ua60553(40, c, k, shading::overflow_mode::saturate).out;
             std::printf("cos %.4f -> R %.3f G %.3f B %.3f\n", c / 32768.0, r.read() / 256.0, g.read() / 256.0,
                         b.read() / 256.0);
-            errors += (r.read() != want.out[0]) + (g.read() != want.out[1]) + (b.read() != want.out[2]);
+            errors += (r.read() != want[0]) + (g.read() != want[1]) + (b.read() != want[2]);
             wait(3, SC_NS);
         }
         sc_core::sc_stop();
     }
 };
 
-int sc_main(int, char*[]) {
-    my_platform top("top");
+template <class Device>
+int run() {
+    my_platform<Device> top("top");
     sc_core::sc_start(1, sc_core::SC_US);
     const bool stopped = sc_core::sc_get_status() == sc_core::SC_STOPPED;
     return (top.errors == 0 && stopped && sc_core::sc_report_handler::get_count(sc_core::SC_WARNING) == 0) ? 0 : 1;
+}
+
+int sc_main(int argc, char* argv[]) {
+    if (argc > 1 && !std::strcmp(argv[1], "squared")) return run<shading::device_squared>();
+    return run<shading::device_ua60553>();
 }

@@ -1,15 +1,21 @@
-// Throughput of the UA 60553 TLM-2.0 wrapper (modules/tlm/specular_tlm.h), one core, untraced:
-// evaluated pixels per second of the loosely-timed burst path (issue 9's target: >= 5e7) and of
-// the pin-accurate path, each shading whole raster lines (a 1024-pixel COS_BLOCK write, then a
-// read of the RESULT_BLOCK) from an initiator thread. Every 61st pixel of each line is checked
-// against the golden model in the loop (under 2 % of the work); a mismatch exits 1. The timed loop,
-// the options and the report are tlm_initiator.h's, shared with bench_line_tlm.
-//   bench_specular_tlm [--lt-pixels N] [--pin-pixels N]
+// Throughput of the specular TLM-2.0 wrapper (modules/tlm/specular_tlm.h), one device per run, one
+// core, untraced: evaluated pixels per second of the loosely-timed burst path (target: >= 5e7) and
+// of the pin-accurate path, each shading whole raster lines (a 1024-pixel COS_BLOCK write, then a
+// read of the RESULT_BLOCK) from an initiator thread, at n = 120 (the squared device: k = 6, eight
+// clocks a pixel). Every 61st pixel of each line is checked against the device's golden model in
+// the loop (under 2 % of the work); a mismatch exits 1. The timed loop and the report are
+// tlm_initiator.h's, shared with bench_line_tlm. --device takes render_pipeline's names.
+//   bench_specular_tlm [--device patent|minimax|rom_matched|ua22802|squared] [--lt-pixels N] [--pin-pixels N]
+#include <CLI/CLI.hpp>
+
 #include <array>
 #include <string>
 #include <vector>
 
 #include "golden/specular_golden.h"
+#include "golden/squared_golden.h"
+#include "golden/ua22802_golden.h"
+#include "golden/ua60553_tuned_golden.h"
 #include "tlm/specular_tlm.h"
 #include "tlm_initiator.h"
 
@@ -18,10 +24,19 @@ namespace m = shading::tlm_map;
 
 namespace {
 
+constexpr unsigned bench_n = 120;
+using golden_fn = std::array<uint64_t, 3> (*)(uint64_t cos, const std::array<uint64_t, 3>& ksi);
+
+// The tuned generator with the ROM-matched constants (a_gen_tuned's default is minimax).
+struct specular_tlm_rom_matched : specular_tlm_ua60553_tuned {
+    specular_tlm_rom_matched(const sc_core::sc_module_name& name, tlm_timing t)
+        : specular_tlm_ua60553_tuned(name, t, ua60553::rom_matched) {}
+};
+
 // Shades `pixels` (whole lines of 1024) through one initiator; codes vary per line.
-tb::tlm_figures run(tb::tlm_initiator& i, std::size_t pixels, const specular_tlm_ua60553&) {
+tb::tlm_figures run(tb::tlm_initiator& i, std::size_t pixels, golden_fn golden) {
     const std::array<uint64_t, 3> k{255, 140, 40};
-    i.write32(m::N, 120);
+    i.write32(m::N, bench_n);
     for (unsigned c = 0; c < 3; ++c) i.write32(m::KSI_R + 4 * c, static_cast<uint32_t>(k[c]));
     std::vector<uint16_t> codes(m::BLOCK_PIXELS);
     std::vector<uint32_t> res(4 * m::BLOCK_PIXELS);
@@ -38,20 +53,54 @@ tb::tlm_figures run(tb::tlm_initiator& i, std::size_t pixels, const specular_tlm
     const auto check = [&](std::size_t l) {
         std::size_t bad = 0;
         for (std::size_t p = l % 61; p < m::BLOCK_PIXELS; p += 61) {
-            const auto g = golden_ua60553(120, codes[p], k, overflow_mode::saturate);
-            bad += res[4 * p] != g.out[0] || res[4 * p + 1] != g.out[1] || res[4 * p + 2] != g.out[2];
+            const auto g = golden(codes[p], k);
+            bad += res[4 * p] != g[0] || res[4 * p + 1] != g[1] || res[4 * p + 2] != g[2];
         }
         return bad;
     };
     return tb::time_bursts(i, (pixels + m::BLOCK_PIXELS - 1) / m::BLOCK_PIXELS, m::BLOCK_PIXELS, w, r, fill, check);
 }
 
+template <class W>
+int bench(const std::string& what, std::size_t lt_px, std::size_t pin_px, golden_fn golden) {
+    return tb::tlm_bench_run<W>(lt_px, pin_px,
+                                what + " TLM-2.0 wrapper, n = " + std::to_string(bench_n) + ", raster lines of " +
+                                    std::to_string(m::BLOCK_PIXELS) + " pixels per access (one core, untraced)",
+                                [golden](tb::tlm_initiator& i, std::size_t px, const W&) { return run(i, px, golden); });
+}
+
+constexpr auto sat = overflow_mode::saturate;
+
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    return tb::tlm_bench_main<specular_tlm_ua60553>(
-        argc, argv, 100'000'000, 200'000,
-        "UA 60553 TLM-2.0 wrapper, raster lines of " + std::to_string(m::BLOCK_PIXELS) +
-            " pixels per access (one core, untraced)",
-        run);
+    CLI::App app{"Throughput of the specular TLM-2.0 wrapper, loosely timed and pin-accurate"};
+    std::string device = "patent";
+    std::size_t lt_px = 100'000'000, pin_px = 200'000;
+    app.add_option("--device", device, "specular device: patent, minimax, rom_matched, ua22802, squared")
+        ->check(CLI::IsMember({"patent", "minimax", "rom_matched", "ua22802", "squared"}));
+    app.add_option("--lt-pixels", lt_px, "pixels shaded loosely timed (whole lines)");
+    app.add_option("--pin-pixels", pin_px, "pixels shaded pin-accurate (whole lines)");
+    CLI11_PARSE(app, argc, argv);
+    if (device == "patent")
+        return bench<specular_tlm_ua60553>("UA 60553", lt_px, pin_px, [](uint64_t c, const std::array<uint64_t, 3>& k) {
+            return golden_ua60553(bench_n, c, k, sat).out;
+        });
+    if (device == "minimax")
+        return bench<specular_tlm_ua60553_tuned>(
+            "UA 60553 tuned (minimax)", lt_px, pin_px,
+            [](uint64_t c, const std::array<uint64_t, 3>& k) { return golden_ua60553_tuned(bench_n, c, k, sat).out; });
+    if (device == "rom_matched")
+        return bench<specular_tlm_rom_matched>("UA 60553 tuned (ROM-matched)", lt_px, pin_px,
+                                               [](uint64_t c, const std::array<uint64_t, 3>& k) {
+                                                   return golden_ua60553_tuned(bench_n, c, k, sat, ua60553::rom_matched).out;
+                                               });
+    if (device == "ua22802")
+        return bench<specular_tlm_ua22802>("UA 22802", lt_px, pin_px, [](uint64_t c, const std::array<uint64_t, 3>& k) {
+            return golden_ua22802(bench_n, c, k, sat).out;
+        });
+    return bench<specular_tlm_squared>("Squared-quadratic", lt_px, pin_px,
+                                       [](uint64_t c, const std::array<uint64_t, 3>& k) {
+                                           return golden_squared(bench_n, c, k, sat).out;
+                                       });
 }

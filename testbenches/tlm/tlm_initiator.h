@@ -192,21 +192,12 @@ inline void print_figures(const char* what, const tlm_figures& f) {
                 f.model_time.to_seconds() * 1e9 / static_cast<double>(f.pixels), f.mismatches);
 }
 
-// A benchmark's sc_main: [--lt-pixels N] [--pin-pixels N] (defaults lt_px, pin_px), then
-// run(initiator, pixels, wrapper) -> tlm_figures through a loosely-timed and a pin-accurate W, in
-// that order; prints `title`, both figures and their ratio. Exit 0 only if both shaded pixels and
-// nothing mismatched; 2 on a bad option.
+// Elaborates an LT and a pin-accurate W side by side, then run(initiator, pixels, wrapper) ->
+// tlm_figures through the loosely-timed one (lt_px pixels) and the pin-accurate one (pin_px), in
+// that order; prints `title`, both figures and their ratio. Returns 0 only if both shaded pixels
+// and nothing mismatched, else 1.
 template <class W, class Run>
-int tlm_bench_main(int argc, char* argv[], std::size_t lt_px, std::size_t pin_px, const std::string& title,
-                   Run run) {
-    for (int a = 1; a + 1 < argc; a += 2) {
-        if (!std::strcmp(argv[a], "--lt-pixels")) lt_px = std::strtoull(argv[a + 1], nullptr, 10);
-        else if (!std::strcmp(argv[a], "--pin-pixels")) pin_px = std::strtoull(argv[a + 1], nullptr, 10);
-        else {
-            std::fprintf(stderr, "usage: %s [--lt-pixels N] [--pin-pixels N]\n", argv[0]);
-            return 2;
-        }
-    }
+int tlm_bench_run(std::size_t lt_px, std::size_t pin_px, const std::string& title, Run run) {
     tlm_figures f_lt, f_pin;
     tlm_pair_bench<W> t("top");
     t.body = [&](tlm_initiator& lt, tlm_initiator& pin) {
@@ -219,6 +210,22 @@ int tlm_bench_main(int argc, char* argv[], std::size_t lt_px, std::size_t pin_px
     print_figures("pin-accurate", f_pin);
     std::printf("loosely timed / pin-accurate: %.0fx\n", (f_lt.pixels / f_lt.seconds) / (f_pin.pixels / f_pin.seconds));
     return f_lt.mismatches + f_pin.mismatches == 0 && f_lt.pixels > 0 && f_pin.pixels > 0 ? 0 : 1;
+}
+
+// A benchmark's sc_main: [--lt-pixels N] [--pin-pixels N] (defaults lt_px, pin_px), then
+// tlm_bench_run. 2 on a bad option.
+template <class W, class Run>
+int tlm_bench_main(int argc, char* argv[], std::size_t lt_px, std::size_t pin_px, const std::string& title,
+                   Run run) {
+    for (int a = 1; a + 1 < argc; a += 2) {
+        if (!std::strcmp(argv[a], "--lt-pixels")) lt_px = std::strtoull(argv[a + 1], nullptr, 10);
+        else if (!std::strcmp(argv[a], "--pin-pixels")) pin_px = std::strtoull(argv[a + 1], nullptr, 10);
+        else {
+            std::fprintf(stderr, "usage: %s [--lt-pixels N] [--pin-pixels N]\n", argv[0]);
+            return 2;
+        }
+    }
+    return tlm_bench_run<W>(lt_px, pin_px, title, run);
 }
 
 }  // namespace shading::tb

@@ -1,29 +1,48 @@
-// A consumer of the installed package: binds device_ua60553's pins to its own nets, shades a few
-// pixels through Fig. 3's strobes and compares every R, G, B word with the golden model.
-// Built against the installed tree only (CMakeLists.txt here); exits 0 only if all of it matched.
+// A consumer of the installed package: binds a specular device's pins to its own nets, shades a few
+// pixels through Fig. 3's strobes, reads R, G, B at output 29's rising edge and compares every word
+// with the device's golden model. Two platforms in one elaboration: device_ua60553, and
+// device_squared (ours), the same pins plus its squaring stage's clock, which the
+// platform's 20 ns clock drives. Built against the installed tree only (CMakeLists.txt here);
+// exits 0 only if all of it matched.
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <systemc>
+#include <type_traits>
 
-#include "golden/specular_golden.h"  // shading::golden
+#include "golden/specular_golden.h"   // shading::golden
+#include "golden/squared_golden.h"    // shading::golden
+#include "squared/squared.h"          // shading::modules
 #include "ua60553/ua60553.h"          // shading::modules
 
 using sc_core::SC_NS;
+using sc_core::sc_time;
+using golden_fn = std::array<uint64_t, 3> (*)(unsigned n, unsigned cos, const std::array<uint64_t, 3>& ksi);
 
+template <class Device>
 struct platform : sc_core::sc_module {
+    static constexpr bool clocked = std::is_same_v<Device, shading::device_squared>;
+
     sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
     sc_core::sc_signal<sc_dt::sc_uint<10>> n{"n"};
     sc_core::sc_signal<sc_dt::sc_uint<16>> cos{"cos"};  // Q1.15
     sc_core::sc_signal<sc_dt::sc_uint<8>> ks_r{"ks_r"}, ks_g{"ks_g"}, ks_b{"ks_b"};
     sc_core::sc_signal<sc_dt::sc_uint<17>> r{"r"}, g{"g"}, b{"b"};  // Q9.8
     sc_core::sc_signal<bool> valid{"valid"};
+    std::unique_ptr<sc_core::sc_clock> clk;  // the squared device's only
 
-    shading::device_ua60553 spec{"spec"};  // saturate mode, the patent's constants
+    Device spec{"spec"};  // saturate mode; UA 60553 with the patent's constants
+    golden_fn golden;
     unsigned pixels = 0, errors = 0;
+    bool finished = false;
 
     SC_HAS_PROCESS(platform);
-    explicit platform(const sc_core::sc_module_name& name) : sc_module(name) {
+    platform(const sc_core::sc_module_name& name, golden_fn gold) : sc_module(name), golden(gold) {
+        if constexpr (clocked) {
+            clk = std::make_unique<sc_core::sc_clock>("clk", sc_time(20, SC_NS));
+            spec.clk(*clk);
+        }
         spec.ctl15(ctl15); spec.in16_n(n);
         spec.ctl17(ctl17); spec.in18_cos(cos);
         spec.ctl20(ctl20); spec.in19_ksi_r(ks_r);
@@ -45,8 +64,9 @@ struct platform : sc_core::sc_module {
 
     void drive() {
         ctl17.write(true);
-        // Two surfaces, six pixels each: cos codes from 1.0 down, and a small LCG's inside the highlight.
-        const std::array<std::array<unsigned, 4>, 2> surfaces{{{40, 255, 200, 90}, {7, 13, 128, 250}}};
+        // Three surfaces, six pixels each: cos codes from 1.0 down, and a small LCG's inside the
+        // highlight; n = 1000 is the squared device's longest case (9 squarings).
+        const std::array<std::array<unsigned, 4>, 3> surfaces{{{40, 255, 200, 90}, {7, 13, 128, 250}, {1000, 180, 180, 180}}};
         uint32_t x = 12345;
         for (const auto& s : surfaces) {
             load(ctl15, n, s[0]);
@@ -59,31 +79,38 @@ struct platform : sc_core::sc_module {
                 cos.write(c);
                 wait(2, SC_NS);
                 ctl17.write(false);  // latch cos
-                wait(15, SC_NS);     // longer than the 11.2 ns critical path
-                ctl17.write(true);   // out29 (ctl17 through a wire) rises: R, G, B valid
-                wait(1, SC_NS, valid.posedge_event());
-                const auto want = shading::golden_ua60553(s[0], c, {s[1], s[2], s[3]}, shading::overflow_mode::saturate);
-                const bool ok = valid.read() && r.read() == want.out[0] && g.read() == want.out[1] &&
-                                b.read() == want.out[2];
-                std::printf("n %3u cos 0x%04x -> R %05x G %05x B %05x  golden %05llx %05llx %05llx %s\n", s[0], c,
-                            unsigned(r.read()), unsigned(g.read()), unsigned(b.read()),
-                            (unsigned long long)want.out[0], (unsigned long long)want.out[1],
-                            (unsigned long long)want.out[2], ok ? "ok" : "MISMATCH");
+                wait(15, SC_NS);     // longer than UA 60553's 11.2 ns critical path
+                ctl17.write(true);   // output 29 rises with it (UA 60553) or once squared (ours)
+                wait(sc_time(300, SC_NS), valid.posedge_event());
+                const auto want = golden(s[0], c, {s[1], s[2], s[3]});
+                const bool ok = valid.read() && r.read() == want[0] && g.read() == want[1] && b.read() == want[2];
+                std::printf("%s n %4u cos 0x%04x -> R %05x G %05x B %05x  golden %05llx %05llx %05llx %s\n",
+                            clocked ? "squared " : "UA 60553", s[0], c, unsigned(r.read()), unsigned(g.read()),
+                            unsigned(b.read()), (unsigned long long)want[0], (unsigned long long)want[1],
+                            (unsigned long long)want[2], ok ? "ok" : "MISMATCH");
                 ++pixels;
                 errors += !ok;
                 wait(2, SC_NS);
             }
         }
-        sc_core::sc_stop();
+        finished = true;
     }
 };
 
 int sc_main(int, char*[]) {
-    platform top("top");
-    sc_core::sc_start(2, sc_core::SC_US);
-    const bool stopped = sc_core::sc_get_status() == sc_core::SC_STOPPED;
+    using shading::overflow_mode;
+    platform<shading::device_ua60553> top("top", [](unsigned n, unsigned c, const std::array<uint64_t, 3>& k) {
+        return shading::golden_ua60553(n, c, k, overflow_mode::saturate).out;
+    });
+    platform<shading::device_squared> top_sq("top_squared", [](unsigned n, unsigned c, const std::array<uint64_t, 3>& k) {
+        return shading::golden_squared(n, c, k, overflow_mode::saturate).out;
+    });
+    sc_core::sc_start(20, sc_core::SC_US);
+    const bool finished = top.finished && top_sq.finished;
     const auto warnings = sc_core::sc_report_handler::get_count(sc_core::SC_WARNING);
-    std::printf("consumer: %u pixels, %u mismatches, %u warnings, %s\n", top.pixels, top.errors, unsigned(warnings),
-                stopped ? "stopped" : "NOT STOPPED");
-    return (top.pixels == 12 && top.errors == 0 && stopped && warnings == 0) ? 0 : 1;
+    std::printf("consumer: %u + %u pixels, %u mismatches, %u warnings, %s\n", top.pixels, top_sq.pixels,
+                top.errors + top_sq.errors, unsigned(warnings), finished ? "finished" : "NOT FINISHED");
+    return (top.pixels == 18 && top_sq.pixels == 18 && top.errors + top_sq.errors == 0 && finished && warnings == 0)
+               ? 0
+               : 1;
 }

@@ -1,15 +1,18 @@
-// Issue 9's virtual platform, built against the installed package only (shading::tlm,
-// shading::pipeline): a traffic generator standing in for the CPU and the geometry side, a router,
-// UA 60553 TLM wrappers and raster-line unit wrappers (each loosely timed and pin-accurate) and a
-// frame-buffer memory. The generator rasterises the head scan (installed with its attribution under
-// SHADING_DATA_DIR, "Infinite, 3D Head Scan" by Lee Perry-Smith, CC BY 3.0) and takes the raster
-// line of the face (the middle half of the frame) with the most highlight. Per UA 60553 wrapper: the line's N.H codes in one COS_BLOCK burst
-// write, the R, G, B out of one RESULT_BLOCK burst read, checked against golden_ua60553. Per
-// raster-line wrapper: seed 004's plan of the line (fixed m = 5, cubic, forward differences), each
-// channel's interval samples (the sample stage, golden_sample) in one INTERVAL_BLOCK burst, the
-// pixels out of one PIXEL_BLOCK read, clamped to the pixel format and checked against
-// pipeline::golden_interval. Every line goes into the frame buffer by one burst write and is read
-// back; both timing modes of each wrapper must agree on data and on time.
+// A virtual platform built against the installed package only (shading::tlm, shading::pipeline): a
+// traffic generator standing in for the CPU and the geometry side, a router, specular TLM wrappers
+// (UA 60553 and the squared-quadratic device, ours) and raster-line unit wrappers, each loosely
+// timed and pin-accurate, and a frame-buffer memory. The generator rasterises the head scan
+// (installed with its attribution under SHADING_DATA_DIR, "Infinite, 3D Head Scan" by Lee
+// Perry-Smith, CC BY 3.0) and takes the raster line of the face (the middle half of the frame)
+// with the most highlight. Per specular wrapper: the line's N.H codes in one COS_BLOCK burst write,
+// the R, G, B out of one RESULT_BLOCK burst read, checked against the device's golden model
+// (golden_ua60553, golden_squared). Per raster-line wrapper: the interpolation paper's plan of the
+// line (fixed m = 5, cubic, forward differences), each channel's interval samples (the sample
+// stage, golden_sample) in one INTERVAL_BLOCK burst, the pixels out of one PIXEL_BLOCK read,
+// clamped to the pixel format and checked against pipeline::golden_interval. Every line goes into
+// the frame buffer by one burst write and is read back; both timing modes of each wrapper must
+// agree on data and on time (the squared device's lines start on its 20 ns clock's rising edge,
+// as a CPU on that clock would, since its time depends on the clock's phase).
 // Exits 0 only if all of it held and SystemC reported no warning.
 #include <array>
 #include <cstdint>
@@ -23,6 +26,7 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "golden/specular_golden.h"  // shading::golden
+#include "golden/squared_golden.h"   // shading::golden
 #include "pipeline/pipeline.h"        // shading::pipeline: frame constants, sample stage, plan, golden_interval
 #include "scene/raster.h"             // shading::scene: the rasteriser
 #include "scene/world.h"              // shading::scene: the head scene
@@ -39,6 +43,7 @@ using sc_core::SC_ZERO_TIME;
 
 // Address map of the platform.
 constexpr uint64_t SHADE_LT = 0x40000000, SHADE_PA = 0x40010000, SHADE_SIZE = 0x10000;
+constexpr uint64_t SQUARED_LT = 0x40020000, SQUARED_PA = 0x40030000;
 constexpr uint64_t LINE_LT = 0x41000000, LINE_PA = 0x41020000, LINE_SIZE = 0x20000;
 constexpr uint64_t FB = 0x80000000, FB_SIZE = 0x10000;
 constexpr unsigned PIXELS = 256;  // the frame is PIXELS x PIXELS
@@ -69,12 +74,11 @@ struct frame_buffer : sc_core::sc_module {
 struct router : sc_core::sc_module {
     struct region { uint64_t base, size; };
     tlm_utils::simple_target_socket<router> socket{"socket"};
-    std::array<tlm_utils::simple_initiator_socket<router>, 5> out{
-        tlm_utils::simple_initiator_socket<router>{"to_shade_lt"},
-        tlm_utils::simple_initiator_socket<router>{"to_shade_pa"}, tlm_utils::simple_initiator_socket<router>{"to_line_lt"},
-        tlm_utils::simple_initiator_socket<router>{"to_line_pa"}, tlm_utils::simple_initiator_socket<router>{"to_fb"}};
-    std::array<region, 5> map{
-        {{SHADE_LT, SHADE_SIZE}, {SHADE_PA, SHADE_SIZE}, {LINE_LT, LINE_SIZE}, {LINE_PA, LINE_SIZE}, {FB, FB_SIZE}}};
+    using to = tlm_utils::simple_initiator_socket<router>;
+    std::array<to, 7> out{to{"to_shade_lt"}, to{"to_shade_pa"}, to{"to_squared_lt"}, to{"to_squared_pa"},
+                          to{"to_line_lt"},  to{"to_line_pa"},  to{"to_fb"}};
+    std::array<region, 7> map{{{SHADE_LT, SHADE_SIZE}, {SHADE_PA, SHADE_SIZE}, {SQUARED_LT, SHADE_SIZE},
+                               {SQUARED_PA, SHADE_SIZE}, {LINE_LT, LINE_SIZE}, {LINE_PA, LINE_SIZE}, {FB, FB_SIZE}}};
     explicit router(const sc_core::sc_module_name& name) : sc_module(name) {
         socket.register_b_transport(this, &router::b_transport);
     }
@@ -194,11 +198,18 @@ struct traffic_generator : sc_core::sc_module {
             if (lit > best) best = lit, y = yy, cos = line;
         }
 
-        // The UA 60553 wrappers: the line's per-pixel specular colour.
+        // The UA 60553 wrappers: the line's per-pixel specular colour; then the squared device's,
+        // each line from a rising edge of its 20 ns clock.
         const sc_time t_lt = shade_line(SHADE_LT, 0, cos, surface);
         const sc_time t_pa = shade_line(SHADE_PA, 1, cos, surface);
+        const sc_time clock = shading::tlm_strobe_timing{}.clk_period;
+        wait(clock - sc_core::sc_time_stamp() % clock);
+        const sc_time t_sq_lt = shade_line(SQUARED_LT, 4, cos, surface);
+        wait(clock - sc_core::sc_time_stamp() % clock);
+        const sc_time t_sq_pa = shade_line(SQUARED_PA, 5, cos, surface);
 
-        // The raster-line wrappers: seed 004's plan of the frame, the line's intervals and samples.
+        // The raster-line wrappers: the interpolation paper's plan of the frame, the line's intervals
+        // and samples.
         pl::plan_config c;
         c.length = pl::length_policy::fixed;
         c.m = M;
@@ -218,18 +229,20 @@ struct traffic_generator : sc_core::sc_module {
         const sc_time t_line_lt = interpolate_line(LINE_LT, 2, jobs, samples);
         const sc_time t_line_pa = interpolate_line(LINE_PA, 3, jobs, samples);
 
-        // Read the four lines back from the frame buffer and check them against the golden models.
-        std::vector<uint32_t> fb(4 * 3 * PIXELS);
+        // Read the six lines back from the frame buffer and check them against the golden models.
+        std::vector<uint32_t> fb(6 * 3 * PIXELS);
         access(tlm::TLM_READ_COMMAND, FB, fb.data(), static_cast<unsigned>(4 * fb.size()));
-        unsigned lit = 0;
-        for (unsigned line = 0; line < 2; ++line)
+        unsigned lit = 0, lit_sq = 0;
+        for (unsigned line : {0u, 1u, 4u, 5u})
             for (unsigned i = 0; i < PIXELS; ++i) {
-                const auto want = shading::golden_ua60553(k.n, cos[i], ksi, shading::overflow_mode::saturate);
+                const auto want = line < 2 ? shading::golden_ua60553(k.n, cos[i], ksi, shading::overflow_mode::saturate).out
+                                           : shading::golden_squared(k.n, cos[i], ksi, shading::overflow_mode::saturate).out;
                 for (unsigned ch = 0; ch < 3; ++ch) {
                     const uint32_t got = fb[(line * PIXELS + i) * 3 + ch];
-                    errors += got != want.out[ch];
+                    errors += got != want[ch];
                     ++checked;
                     lit += line == 0 && ch == 0 && got != 0;
+                    lit_sq += line == 4 && ch == 0 && got != 0;
                 }
             }
         std::size_t interpolated = 0;
@@ -249,14 +262,16 @@ struct traffic_generator : sc_core::sc_module {
         }
         std::printf("head, %ux%u, line %u: %u pixels with highlight; UA 60553 loosely timed %s, pin-accurate %s\n",
                     PIXELS, PIXELS, y, lit, t_lt.to_string().c_str(), t_pa.to_string().c_str());
+        std::printf("  squared-quadratic: %u pixels with highlight; loosely timed %s, pin-accurate %s\n", lit_sq,
+                    t_sq_lt.to_string().c_str(), t_sq_pa.to_string().c_str());
         std::printf("  raster-line unit: %zu intervals, %zu pixels x 3 channels; loosely timed %s, pin-accurate %s\n",
                     jobs.size(), interpolated, t_line_lt.to_string().c_str(), t_line_pa.to_string().c_str());
-        expected = 2 * 3 * PIXELS + 2 * 3 * interpolated;
-        if (t_lt != t_pa || t_line_lt != t_line_pa) {
+        expected = 4 * 3 * PIXELS + 2 * 3 * interpolated;
+        if (t_lt != t_pa || t_sq_lt != t_sq_pa || t_line_lt != t_line_pa) {
             std::printf("the two timing modes took different times\n");
             ++errors;
         }
-        if (lit == 0 || jobs.empty() || interpolated == 0) {  // a line with no highlight would not test much
+        if (lit == 0 || lit_sq == 0 || jobs.empty() || interpolated == 0) {  // a line with no highlight would not test much
             std::printf("no lit pixel or no interval on the line\n");
             ++errors;
         }
@@ -270,15 +285,19 @@ int sc_main(int, char*[]) {
     router bus("bus");
     shading::specular_tlm_ua60553 shade_lt("shade_lt", shading::tlm_timing::loosely_timed);
     shading::specular_tlm_ua60553 shade_pa("shade_pa", shading::tlm_timing::pin_accurate);
+    shading::specular_tlm_squared squared_lt("squared_lt", shading::tlm_timing::loosely_timed);
+    shading::specular_tlm_squared squared_pa("squared_pa", shading::tlm_timing::pin_accurate);
     line_unit line_lt("line_lt", shading::tlm_timing::loosely_timed);
     line_unit line_pa("line_pa", shading::tlm_timing::pin_accurate);
     frame_buffer fb("fb");
     cpu.socket.bind(bus.socket);
     bus.out[0].bind(shade_lt.socket);
     bus.out[1].bind(shade_pa.socket);
-    bus.out[2].bind(line_lt.socket);
-    bus.out[3].bind(line_pa.socket);
-    bus.out[4].bind(fb.socket);
+    bus.out[2].bind(squared_lt.socket);
+    bus.out[3].bind(squared_pa.socket);
+    bus.out[4].bind(line_lt.socket);
+    bus.out[5].bind(line_pa.socket);
+    bus.out[6].bind(fb.socket);
     sc_core::sc_start(1, sc_core::SC_MS);
     const bool stopped = sc_core::sc_get_status() == sc_core::SC_STOPPED;
     const auto warnings = sc_core::sc_report_handler::get_count(sc_core::SC_WARNING);
