@@ -62,12 +62,13 @@ FRACS = {f"q{q}": f"Q1.{q}" + (" (the device)" if q == 18 else "") for q in rang
 
 
 def read(path):
+    """Columns as float arrays (empty cells: NaN), or as lists of strings where not numeric."""
     with open(path) as f:
         rows = list(csv.DictReader(f))
     out = {}
     for k in rows[0]:
         try:
-            out[k] = np.array([float(r[k]) for r in rows])
+            out[k] = np.array([float(r[k]) if r[k] != "" else np.nan for r in rows])
         except ValueError:
             out[k] = [r[k] for r in rows]
     return out
@@ -150,10 +151,14 @@ def plot_head(out, acc):
         ax = axes[1][0]
         t = read(table)
         ids = t["device"]
-        for d in DEVICES:
+        for d in DEVICES + ["squared_law", "trial_inflection", "trial_fitted"]:
             sel = [i for i, x in enumerate(ids) if x == d]
-            ax.loglog(t["n"][sel], t["image_nmse"][sel], marker="o", ms=4, label=LABELS[d] + " (exponents sweep)",
-                      **{k: v for k, v in STYLE[d].items() if k != "ls"}, ls="none" if d in ("squared", "sqmul") else "-")
+            if not sel:
+                continue
+            dots = d in ("squared", "sqmul", "squared_law")  # drawn as lines over every n below
+            style = {k: v for k, v in STYLE[d].items() if k != "ls"}
+            ax.loglog(t["n"][sel], t["image_nmse"][sel], marker="o" if d in DEVICES else "^", ms=4,
+                      ls="none" if dots else STYLE[d].get("ls", "-"), label=LABELS[d] + " (exponents sweep)", **style)
         if os.path.exists(scan):
             s = read(scan)
             ax.loglog(s["n"], s["image_nmse_s2"], label=LABELS["squared"] + ", every n", **STYLE["squared"])
@@ -216,7 +221,7 @@ def plot_fit(out):
         x, y = 100 * fit["worst_maxrel056_1_1000"][i], fit["worst_image_nmse_2_500"][i]
         bend = v in BENDS
         ax.loglog(x, y, "o" if bend else "s", color=colors[v], ms=8 if bend else 6, mfc=colors[v] if bend else "none")
-        if bend and fit["scan_at_n"][i] > 0:  # the worst over every n in 2..500 (n = 3 for each)
+        if bend and scan is not None:  # the worst over every n in 2..500 (n = 3 for each)
             ax.loglog(x, fit["scan_worst_image_nmse_2_500"][i], "x", color=colors[v], ms=8)
             ax.plot([x, x], [y, fit["scan_worst_image_nmse_2_500"][i]], color=colors[v], lw=0.6, ls=":")
         if names[v]:

@@ -3,7 +3,8 @@
 // fit (squared_variants.h). Writes, into --out:
 //   head_device_table.csv / .md  per device and n: the device reference's image against exact Phong
 //                                (NMSE, largest error in 8-bit levels), the worst relative error
-//                                above 0.56 and the NMSE over the head's N.H distribution
+//                                above 0.56 and the NMSE over the head's N.H distribution; also for
+//                                the real-valued laws (ours, and the trial law at n' in [2, 4))
 //   squared_fit.csv              per variant: the worst relative error above 0.56 over n in
 //                                [1, 1000] (where, how many n above 1 %) and the image NMSE and
 //                                largest error against Phong at every --n
@@ -18,6 +19,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <functional>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -30,6 +33,8 @@
 #include "squared_variants.h"
 #include "study_devices.h"
 #include "study_metrics.h"
+#include "trial_law.h"
+#include "reference/brdf_reference.h"
 
 using namespace shading;
 using namespace shading::study;
@@ -95,7 +100,26 @@ int main(int argc, char* argv[]) {
         head_surface head(data_dir, size);
         const cos_distribution dist = nh_distribution(head.raster());
         const grid g;
-        const auto devices = study_devices();
+        // The devices, then the real-valued laws for comparison: their BRDF at the code's cos, its
+        // out codes rounded to nearest on Q9.8 (1/256 of a level: far below every error measured).
+        std::vector<study_device> devices = study_devices();
+        std::vector<double> trial_a(1001, 0.0);
+        for (unsigned n : ns) trial_a[n] = trial_a_fitted(dist, n);
+        auto law = [](std::string id, std::string label, std::function<double(unsigned, double)> f) {
+            const auto brdf = [f](unsigned n, uint64_t code) { return f(n, std::ldexp(static_cast<double>(code), -15)); };
+            const auto out = [brdf](unsigned n, uint32_t code, const std::array<uint64_t, 3>& ksi) {
+                std::array<uint64_t, 3> o{};
+                for (std::size_t i = 0; i < 3; ++i) o[i] = static_cast<uint64_t>(std::llround(brdf(n, code) * ksi[i] * 256.0));
+                return o;
+            };
+            return study_device{std::move(id), std::move(label), brdf, out};
+        };
+        devices.push_back(law("squared_law", "squared-quadratic law (ours), real-valued",
+                              [](unsigned n, double c) { return ref::squared_law(c, n); }));
+        devices.push_back(law("trial_inflection", "trial law, n' in [2,4), a at the inflection, real-valued",
+                              [](unsigned n, double c) { return trial_law(c, trial_a_inflection(n), n); }));
+        devices.push_back(law("trial_fitted", "trial law, n' in [2,4), a fitted on the head, real-valued",
+                              [&trial_a](unsigned n, double c) { return trial_law(c, trial_a[n], n); }));
 
         // The fit's variants: worst relative error above 0.56 for every n (cheap: no rendering).
         std::vector<variant_row> rows;
@@ -216,9 +240,14 @@ int main(int argc, char* argv[]) {
             fit << r.v.id << ",\"" << r.v.label << "\"," << r.group << ',' << (shifts.empty() ? "none" : shifts) << ','
                 << r.v.q_frac << ',' << r.worst << ',' << r.worst_n << ',' << r.above_1pct;
             for (const auto& d : r.image) fit << ',' << d.nmse << ',' << d.max_abs;
-            const scan_summary s500 = summarise(r.scan, 2, 500, 1e-5), s1000 = summarise(r.scan, 1, 1000, 1e-5);
-            fit << ',' << worst_over(ns, r.image, 2, 500) << ',' << s500.worst << ',' << s500.at << ',' << s500.above
-                << ',' << s1000.worst << ',' << s1000.at << '\n';
+            fit << ',' << worst_over(ns, r.image, 2, 500);
+            if (r.scan.empty()) {
+                fit << ",,,,,\n";  // not scanned (the word lengths)
+            } else {
+                const scan_summary s500 = summarise(r.scan, 2, 500, 1e-5), s1000 = summarise(r.scan, 1, 1000, 1e-5);
+                fit << ',' << s500.worst << ',' << s500.at << ',' << s500.above << ',' << s1000.worst << ',' << s1000.at
+                    << '\n';
+            }
         }
         std::ofstream mr(out_dir + "/squared_fit_maxrel.csv");
         mr << "n";
@@ -257,10 +286,14 @@ int main(int argc, char* argv[]) {
                     ">1%", "NMSE n=20", "worst 2-500", "scan: 2-500 (n)", ">1e-5");
         for (const auto& r : rows) {
             const double at20 = it20 == ns.end() ? -1.0 : r.image[static_cast<std::size_t>(it20 - ns.begin())].nmse;
-            const scan_summary s500 = summarise(r.scan, 2, 500, 1e-5);
-            std::printf("%-6.6s %-8s %-40s %8.3f%% %5u %5u %11.2e %11.2e %9.2e (%3u) %5u\n", r.group, r.v.id.c_str(),
-                        r.v.label.c_str(), 100 * r.worst, r.worst_n, r.above_1pct, at20, worst_over(ns, r.image, 2, 500),
-                        s500.worst, s500.at, s500.above);
+            std::printf("%-6.6s %-8s %-40s %8.3f%% %5u %5u %11.2e %11.2e", r.group, r.v.id.c_str(), r.v.label.c_str(),
+                        100 * r.worst, r.worst_n, r.above_1pct, at20, worst_over(ns, r.image, 2, 500));
+            if (r.scan.empty()) {
+                std::printf("\n");
+            } else {
+                const scan_summary s500 = summarise(r.scan, 2, 500, 1e-5);
+                std::printf(" %9.2e (%3u) %5u\n", s500.worst, s500.at, s500.above);
+            }
         }
         if (scan_max > 0) {
             const auto& device = *std::find_if(rows.begin(), rows.end(),
