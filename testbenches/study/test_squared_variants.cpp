@@ -1,5 +1,5 @@
 // The fit's parametrised golden model (squared_variants.h) against the device's own golden model
-// and hand-worked words; the trial law's helpers against hand-worked values; the cos distribution's
+// and hand-worked words; the trial law's exponents and fit against hand-worked values; the cos distribution's
 // measure against values known without it. No simulation.
 #include <gtest/gtest.h>
 
