@@ -18,3 +18,7 @@ for dev in patent minimax rom_matched ua22802; do
       "$dev" "$mode" "$covered" "$nmse" "$maxe" "$phong_long" >> "$SHADING_SUMMARY"
   done
 done
+# The README's comparison at n = 20: Phong, the patent's device and the squared-quadratic device
+# (ours), with both error maps at one scale (data/readme/squared_head_512_n20.png).
+"$SHADING_BIN/render_reference" --scene head --size 512 --n 20 --device squared --compare patent,squared \
+  --error-scale 8 --out "$SHADING_OUT/scene/compare_n20" >/dev/null

@@ -114,6 +114,23 @@ rgb_image to_rgb8(const shaded_image& s) {
     return out;
 }
 
+image_diff compare_images(const shaded_image& test, const shaded_image& ref) {
+    if (test.width != ref.width || test.height != ref.height) throw image_error("compare_images: images of different sizes");
+    double num = 0.0, den = 0.0;
+    image_diff d;
+    for (std::size_t i = 0; i < ref.value.size(); ++i) {
+        if (!ref.covered[i]) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double e = test.value[i][c] - ref.value[i][c];
+            num += e * e;
+            den += ref.value[i][c] * ref.value[i][c];
+            d.max_abs = std::max(d.max_abs, std::abs(e));
+        }
+    }
+    d.nmse = den > 0.0 ? num / den : 0.0;
+    return d;
+}
+
 std::vector<double> abs_error(const shaded_image& a, const shaded_image& b) {
     if (a.width != b.width || a.height != b.height) throw image_error("abs_error: images of different sizes");
     std::vector<double> e(a.value.size());
@@ -160,6 +177,44 @@ rgb_image side_by_side(const std::vector<rgb_image>& images, const std::vector<s
         if (k < labels.size()) draw_text(out, x0, gap, labels[k], im.width);
         for (unsigned y = 0; y < im.height; ++y) std::copy_n(im.at(0, y), 3 * im.width, out.at(x0, top + y));
         x0 += im.width + gap;
+    }
+    return out;
+}
+
+rgb_image stacked(const std::vector<rgb_image>& rows) {
+    unsigned w = 0, h = 0;
+    for (const auto& im : rows) {
+        w = std::max(w, im.width);
+        h += im.height;
+    }
+    rgb_image out(w, h, 24);
+    unsigned y0 = 0;
+    for (const auto& im : rows) {
+        for (unsigned y = 0; y < im.height; ++y) std::copy_n(im.at(0, y), 3 * im.width, out.at(0, y0 + y));
+        y0 += im.height;
+    }
+    return out;
+}
+
+rgb_image heat_map_legend(unsigned width, unsigned height, double full_scale, const std::string& caption) {
+    rgb_image out(width, height, 24);
+    constexpr unsigned margin = 16, bar_h = 24, ticks = 4;
+    if (width < 2 * margin + 2 || height < bar_h + 4 * glyph_h) return out;  // too small to draw: left blank
+    const unsigned bar_w = width - 2 * margin, y_bar = (height - bar_h) / 2;
+    std::vector<double> ramp(static_cast<std::size_t>(bar_w) * bar_h);
+    for (unsigned y = 0; y < bar_h; ++y)
+        for (unsigned x = 0; x < bar_w; ++x) ramp[static_cast<std::size_t>(y) * bar_w + x] = full_scale * x / (bar_w - 1);
+    const rgb_image bar = heat_map(ramp, bar_w, bar_h, full_scale);
+    for (unsigned y = 0; y < bar_h; ++y) std::copy_n(bar.at(0, y), 3 * bar_w, out.at(margin, y_bar + y));
+    draw_text(out, margin, y_bar - 2 * glyph_h, caption, bar_w);
+    for (unsigned t = 0; t <= ticks; ++t) {
+        char label[32];
+        std::snprintf(label, sizeof label, "%g", full_scale * t / ticks);
+        const unsigned text_w = static_cast<unsigned>(std::string(label).size()) * glyph_advance;
+        const unsigned x_tick = margin + (bar_w - 1) * t / ticks;
+        const unsigned x_text = std::min(x_tick - std::min(x_tick, text_w / 2), width - text_w);
+        for (unsigned y = y_bar + bar_h; y < y_bar + bar_h + 4; ++y) std::fill_n(out.at(x_tick, y), 3, uint8_t{230});
+        draw_text(out, x_text, y_bar + bar_h + 7, label, text_w);
     }
     return out;
 }

@@ -33,6 +33,13 @@ void save_png(const rgb_image& img, const std::string& path);
 // Rounds to nearest (values are already clamped to [0, 255]).
 rgb_image to_rgb8(const shaded_image& s);
 
+// An image against a reference over the reference's covered pixels, every channel:
+// NMSE = sum (test - ref)^2 / sum ref^2, and the largest |test - ref| (8-bit units). Same sizes required.
+struct image_diff {
+    double nmse = 0.0, max_abs = 0.0;
+};
+image_diff compare_images(const shaded_image& test, const shaded_image& ref);
+
 // Per pixel, the largest absolute channel difference |a - b| (8-bit units). Same sizes required.
 std::vector<double> abs_error(const shaded_image& a, const shaded_image& b);
 
@@ -46,5 +53,12 @@ rgb_image heat_map(const std::vector<double>& values, unsigned width, unsigned h
 // space; lower case printed as upper case; other characters as '?').
 rgb_image side_by_side(const std::vector<rgb_image>& images, const std::vector<std::string>& labels = {},
                        unsigned gap = 8);
+
+// Images one below the other, left-aligned, on the same dark background (e.g. rows of side_by_side).
+rgb_image stacked(const std::vector<rgb_image>& rows);
+
+// The key of heat_map at `full_scale`: a colour bar from 0 to full_scale with five tick labels and
+// the caption `caption`, centred in a width x height dark image (sized to sit beside heat maps).
+rgb_image heat_map_legend(unsigned width, unsigned height, double full_scale, const std::string& caption);
 
 }  // namespace shading::scene

@@ -121,15 +121,22 @@ rgb shade_phong(const pixel_geometry& g, const material& m, const std::vector<li
     });
 }
 
-rgb shade_device(const pixel_geometry& g, const material& m, const std::vector<light>& lights,
-                 const device_config& dev) {
+rgb shade_specular(const pixel_geometry& g, const material& m, const std::vector<light>& lights,
+                   const specular_fn& unit) {
     op_counts* ops = g.n.x.counts();
     return shade_common(g, m, lights, [&](std::size_t li, cnum ndh) {
         const rgb ks_i = m.k_s * lights[li].intensity;  // frame constants: the device's 8-bit codes
         const std::array<uint64_t, 3> ksi{ksi_code(ks_i.x), ksi_code(ks_i.y), ksi_code(ks_i.z)};
-        const auto out = device_specular(dev, m.n, cos_code(ndh.value()), ksi);
+        const auto out = unit(m.n, cos_code(ndh.value()), ksi);
         return std::array<cnum, 3>{cnum(device_out_value(out[0]), ops), cnum(device_out_value(out[1]), ops),
                                    cnum(device_out_value(out[2]), ops)};
+    });
+}
+
+rgb shade_device(const pixel_geometry& g, const material& m, const std::vector<light>& lights,
+                 const device_config& dev) {
+    return shade_specular(g, m, lights, [&dev](unsigned n, uint32_t code, const std::array<uint64_t, 3>& ksi) {
+        return device_specular(dev, n, code, ksi);
     });
 }
 
@@ -140,6 +147,12 @@ shaded_image render_phong(const rasterised& r, render_stats* stats) {
 shaded_image render_device(const rasterised& r, const device_config& dev, render_stats* stats) {
     return render(r, stats,
                   [&r, &dev](const pixel_geometry& g, const material& m) { return shade_device(g, m, r.src->lights, dev); });
+}
+
+shaded_image render_specular(const rasterised& r, const specular_fn& unit, render_stats* stats) {
+    return render(r, stats, [&r, &unit](const pixel_geometry& g, const material& m) {
+        return shade_specular(g, m, r.src->lights, unit);
+    });
 }
 
 }  // namespace shading::scene

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,12 @@ struct device_config {
 std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, uint32_t cos_code,
                                         const std::array<uint64_t, 3>& ksi);
 
+// Any specular unit with the devices' interface: (n, Q1.15 cos code, 8-bit k_s*I codes) -> out25..27
+// codes (Q9.8). For models that are not scene devices (studies' variants, comparison designs); the
+// image is shaded exactly as through device_specular.
+using specular_fn =
+    std::function<std::array<uint64_t, 3>(unsigned n, uint32_t cos_code, const std::array<uint64_t, 3>& ksi)>;
+
 // x^n for an integer n >= 1 by left-to-right binary exponentiation: floor(log2 n) squarings and
 // popcount(n) - 1 further multiplications, all counted; exact to double rounding.
 cnum pow_int(cnum x, unsigned n);
@@ -43,6 +50,8 @@ cnum pow_int(cnum x, unsigned n);
 rgb shade_phong(const pixel_geometry& g, const material& m, const std::vector<light>& lights);
 rgb shade_device(const pixel_geometry& g, const material& m, const std::vector<light>& lights,
                  const device_config& dev);
+rgb shade_specular(const pixel_geometry& g, const material& m, const std::vector<light>& lights,
+                   const specular_fn& unit);
 
 // An image of reals in 8-bit units (clamped to [0, 255], not rounded); empty pixels are 0.
 struct shaded_image {
@@ -67,5 +76,6 @@ struct render_stats {
 
 shaded_image render_phong(const rasterised& r, render_stats* stats = nullptr);
 shaded_image render_device(const rasterised& r, const device_config& dev, render_stats* stats = nullptr);
+shaded_image render_specular(const rasterised& r, const specular_fn& unit, render_stats* stats = nullptr);
 
 }  // namespace shading::scene

@@ -1,7 +1,9 @@
 // Renders a scene's two per-pixel references to PNG: Phong with exact cos^n, and per-pixel shading
 // through a specular device's bit-accurate golden model; prints the counted operations per pixel,
-// the device image's error against Phong and the time taken.
+// the device image's error against Phong and the time taken. --compare adds compare.png: Phong and
+// several devices' images above their error maps, all at one --error-scale.
 //   build/bin/render_reference --scene head --size 256 --device minimax --out out/scene
+//   build/bin/render_reference --scene head --size 512 --n 20 --compare patent,squared --out out/scene/compare
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -9,6 +11,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "scene/image.h"
 #include "scene/raster.h"
@@ -41,7 +45,11 @@ int main(int argc, char* argv[]) {
     double err_scale = 8.0, depth_step_arg = 0.02;
     app.add_option("--scene", scene_arg, "built-in scene (sphere, torus, head) or a path to an OBJ file");
     app.add_option("--size", size, "image width and height in pixels")->check(CLI::Range(1u, 8192u));
-    app.add_option("--device", device_arg, "specular device: patent, minimax, rom_matched, ua22802");
+    std::vector<std::string> compare_arg;
+    app.add_option("--device", device_arg, "specular device: patent, minimax, rom_matched, ua22802, squared");
+    app.add_option("--compare", compare_arg,
+                   "devices (comma-separated) for compare.png: Phong and their images above their error maps")
+        ->delimiter(',');
     app.add_option("--mode", mode_arg, "overflow mode of the device's ADD11: saturate or wrap");
     app.add_option("--n", n_override, "override the material's exponent n (1..1000)");
     app.add_option("--error-scale", err_scale, "8-bit error shown as white in the heat map")->check(CLI::PositiveNumber);
@@ -55,6 +63,8 @@ int main(int argc, char* argv[]) {
         if (mode_arg != "saturate" && mode_arg != "wrap") throw scene_error("unknown --mode '" + mode_arg + "'");
         const device_config dev{parse_device(device_arg),
                                 mode_arg == "wrap" ? overflow_mode::wrap : overflow_mode::saturate};
+        std::vector<device_config> compare_devs;  // checked before any rendering
+        for (const std::string& name : compare_arg) compare_devs.push_back({parse_device(name), dev.mode});
         // A name that is no file and does not end in .obj is taken as a built-in scene's name (so an
         // unknown one is reported as such, with the list of names).
         const bool looks_like_obj = scene_arg.size() > 4 && scene_arg.substr(scene_arg.size() - 4) == ".obj";
@@ -73,16 +83,7 @@ int main(int argc, char* argv[]) {
         const shaded_image device = render_device(r, dev, &sd);
 
         // NMSE of the device image against Phong over the covered pixels and channels.
-        double num = 0.0, den = 0.0, worst = 0.0;
-        for (std::size_t i = 0; i < phong.value.size(); ++i) {
-            if (!phong.covered[i]) continue;
-            for (int c = 0; c < 3; ++c) {
-                const double d = device.value[i][c] - phong.value[i][c];
-                num += d * d;
-                den += phong.value[i][c] * phong.value[i][c];
-                worst = std::max(worst, std::abs(d));
-            }
-        }
+        const image_diff diff = compare_images(device, phong);
         const auto err = abs_error(device, phong);
 
         // The places where the visible surface jumps along each line, drawn over a dimmed Phong image:
@@ -121,7 +122,30 @@ int main(int argc, char* argv[]) {
         print_counts("device reference", sd);
         std::printf("discontinuities along the lines: %zu depth steps (> %g) or object changes, %zu coverage edges\n",
                     n_steps, depth_step_arg, n_cover);
-        std::printf("device vs Phong: NMSE %.3e, largest error %.2f (8-bit levels)\n", den > 0 ? num / den : 0.0, worst);
+        std::printf("device vs Phong: NMSE %.3e, largest error %.2f (8-bit levels)\n", diff.nmse, diff.max_abs);
+        if (!compare_arg.empty()) {
+            // One sheet: Phong and each device on top, a key and each device's error map below it.
+            char key[96];
+            std::snprintf(key, sizeof key, "ERROR AGAINST PHONG, 8-BIT LEVELS (WHITE: %g AND ABOVE)", err_scale);
+            std::vector<rgb_image> top{a}, bottom{heat_map_legend(a.width, a.height, err_scale, key)};
+            std::vector<std::string> top_labels{"PHONG, EXACT COS^N"}, bottom_labels{""};
+            for (const device_config& cd : compare_devs) {
+                const std::string name = device_name(cd.device);
+                const shaded_image img = render_device(r, cd);
+                const image_diff d = compare_images(img, phong);
+                char label[96];
+                std::snprintf(label, sizeof label, "DEVICE %s, N = %u", name.c_str(), s.objects.front().mat.n);
+                top.push_back(to_rgb8(img));
+                top_labels.emplace_back(label);
+                std::snprintf(label, sizeof label, "%s - PHONG: NMSE %.1e, MAX %.2f", name.c_str(), d.nmse, d.max_abs);
+                bottom.push_back(heat_map(abs_error(img, phong), phong.width, phong.height, err_scale, &phong.covered));
+                bottom_labels.emplace_back(label);
+                std::printf("compare %s vs Phong: NMSE %.3e, largest error %.2f (8-bit levels)\n", name.c_str(), d.nmse,
+                            d.max_abs);
+            }
+            save_png(stacked({side_by_side(top, top_labels), side_by_side(bottom, bottom_labels)}), out_dir + "/compare.png");
+            std::printf("wrote %s/compare.png (error maps white at %g levels)\n", out_dir.c_str(), err_scale);
+        }
         std::printf("wrote %s/{phong,device_%s,error_%s,sheet_%s,discontinuities}.png\n", out_dir.c_str(), dname.c_str(), dname.c_str(),
                     dname.c_str());
     } catch (const std::exception& e) {

@@ -376,6 +376,38 @@ TEST(SceneShade, DeviceReferenceEqualsGolden) {
         }
 }
 
+// Any specular unit is shaded as a device: its out codes (Q9.8) are added as 8-bit levels, and it
+// is asked with the material's n, the pixel's cos code and the 8-bit k_s I codes.
+TEST(SceneShade, SpecularUnitIsShadedAsADevice) {
+    const material m = hand_material();
+    const uint32_t code = static_cast<uint32_t>(std::floor(1.8 / std::sqrt(3.6) * 32768.0 + 0.5));
+    unsigned calls = 0;
+    const specular_fn unit = [&](unsigned n, uint32_t c, const std::array<uint64_t, 3>& ksi) {
+        ++calls;
+        EXPECT_EQ(n, m.n);
+        EXPECT_EQ(c, code);
+        EXPECT_EQ(ksi, (std::array<uint64_t, 3>{51, 51, 51}));  // 0.2 * 255
+        return std::array<uint64_t, 3>{256, 512, 0};              // 1.0, 2.0, 0.0 levels
+    };
+    op_counts ops;
+    const rgb v = shade_specular(hand_pixel(&ops), m, {light{}}, unit);
+    const rgb diffuse = 255.0 * (m.ambient + 0.8 * m.k_d);
+    EXPECT_EQ(calls, 1u);
+    EXPECT_NEAR(v.x, diffuse.x + 1.0, 1e-9);
+    EXPECT_NEAR(v.y, diffuse.y + 2.0, 1e-9);
+    EXPECT_NEAR(v.z, diffuse.z, 1e-9);
+    // A whole frame through a unit that calls the squared device's golden model is that device's.
+    const world s = builtin_scene("head", SHADING_SOURCE_DIR, 32, 32);
+    const rasterised r = rasterise(s);
+    const device_config dev{specular_device::squared, overflow_mode::saturate};
+    const shaded_image a = render_device(r, dev);
+    const shaded_image b = render_specular(r, [&dev](unsigned n, uint32_t c, const std::array<uint64_t, 3>& ksi) {
+        return device_specular(dev, n, c, ksi);
+    });
+    EXPECT_EQ(a.value, b.value);
+    EXPECT_EQ(a.covered, b.covered);
+}
+
 // The head at 64x64: it fills a good part of the frame, has a specular highlight (red above
 // 255 (ambient + k_d) = 186, which diffuse light alone cannot reach), and the tuned device's image
 // is close to Phong's (the trial: NMSE of order 1e-3 from the BRDF's clamped tail).
@@ -423,6 +455,47 @@ TEST(SceneImage, HeatMapEnds) {
     EXPECT_EQ(h.at(0, 0)[0] + h.at(0, 0)[1] + h.at(0, 0)[2], 0);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(h.at(1, 0)[c], 255);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(h.at(2, 0)[c], 255);
+}
+
+// NMSE and largest error by hand: ref (10, 20, 30) and an uncovered pixel; test (11, 20, 27) and
+// anything on the uncovered pixel: NMSE = (1 + 0 + 9) / (100 + 400 + 900), largest error 3.
+TEST(SceneImage, CompareImagesHandWorked) {
+    shaded_image ref, test;
+    ref.width = test.width = 2;
+    ref.height = test.height = 1;
+    ref.value = {rgb(10, 20, 30), rgb(0.0)};
+    ref.covered = {1, 0};
+    test.value = {rgb(11, 20, 27), rgb(200, 0, 0)};
+    test.covered = {1, 1};
+    const image_diff d = compare_images(test, ref);
+    EXPECT_DOUBLE_EQ(d.nmse, 10.0 / 1400.0);
+    EXPECT_DOUBLE_EQ(d.max_abs, 3.0);
+    shaded_image other = ref;
+    other.width = 1;
+    other.height = 2;
+    EXPECT_THROW(compare_images(other, ref), image_error);
+}
+
+// Rows stacked left-aligned on the sheets' background (24); the heat map's key: its bar runs from
+// the map's 0 (black) to its full scale (white); too small to draw: background only.
+TEST(SceneImage, StackedAndLegend) {
+    const rgb_image s = stacked({rgb_image(3, 2, 7), rgb_image(5, 1, 9)});
+    EXPECT_EQ(s.width, 5u);
+    EXPECT_EQ(s.height, 3u);
+    EXPECT_EQ(s.at(2, 1)[0], 7);
+    EXPECT_EQ(s.at(4, 1)[0], 24);
+    EXPECT_EQ(s.at(4, 2)[0], 9);
+    const rgb_image k = heat_map_legend(200, 100, 8.0, "KEY");
+    ASSERT_EQ(k.width, 200u);
+    ASSERT_EQ(k.height, 100u);
+    const unsigned y = 50;  // the bar's middle line: (100 - 24) / 2 + 12
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(k.at(16, y)[c], 0) << c;          // left end: 0
+        EXPECT_EQ(k.at(200 - 17, y)[c], 255) << c;  // right end: full scale
+        EXPECT_EQ(k.at(5, y)[c], 24) << c;          // margin: background
+    }
+    const rgb_image tiny = heat_map_legend(10, 10, 8.0, "KEY");
+    EXPECT_TRUE(std::all_of(tiny.data.begin(), tiny.data.end(), [](uint8_t v) { return v == 24; }));
 }
 
 // Uncounted geometry (ops = nullptr) gives the same values as counted geometry.

@@ -1,18 +1,22 @@
-// Accuracy study of the quadratic BRDF (seed 001) and of the devices built on it. For every
-// n in [1, 1000] and every method: the largest relative error against cos^n where cos^n >= 0.56
-// and the NMSE over the 32769 Q1.15 codes of cos in [0, 1] (study_metrics.h). Writes, into --out:
-//   accuracy.csv            one row per n, two columns per method (+ the a of each generator)
-//   accuracy_summary.csv    one row per method: worst cases, whether seed 001's 4 % holds
-//   fig2_curve.csv          cos^n and the approximations along cos for --fig2-n (seed 001, Fig. 2)
+// Accuracy study of the quadratic BRDF (the quadratic-BRDF paper), of the devices built on it and of
+// our squared-quadratic law. For every n in [1, --n-max] and every method: the largest relative
+// error against cos^n where cos^n >= 0.56, the NMSE over the 32769 Q1.15 codes of cos in [0, 1]
+// (study_metrics.h) and the NMSE over the distribution of cos = N.H on the rendered head
+// (head_surface.h). Writes, into --out:
+//   accuracy.csv            one row per n, three columns per method (+ the a of each generator)
+//   accuracy_summary.csv    one row per method: worst cases, whether the paper's 4 % holds
+//   fig2_curve.csv          cos^n and the approximations along cos for --fig2-n (the paper's Fig. 2)
 //   rom_fraction_sweep.csv  the measurement that fixed the ROM word's fraction bits
 //   hw_cost.csv             ROM bits, multiplier cells and adder bits per design
 // and appends one summary row per method to $SHADING_SUMMARY.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <functional>
@@ -22,12 +26,17 @@
 
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
+#include "formats/squared_formats.h"
 #include "golden/specular_golden.h"
+#include "golden/squared_golden.h"
 #include "formats/ua22802_formats.h"
 #include "golden/ua22802_golden.h"
 #include "formats/ua60553_formats.h"
 #include "golden/ua60553_tuned_golden.h"
+#include "head_surface.h"
+#include "study_devices.h"
 #include "study_metrics.h"
+#include "trial_law.h"
 
 using namespace shading;
 using namespace shading::study;
@@ -39,27 +48,23 @@ struct method {
     std::function<double(unsigned n, uint64_t code)> f;
 };
 
-std::vector<method> methods() {
+// `trial_a`: the fitted a of the trial law per n (trial_law.h).
+std::vector<method> methods(const std::vector<double>& trial_a) {
     auto c_of = [](uint64_t code) { return to_real(code, spec::cos_fmt); };
-    return {
+    std::vector<method> ms{
         {"quad_exact", "quadratic, exact a(n), real-valued (clamped to [0,1])",
          [c_of](unsigned n, uint64_t code) {
              return std::clamp(ref::quadratic(c_of(code), ref::a_exact(n)), 0.0, 1.0);
          }},
-        {"rom", "UA 22802 ROM device (Q10.6 a, bit-accurate)",
-         [](unsigned n, uint64_t code) { return datapath_brdf(golden_a_rom(n), ua22802::a_fmt.frac, code); }},
-        {"patent", "UA 60553, patent a = 0.7890625 n + 0.5 (bit-accurate)",
-         [](unsigned n, uint64_t code) {
-             return datapath_brdf(golden_a_linear(n, ua60553::patent), ua60553::a_fmt.frac, code);
-         }},
-        {"minimax", "UA 60553 tuned, a = 0.7890625 n - 0.625, n<2: a=0 (bit-accurate)",
-         [](unsigned n, uint64_t code) {
-             return datapath_brdf(golden_a_tuned(n, ua60553::minimax), ua60553::a_fmt.frac, code);
-         }},
-        {"rom_matched", "UA 60553 tuned, a = 0.7890625 n - 0.5703125, n<2: a=0 (bit-accurate)",
-         [](unsigned n, uint64_t code) {
-             return datapath_brdf(golden_a_tuned(n, ua60553::rom_matched), ua60553::a_fmt.frac, code);
-         }},
+    };
+    for (const study_device& d : study_devices()) ms.push_back({d.id, d.label, d.brdf});
+    const std::vector<method> laws{
+        {"squared_law", "squared-quadratic law (ours), real-valued",
+         [c_of](unsigned n, uint64_t code) { return ref::squared_law(c_of(code), n); }},
+        {"trial_inflection", "trial law, n' in [2,4), a at the inflection (real)",
+         [c_of](unsigned n, uint64_t code) { return trial_law(c_of(code), trial_a_inflection(n), n); }},
+        {"trial_fitted", "trial law, n' in [2,4), a fitted on the head (real)",
+         [c_of, &trial_a](unsigned n, uint64_t code) { return trial_law(c_of(code), trial_a[n], n); }},
         {"schlick", "Schlick c/(n - n c + c)",
          [c_of](unsigned n, uint64_t code) { return ref::schlick(c_of(code), n); }},
         {"cosk", "(cos k gamma)^(n/k) as printed",
@@ -70,6 +75,8 @@ std::vector<method> methods() {
              return ref::cos_k_gamma(c_of(code), n / k, k);  // exponent (n/k)/k
          }},
     };
+    ms.insert(ms.end(), laws.begin(), laws.end());
+    return ms;
 }
 
 // Hardware cost (README, "Cost"): multiplier cells = WA x WB of each array multiplier (a multiplier
@@ -112,79 +119,124 @@ std::vector<cost> costs() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    CLI::App app{"accuracy study of the quadratic BRDF and the UA 22802 / UA 60553 devices"};
-    std::string out_dir = "out";
-    unsigned fig2_n = 10;
+    CLI::App app{"accuracy study of the quadratic BRDF, the UA 22802 / UA 60553 devices and the squared-quadratic law"};
+    std::string out_dir = "out", data_dir = SHADING_SOURCE_DIR;
+    unsigned fig2_n = 10, size = 512, n_max = 1000;
     app.add_option("--out", out_dir, "output directory");
     app.add_option("--fig2-n", fig2_n, "n of the Fig. 2 curve")->check(CLI::Range(1u, 1000u));
+    app.add_option("--n-max", n_max, "study n in [1, n-max] (a short run for the tests)")->check(CLI::Range(1u, 1000u));
+    app.add_option("--size", size, "the head's image size for the cos distribution")->check(CLI::Range(16u, 4096u));
+    app.add_option("--data-dir", data_dir, "repository root holding data/head/");
     CLI11_PARSE(app, argc, argv);
+    fig2_n = std::min(fig2_n, n_max);
+
+    // The distribution of N.H on the head, and the trial law's a fitted on it for every n.
+    // Timing: CPU seconds of this process (the machine is shared) and wall-clock seconds.
+    std::clock_t cpu = std::clock();
+    auto t0 = std::chrono::steady_clock::now();
+    const auto lap = [&cpu, &t0](const char* what) {
+        const std::clock_t c = std::clock();
+        const auto t = std::chrono::steady_clock::now();
+        std::printf("%s in %.1f s CPU (%.1f s wall)\n", what, static_cast<double>(c - cpu) / CLOCKS_PER_SEC,
+                    std::chrono::duration<double>(t - t0).count());
+        cpu = c, t0 = t;
+    };
+    cos_distribution dist;
+    try {
+        const head_surface head(data_dir, size);
+        dist = nh_distribution(head.raster());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "accuracy_study: %s\n", e.what());
+        return 1;
+    }
+    std::vector<double> trial_a(1001, 0.0);
+    for (unsigned n = 1; n <= n_max; ++n) trial_a[n] = trial_a_fitted(dist, n);
+    std::printf("head %ux%u: %zu (pixel, light) samples with N.L > 0, %zu distinct N.H codes\n", size, size,
+                dist.samples, dist.codes.size());
+    lap("the head's distribution and the trial law's a fitted for every n");
 
     const grid g;
-    const auto ms = methods();
+    const auto ms = methods(trial_a);
     const std::size_t M = ms.size();
-    std::vector<std::vector<double>> maxrel(M, std::vector<double>(1001)), nm(M, std::vector<double>(1001));
+    std::vector<std::vector<double>> maxrel(M, std::vector<double>(1001)), nm(M, std::vector<double>(1001)),
+        hnm(M, std::vector<double>(1001));
 
-    std::vector<double> exact(spec::cos_one + 1);
-    for (unsigned n = 1; n <= 1000; ++n) {
+    // Each method once per code and n; the three measures read the same values.
+    std::vector<double> exact(spec::cos_one + 1), vals(spec::cos_one + 1);
+    for (unsigned n = 1; n <= n_max; ++n) {
         for (uint64_t c = 0; c <= spec::cos_one; ++c) exact[c] = ref::cos_pow(to_real(c, spec::cos_fmt), n);
+        double den = 0, hden = 0;
+        for (uint64_t c = 0; c <= spec::cos_one; ++c) den += exact[c] * exact[c];
+        for (std::size_t i = 0; i < dist.codes.size(); ++i) hden += dist.weight[i] * exact[dist.codes[i]] * exact[dist.codes[i]];
         for (std::size_t m = 0; m < M; ++m) {
             const auto& f = ms[m].f;
-            maxrel[m][n] = g.max_rel_err_056(n, [&](uint64_t code) { return f(n, code); });
-            double num = 0, den = 0;
+            double num = 0, hnum = 0;
             for (uint64_t c = 0; c <= spec::cos_one; ++c) {
-                const double e = f(n, c) - exact[c];
+                vals[c] = f(n, c);
+                const double e = vals[c] - exact[c];
                 num += e * e;
-                den += exact[c] * exact[c];
             }
+            for (std::size_t i = 0; i < dist.codes.size(); ++i) {
+                const double e = vals[dist.codes[i]] - exact[dist.codes[i]];
+                hnum += dist.weight[i] * e * e;
+            }
+            maxrel[m][n] = g.max_rel_err_056(n, [&vals](uint64_t code) { return vals[code]; });
             nm[m][n] = num / den;
+            hnm[m][n] = hnum / hden;
         }
     }
+    lap("every method measured for every n");
 
     std::ofstream csv(out_dir + "/accuracy.csv");
-    csv << "n,cosk_k,a_exact,a_rom,a_patent,a_minimax,a_rom_matched";
-    for (const auto& m : ms) csv << ",maxrel056_" << m.id << ",nmse_" << m.id;
+    csv << "n,cosk_k,a_exact,a_rom,a_patent,a_minimax,a_rom_matched,k_squared,a_squared,k_trial,a_trial_inflection,"
+           "a_trial_fitted";
+    for (const auto& m : ms) csv << ",maxrel056_" << m.id << ",nmse_" << m.id << ",hnmse_" << m.id;
     csv << '\n';
     csv.precision(9);
-    for (unsigned n = 1; n <= 1000; ++n) {
+    for (unsigned n = 1; n <= n_max; ++n) {
+        const auto sq = golden_squared_a(n);
         csv << n << ',' << cosk_k_for(n) << ',' << ref::a_exact(n) << ','
             << to_real(golden_a_rom(n), ua22802::a_fmt) << ','
             << to_real(golden_a_linear(n, ua60553::patent), ua60553::a_fmt) << ','
             << to_real(golden_a_tuned(n, ua60553::minimax), ua60553::a_fmt) << ','
-            << to_real(golden_a_tuned(n, ua60553::rom_matched), ua60553::a_fmt);
-        for (std::size_t m = 0; m < M; ++m) csv << ',' << maxrel[m][n] << ',' << nm[m][n];
+            << to_real(golden_a_tuned(n, ua60553::rom_matched), ua60553::a_fmt) << ',' << sq.k << ','
+            << to_real(sq.a, squared::a_fmt) << ',' << trial_k(n) << ',' << trial_a_inflection(n) << ',' << trial_a[n];
+        for (std::size_t m = 0; m < M; ++m) csv << ',' << maxrel[m][n] << ',' << nm[m][n] << ',' << hnm[m][n];
         csv << '\n';
     }
 
-    // Per method: worst over n in [1, 512] and [1, 1000], the n where it occurs, seed 001's claim.
+    // Per method: worst over n in [1, 512] and [1, 1000], the n where it occurs, the paper's claim.
     std::ofstream sum(out_dir + "/accuracy_summary.csv");
-    sum << "method,label,worst_maxrel056_1_512,at_n,worst_maxrel056_1_1000,at_n,seed_4pct_holds_1_512,"
-           "worst_nmse_1_1000,at_n,n_above_4pct\n";
+    sum << "method,label,worst_maxrel056_1_512,at_n,worst_maxrel056_1_1000,at_n,paper_4pct_holds_1_512,"
+           "worst_nmse_1_1000,at_n,n_above_4pct,n_above_1pct,worst_head_nmse_1_1000,at_n\n";
     const char* summary_path = std::getenv("SHADING_SUMMARY");
     std::ofstream tsv;
     if (summary_path != nullptr && *summary_path != '\0') tsv.open(summary_path, std::ios::app);
-    std::printf("%-11s %12s %6s %12s %6s %6s %12s %6s\n", "method", "worst<=512", "at n", "worst<=1000",
-                "at n", "<=4%", "worst NMSE", "at n");
+    std::printf("%-16s %11s %5s %11s %5s %5s %5s %10s %5s %10s %5s\n", "method", "worst<=512", "at n", "worst<=1000",
+                "at n", "<=4%", ">1%", "worst NMSE", "at n", "head NMSE", "at n");
     std::size_t points = 0;
-    for (unsigned n = 1; n <= 1000; ++n) points += g.codes(n).size();
+    for (unsigned n = 1; n <= n_max; ++n) points += g.codes(n).size();
     for (std::size_t m = 0; m < M; ++m) {
         auto arg = [&](const std::vector<double>& v, unsigned hi) {
+            hi = std::min(hi, n_max);
             return static_cast<unsigned>(std::max_element(v.begin() + 1, v.begin() + hi + 1) - v.begin());
         };
-        const unsigned n512 = arg(maxrel[m], 512), n1000 = arg(maxrel[m], 1000), nn = arg(nm[m], 1000);
+        const unsigned n512 = arg(maxrel[m], 512), n1000 = arg(maxrel[m], 1000), nn = arg(nm[m], 1000),
+                       nh = arg(hnm[m], 1000);
         const bool holds = maxrel[m][n512] <= 0.04;
-        unsigned above = 0;
-        for (unsigned n = 1; n <= 1000; ++n) above += maxrel[m][n] > 0.04;
+        unsigned above4 = 0, above1 = 0;
+        for (unsigned n = 1; n <= n_max; ++n) above4 += maxrel[m][n] > 0.04, above1 += maxrel[m][n] > 0.01;
         sum << ms[m].id << ",\"" << ms[m].label << "\"," << maxrel[m][n512] << ',' << n512 << ','
             << maxrel[m][n1000] << ',' << n1000 << ',' << (holds ? "yes" : "no") << ',' << nm[m][nn] << ','
-            << nn << ',' << above << '\n';
-        std::printf("%-11s %12.5f %6u %12.5f %6u %6s %12.3e %6u\n", ms[m].id.c_str(), maxrel[m][n512], n512,
-                    maxrel[m][n1000], n1000, holds ? "yes" : "no", nm[m][nn], nn);
+            << nn << ',' << above4 << ',' << above1 << ',' << hnm[m][nh] << ',' << nh << '\n';
+        std::printf("%-16s %11.5f %5u %11.5f %5u %5s %5u %10.3e %5u %10.3e %5u\n", ms[m].id.c_str(), maxrel[m][n512],
+                    n512, maxrel[m][n1000], n1000, holds ? "yes" : "no", above1, nm[m][nn], nn, hnm[m][nh], nh);
         if (tsv.is_open())
             tsv << "accuracy\t" << ms[m].id << '\t' << points << "\t-\t" << std::fixed
                 << std::setprecision(2) << 100.0 * maxrel[m][n1000] << std::defaultfloat
-                << "%\t-\tworst max rel err above 0.56, n in [1,1000] (at n=" << n1000
-                << "); seed 4% for n<=512: " << (holds ? "holds" : "fails") << "; worst NMSE "
-                << nm[m][nn] << '\n';
+                << "%\t-\tworst max rel err above 0.56, n in [1," << n_max << "] (at n=" << n1000
+                << "); paper's 4% for n<=512: " << (holds ? "holds" : "fails") << "; worst NMSE "
+                << nm[m][nn] << ", on the head " << hnm[m][nh] << '\n';
     }
     // The tuned generators against the ROM, n by n.
     const auto index_of = [&ms](const char* id) {
@@ -196,16 +248,16 @@ int main(int argc, char* argv[]) {
         const std::size_t t = index_of(id);
         unsigned worse = 0, last_worse = 0;
         double excess = 0;
-        for (unsigned n = 1; n <= 1000; ++n) {
+        for (unsigned n = 1; n <= n_max; ++n) {
             const double d = maxrel[t][n] - maxrel[rom][n];
             if (d > 0) ++worse, last_worse = n;
             excess = std::max(excess, d);
         }
-        std::printf("%s vs rom, n by n: worse at %u of 1000 n (the largest such n: %u), by at most %.5f (absolute)\n",
-                    id, worse, last_worse, excess);
+        std::printf("%s vs rom, n by n: worse at %u of %u n (the largest such n: %u), by at most %.5f (absolute)\n",
+                    id, worse, n_max, last_worse, excess);
     }
 
-    // Seed 001, Fig. 2: the curves along cos for one n.
+    // The quadratic-BRDF paper's Fig. 2: the curves along cos for one n.
     std::ofstream fig2(out_dir + "/fig2_curve.csv");
     fig2 << "n,cos,exact";
     for (const auto& m : ms) fig2 << ',' << m.id;
@@ -223,7 +275,7 @@ int main(int argc, char* argv[]) {
              "max_excess_over_model_abs\n";
     for (int F = 2; F <= 10; ++F) {
         double worst = 0, excess_rel = 0, excess_abs = 0;
-        for (unsigned n = 1; n <= 1000; ++n) {
+        for (unsigned n = 1; n <= n_max; ++n) {
             const uint64_t a = static_cast<uint64_t>(std::floor(std::ldexp(ref::a_exact(n), F) + 0.5));
             const double e = g.max_rel_err_056(n, [&](uint64_t code) { return datapath_brdf(a, F, code); });
             worst = std::max(worst, e);
