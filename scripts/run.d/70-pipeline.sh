@@ -57,6 +57,9 @@ render adaptive --length adaptive --degree adaptive --device minimax
 render adaptive_fd --length adaptive --degree adaptive --eval fd
 # The same at 1024x1024, where our target is met (NMSE <= 1e-5 with >= 3x fewer long operations).
 size=1024 render adaptive_fd_1024 --length adaptive --degree adaptive --eval fd
+# The squared-quadratic device (ours) at n = 20: the image within NMSE 1e-5 of exact Phong at
+# 2x fewer long operations than the counted Phong (modules/squared/README.md).
+render squared_fd --device squared --n 20 --length adaptive --length-tol 0.9 --degree adaptive --degree-tol 0.25 --eval fd
 # Seed 004's own policy: quadratic in its zones 2, 4, 7, cubic elsewhere, one interval length.
 render zones --degree zones --m 3 --device ua22802
 
