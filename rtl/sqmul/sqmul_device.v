@@ -8,7 +8,8 @@
 //   MUL12..14    UA 60553's colour multipliers on RG_P's 16 high wires
 //   out29        strobe 17 AND the stage's done
 // Clocks per sample: floor(log2 n) + popcount(n) + 1 rising edges from strobe 17's fall to done
-// (the taking edge, one per square and per multiplication, the done edge): 3..18 for n in 1..1000.
+// (the taking edge, one per square and per multiplication, the done edge): 2..19 for n in 1..1000
+// (19 at n = 767, 895, 959, 991; 7 at n = 20; 13.9 on average).
 // Only instantiates and wires; every width from shading_formats.vh.
 `include "shading_formats.vh"
 module sqmul_device #(
