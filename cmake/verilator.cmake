@@ -4,8 +4,9 @@
 #
 # Sets SHADING_RTL (ON/OFF), SHADING_RTL_DIR (rtl/ in the source tree), SHADING_RTL_GENERATED (the
 # generated Verilog in the build tree: shading_formats.vh, ua22802_a_rom.v, rom_sweep/) and
-# SHADING_RTL_INCLUDE_DIRS (every folder the specular devices' modules are found in), and defines
-# shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1>).
+# SHADING_RTL_INCLUDE_DIRS (every folder the specular devices' modules are found in),
+# SHADING_RTL_SQUARED_DIRS (the same for the squared-quadratic device and its comparison designs),
+# and defines shading_verilate_rtl, shading_verilate_specular and shading_verilate_squared (below).
 # A project that pulls the model in with add_subdirectory() gets the SystemC modules alone.
 if(NOT SHADING_TOP_LEVEL)
   set(SHADING_RTL OFF)
@@ -25,14 +26,18 @@ set(SHADING_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
 set(SHADING_RTL_GENERATED ${PROJECT_BINARY_DIR}/generated/rtl)
 set(SHADING_RTL_INCLUDE_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/specular ${SHADING_RTL_DIR}/ua60553
     ${SHADING_RTL_DIR}/ua22802 ${SHADING_RTL_DIR}/tuned ${SHADING_RTL_GENERATED})
+# The squared-quadratic device, its series variant and the square-and-multiply baseline.
+set(SHADING_RTL_SQUARED_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/squared ${SHADING_RTL_DIR}/sqmul
+    ${SHADING_RTL_GENERATED})
 
 # The generated Verilog must exist when CMake configures: verilate() runs Verilator then, to learn the
 # C++ files it writes. So src/tools/gen_rtl.cpp is compiled and run here, and any change to it or to
 # the format tables re-runs CMake (the build then re-verilates, as the Verilog it reads changed).
+# It reads modules/squared/sq_count.h (plain C++) for the squaring controller's select codes.
 set(_gen_sources ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp ${PROJECT_SOURCE_DIR}/src/reference/brdf_reference.cpp)
 set(_gen_dir ${PROJECT_BINARY_DIR}/CMakeFiles/gen_rtl_configure)
 try_compile(_gen_ok ${_gen_dir} SOURCES ${_gen_sources}
-            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src"
+            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src;${PROJECT_SOURCE_DIR}/modules"
             CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
             OUTPUT_VARIABLE _gen_log COPY_FILE ${_gen_dir}/gen_rtl)
 if(NOT _gen_ok)
@@ -40,7 +45,8 @@ if(NOT _gen_ok)
 endif()
 file(GLOB _format_headers ${PROJECT_SOURCE_DIR}/src/formats/*.h)
 set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_gen_sources}
-             ${PROJECT_SOURCE_DIR}/src/reference/brdf_reference.h ${_format_headers})
+             ${PROJECT_SOURCE_DIR}/src/reference/brdf_reference.h ${_format_headers}
+             ${PROJECT_SOURCE_DIR}/modules/squared/sq_count.h)
 
 # _shading_gen_rtl(<file in SHADING_RTL_GENERATED> <gen_rtl mode> <arguments after the output>):
 # runs the generator, then copies only a changed file, so a re-configure does not re-verilate.
@@ -65,20 +71,20 @@ endforeach()
 # The same generator as a build target, for scripts that want other fraction-bit counts.
 add_executable(gen_rtl ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp)
 target_link_libraries(gen_rtl PRIVATE shading_golden)
+target_include_directories(gen_rtl PRIVATE ${PROJECT_SOURCE_DIR}/modules)
 
-# shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1>)
-#   Verilates rtl/specular/specular_device.v with that generator (0 UA 60553, 1 UA 22802, 2 tuned)
-#   and overflow mode into <target> as the SystemC module <prefix> (header <prefix>.h): pins of 2..64
-#   wires as sc_uint<W> (--pins-sc-uint), the SystemC model's own pin types, so both bind to the
-#   same signals; 1-wire pins as bool. Lint warnings (-Wall) fail the build; tracing is compiled in.
-function(shading_verilate_specular target prefix)
-  cmake_parse_arguments(ARG "" "AGEN;SATURATE" "" ${ARGN})
+# shading_verilate_rtl(<target> <prefix> TOP <module> SOURCE <file.v> DIRS <dirs...> [ARGS <verilator args...>])
+#   Verilates one RTL top into <target> as the SystemC module <prefix> (header <prefix>.h): pins of
+#   2..64 wires as sc_uint<W> (--pins-sc-uint), the SystemC model's own pin types, so both bind to
+#   the same signals; 1-wire pins as bool. Lint warnings (-Wall) fail the build; tracing is compiled in.
+function(shading_verilate_rtl target prefix)
+  cmake_parse_arguments(ARG "" "TOP;SOURCE" "DIRS;ARGS" ${ARGN})
   verilate(${target} SYSTEMC TRACE
            PREFIX ${prefix}
-           TOP_MODULE specular_device
-           SOURCES ${SHADING_RTL_DIR}/specular/specular_device.v
-           INCLUDE_DIRS ${SHADING_RTL_INCLUDE_DIRS}
-           VERILATOR_ARGS -Wall --pins-sc-uint -GAGEN=${ARG_AGEN} -GSATURATE=${ARG_SATURATE})
+           TOP_MODULE ${ARG_TOP}
+           SOURCES ${ARG_SOURCE}
+           INCLUDE_DIRS ${ARG_DIRS}
+           VERILATOR_ARGS -Wall --pins-sc-uint ${ARG_ARGS})
   target_link_libraries(${target} PRIVATE Threads::Threads)
   # Verilator's own headers and generated code leave parameters unused (verilated_vcd_sc.h).
   target_compile_options(${target} PRIVATE -Wno-unused-parameter)
@@ -93,4 +99,26 @@ function(shading_verilate_specular target prefix)
       endif()
     endforeach()
   endif()
+endfunction()
+
+# shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1>)
+#   rtl/specular/specular_device.v with that generator (0 UA 60553, 1 UA 22802, 2 tuned) and
+#   overflow mode.
+function(shading_verilate_specular target prefix)
+  cmake_parse_arguments(ARG "" "AGEN;SATURATE" "" ${ARGN})
+  shading_verilate_rtl(${target} ${prefix} TOP specular_device SOURCE ${SHADING_RTL_DIR}/specular/specular_device.v
+                       DIRS ${SHADING_RTL_INCLUDE_DIRS} ARGS -GAGEN=${ARG_AGEN} -GSATURATE=${ARG_SATURATE})
+endfunction()
+
+# shading_verilate_squared(<target> <prefix> TOP <squared_device|squared_series_device|sqmul_device> SATURATE <0|1>)
+#   The squared-quadratic device (rtl/squared), its series variant or the square-and-multiply
+#   baseline (rtl/sqmul), in that overflow mode.
+function(shading_verilate_squared target prefix)
+  cmake_parse_arguments(ARG "" "TOP;SATURATE" "" ${ARGN})
+  set(_dir squared)
+  if(ARG_TOP MATCHES "^sqmul")
+    set(_dir sqmul)
+  endif()
+  shading_verilate_rtl(${target} ${prefix} TOP ${ARG_TOP} SOURCE ${SHADING_RTL_DIR}/${_dir}/${ARG_TOP}.v
+                       DIRS ${SHADING_RTL_SQUARED_DIRS} ARGS -GSATURATE=${ARG_SATURATE})
 endfunction()

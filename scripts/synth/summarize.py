@@ -7,6 +7,7 @@ gates of the special case, registers not counted). Writes synth.csv and synth.md
 """
 import argparse
 import csv
+import glob
 import os
 import re
 import sys
@@ -106,7 +107,73 @@ DESCRIPTIONS = {
     "coef_c1_exact": "cubic coefficient unit, case 1, exact /3",
     "coef_c2_shift_add": "cubic coefficient unit, case 2, shift-and-add /3",
     "horner_unit": "Horner unit (Fig. 4) with its controller",
+    "squared_saturate": "squared-quadratic device (ours), iterative stage, saturating ADD11",
+    "squared_wrap": "squared-quadratic device (ours), iterative stage, wrapping ADD11",
+    "squared_series": "squared-quadratic device (ours), series stage (9 squarers), saturating",
+    "sqmul_saturate": "square-and-multiply baseline (one multiplier over the bits of n), saturating",
 }
+
+# Rising edges of clk from strobe 17's fall to output 29's rise (the taking edge, one per step,
+# the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v and rtl/sqmul/sqmul_ctrl.v
+# define them (checked against the golden models' counts by test_rtl_squared):
+# k + 2 = floor(log2 n) + 2, and floor(log2 n) + popcount(n) + 1. None for the combinational ones.
+CLOCKS = {
+    "squared_saturate": lambda n: n.bit_length() + 1,
+    "squared_wrap": lambda n: n.bit_length() + 1,
+    "sqmul_saturate": lambda n: n.bit_length() + bin(n).count("1"),
+}
+
+# The designs of the squared-quadratic comparison, in the table's order, and what each path is.
+COMPARISON = ("ua60553_saturate", "ua60553_patent", "ua22802", "squared_saturate", "squared_wrap",
+              "squared_series", "sqmul_saturate")
+PATHS = {
+    "loop": "register to register, the clock period: RG_SQ / RG_P -> multiplier (-> MX_B) -> multiplexer -> itself",
+    "rg2_to_load": "strobe 17 to register: RG2 -> ... -> RG_SQ / RG_P at the load, half a clock after the strobe at worst",
+    "rg1_to_load": "strobe 15 to register: RG1 -> generator -> MUL10 -> ADD11 -> RG_SQ at the load",
+    "rg1_to_ctrl": "strobe 15 to register: RG1 -> LZC (-> BSH1) -> the controller, at the taking edge",
+    "rg2_to_multiply": "RG2 -> clamp -> MX_B -> MUL_P -> MX_P -> RG_P in a multiplication step (2.5 clocks after the strobe at the earliest)",
+    "to_outputs": "result register -> colour multiplier -> output 25, within the done edge's half clock",
+    "rg2_to_outputs": "strobe 17 to output: RG2 -> Fig. 1 at n' -> 9 squarers -> MUL12 -> output 25",
+    "rg1_to_outputs": "strobe 15 to output: RG1 -> generator -> MUL10 -> ... -> 9 squarers -> output 25",
+}
+
+
+def write_comparison(out, by):
+    """The squared-quadratic device beside UA 60553, UA 22802 and its two comparison designs:
+    transistors, depth, clocks per sample (n in [1, 1000]: worst, at n = 20, mean) and paths."""
+    if not all(k in by for k in COMPARISON):
+        return
+    paths = {}
+    for f in sorted(glob.glob(os.path.join(out, "logs", "*.path.*.ltp"))):
+        variant, label = os.path.basename(f)[:-len(".ltp")].split(".path.")
+        paths.setdefault(variant, {})[label] = parse_ltp(f)
+    with open(os.path.join(out, "paths.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["variant", "path", "depth_gates", "what"])
+        for v in COMPARISON:
+            for label, depth in paths.get(v, {}).items():
+                w.writerow([v, label, depth, PATHS.get(label, "")])
+    ref = by["ua60553_saturate"]["transistors"]
+    with open(os.path.join(out, "synth.md"), "a") as f:
+        f.write("\n## The squared-quadratic device and the designs it is compared with\n\n")
+        f.write("Transistors against UA 60553 saturating (%d); clocks per sample: rising edges of clk from strobe "
+                "17's fall to output 29's rise, n in [1, 1000] (worst / n = 20 / mean); depth: `ltp -noff` of the "
+                "whole design; paths: the longest path of each kind, in gates (paths.csv).\n\n" % ref)
+        f.write("| design | transistors | x UA 60553 sat. | cells (flip-flops) | depth (gates) | clocks per sample "
+                "| paths (gates) |\n|---|---|---|---|---|---|---|\n")
+        for v in COMPARISON:
+            r = by[v]
+            if v in CLOCKS:
+                c = [CLOCKS[v](n) for n in range(1, 1001)]
+                clocks = "%d / %d / %.2f" % (max(c), CLOCKS[v](20), sum(c) / len(c))
+            else:
+                clocks = "none (combinational: Fig. 3)"
+            p = "; ".join("%s %s" % (k, d) for k, d in paths.get(v, {}).items()) or "—"
+            f.write("| %s | %d | %.2f | %d (%d) | %d | %s | %s |\n" % (
+                r["description"], r["transistors"], r["transistors"] / ref, r["cells"], r["flip_flops"],
+                r["depth_gates"], clocks, p))
+        f.write("\nPaths: %s.\n" % "; ".join("**%s** %s" % (k, v) for k, v in PATHS.items()))
+
 
 
 def write_differences(out, by, fmt):
@@ -115,6 +182,8 @@ def write_differences(out, by, fmt):
             "rom_f2", "rom_f10")
     if not all(k in by for k in need):
         return
+    if by["ua22802_rom_as_memory"]["hand_mult_cells"] == "":
+        return  # no hand count (out/hw_cost.csv is written by scripts/run.sh's accuracy step)
     g = lambda k, c="cells": by[k][c]  # noqa: E731
     with open(os.path.join(out, "synth.md"), "a") as f:
         f.write("\n## Where synthesis and our hand count differ\n\n")
@@ -220,6 +289,7 @@ def main():
                         (mem["transistors"] + mem["memory_bits"]) / free["transistors"],
                         free["depth_gates"], rom["depth_gates"]))
     write_differences(args.out, by, fmt)
+    write_comparison(args.out, by)
 
     # Every ROM read as a memory must hold exactly words x word bits of the format tables
     # (ua22802_formats.h via shading_formats.vh): the device's ROM (F = 6) is UA22802_ROM_BITS.

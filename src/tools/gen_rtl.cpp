@@ -19,9 +19,12 @@
 
 #include "formats/interp_formats.h"
 #include "formats/specular_formats.h"
+#include "formats/sqmul_formats.h"
+#include "formats/squared_formats.h"
 #include "formats/ua22802_formats.h"
 #include "formats/ua60553_formats.h"
 #include "reference/brdf_reference.h"
+#include "squared/sq_count.h"  // modules/: plain C++, the squaring controller's select codes
 
 namespace {
 
@@ -42,6 +45,13 @@ void define_bits(std::ostream& os, const std::string& name, unsigned width, uint
     os << "`define " << name << ' ' << width << "'b";
     for (unsigned i = width; i-- > 0;) os << ((bits >> i) & 1u);
     os << '\n';
+}
+
+// Wires a select bus needs for codes 0..max_code (modules/blocks/mux.h's select_width(max_code + 1)).
+unsigned select_wires(unsigned max_code) {
+    unsigned w = 1;
+    while ((1u << w) <= max_code) ++w;
+    return w;
 }
 
 int write_formats(const std::string& path) {
@@ -89,6 +99,41 @@ int write_formats(const std::string& path) {
     define(os, "UA22802_ROM_WORDS", ua22802::rom_words);
     define(os, "UA22802_ROM_BITS", ua22802::rom_bits);
     define(os, "UA22802_MUL10_DROP", spec::mul10_drop(ua22802::a_fmt.frac));
+
+    os << "\n// squared_formats.h: the squared-quadratic device (ours)\n";
+    define_fmt(os, "SQUARED_N", squared::n_fmt);
+    define(os, "SQUARED_Z_W", squared::z_width);
+    define(os, "SQUARED_Z_FULL", squared::z_full);
+    define_fmt(os, "SQUARED_MANT", squared::mant_fmt);
+    define_fmt(os, "SQUARED_F", squared::f_fmt);
+    define_fmt(os, "SQUARED_E", squared::e_fmt);
+    define(os, "SQUARED_ESH_W", squared::esh_width);
+    define(os, "SQUARED_ESH_FRAC", static_cast<uint64_t>(squared::esh_frac));
+    define_fmt(os, "SQUARED_BEND", squared::bend_fmt);
+    define_fmt(os, "SQUARED_A", squared::a_fmt);
+    define_fmt(os, "SQUARED_MUL10", squared::mul10_fmt);
+    define(os, "SQUARED_MUL10_DROP", squared::mul10_drop);
+    define(os, "SQUARED_COS_ALIGN", squared::cos_align);
+    define_fmt(os, "SQUARED_Q", squared::q_fmt);
+    define(os, "SQUARED_Q_ONE", squared::q_one);
+    define(os, "SQUARED_Q_SAT_LO", squared::q_sat_lo);
+    define(os, "SQUARED_Q_SAT_HI", squared::q_sat_hi);
+    define_fmt(os, "SQUARED_SQ", squared::sq_fmt);
+    define(os, "SQUARED_MAX_SQUARINGS", squared::max_squarings);
+    define(os, "SQUARED_SQ_TO_BRDF_DROP", squared::sq_to_brdf_drop);
+    // MX_SQ's inputs, at the select codes of the squaring controller (squared/sq_count.h).
+    using sel = squared::sq_count::select;
+    define(os, "SQUARED_MX_SQ_INPUTS", 3);
+    define(os, "SQUARED_SEL_W", select_wires(sel::square));
+    define(os, "SQUARED_SEL_HOLD", sel::hold);
+    define(os, "SQUARED_SEL_LOAD", sel::load);
+    define(os, "SQUARED_SEL_SQUARE", sel::square);
+
+    os << "\n// sqmul_formats.h: the square-and-multiply baseline (ours, for comparison)\n";
+    define_fmt(os, "SQMUL_P", sqmul::p_fmt);
+    define(os, "SQMUL_P_ONE", sqmul::p_one);
+    define(os, "SQMUL_COS_ALIGN", sqmul::cos_align);
+    define(os, "SQMUL_MAX_STEPS", sqmul::max_steps);
 
     os << "\n// interp_formats.h: seed 004's units\n";
     define_fmt(os, "INTERP_SAMPLE", interp::sample_fmt);

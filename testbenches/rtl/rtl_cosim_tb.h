@@ -3,9 +3,12 @@
 // pins through the same signals; one monitor per device samples its outputs at every rising edge
 // of its own out29_valid (specular_monitor), each sample is checked against the golden model
 // (specular_checker), and the RTL's k-th sample is compared with the model's k-th: the same
-// latched inputs, the same instant, the same three outputs.
+// latched inputs, the same instant, the same three outputs. The instant: the RTL has no delays,
+// so the model's sample comes later by its output-29 block's delay (0 for UA 60553's wire; the
+// squared-quadratic device's AND gate) and by nothing else, as every other path settles earlier.
 // Rtl is any module with the device's pins: a Verilated class built with --pins-sc-uint (pins of
-// 2..64 wires are sc_uint<W>, as ours), or a user's own RTL the same way (README).
+// 2..64 wires are sc_uint<W>, as ours), or a user's own RTL the same way (README). A device with a
+// clk pin (the squared-quadratic device) gets an sc_clock of the timing's period, shared by both.
 #pragma once
 
 #include <deque>
@@ -37,24 +40,38 @@ public:
     sc_core::sc_signal<bool> rtl_out29_valid{"rtl_out29_valid"};
 
     specular_checker checker, rtl_checker;  // the model's samples and the RTL's, against golden
+    std::unique_ptr<sc_core::sc_clock> clk;  // devices with a clk pin only
     Device dut;
     Rtl rtl;
     specular_stimulus stim;
     specular_monitor mon, rtl_mon;
 
     // `golden` checks both devices; `rtl_golden` (for the negative tests) replaces it for the RTL.
+    // Fig. 3's default strobe timing.
     template <typename... DeviceArgs>
     rtl_cosim_bench(const sc_core::sc_module_name& name, item_source<surface> surfaces,
+                    specular_checker::golden_fn golden, specular_checker::golden_fn rtl_golden,
+                    DeviceArgs&&... device_args)
+        : rtl_cosim_bench(name, std::move(surfaces), strobe_timing{}, std::move(golden), std::move(rtl_golden),
+                          std::forward<DeviceArgs>(device_args)...) {}
+
+    // The same with a strobe timing (and its clock period, for a device with a clk pin).
+    template <typename... DeviceArgs>
+    rtl_cosim_bench(const sc_core::sc_module_name& name, item_source<surface> surfaces, const strobe_timing& t,
                     specular_checker::golden_fn golden, specular_checker::golden_fn rtl_golden,
                     DeviceArgs&&... device_args)
         : sc_module(name),
           checker(std::move(golden)),
           rtl_checker(std::move(rtl_golden)),
+          clk(has_clk<Device>::value || has_clk<Rtl>::value ? std::make_unique<sc_core::sc_clock>("clk", t.clk_period)
+                                                            : nullptr),
           dut("dut", std::forward<DeviceArgs>(device_args)...),
           rtl("rtl"),
-          stim("stim", std::move(surfaces), strobe_timing{}),
+          stim("stim", std::move(surfaces), t),
           mon("mon", [this](const pixel_sample& s) { on_sample(s, ours_, theirs_, false); }),
           rtl_mon("rtl_mon", [this](const pixel_sample& s) { on_sample(s, theirs_, ours_, true); }) {
+        if constexpr (has_clk<Device>::value) dut.clk(*clk);
+        if constexpr (has_clk<Rtl>::value) rtl.clk(*clk);
         bind_inputs(dut);
         bind_inputs(rtl);
         bind_inputs(stim);
@@ -81,8 +98,8 @@ private:
         m.in19_ksi_r(in19_ksi_r); m.in21_ksi_g(in21_ksi_g); m.in23_ksi_b(in23_ksi_b);
     }
 
-    // Both monitors fire in the same instant (out29 is strobe 17 in both devices), in either
-    // order: a sample waits in its queue until the other side's arrives.
+    // Both monitors fire in the same instant, or the model's after the RTL's by its output-29 delay
+    // (in either order): a sample waits in its queue until the other side's arrives.
     void on_sample(const pixel_sample& s, std::deque<pixel_sample>& mine, std::deque<pixel_sample>& other,
                    bool is_rtl) {
         (is_rtl ? rtl_checker : checker).check(s);
@@ -97,8 +114,8 @@ private:
 
     void compare(const pixel_sample& model, const pixel_sample& rtl_s) {
         ++pairs_;
-        if (model.out == rtl_s.out && model.at == rtl_s.at && model.n == rtl_s.n && model.cos == rtl_s.cos &&
-            model.ksi == rtl_s.ksi)
+        if (model.out == rtl_s.out && model.at == rtl_s.at + dut.out29.delay() && model.n == rtl_s.n &&
+            model.cos == rtl_s.cos && model.ksi == rtl_s.ksi)
             return;
         if (++cross_mismatches_ > 10) return;
         std::ostringstream os;
