@@ -1,5 +1,5 @@
-# The RTL twin (rtl/) and its co-simulation with the SystemC model through `verilator --sc` (README,
-# "RTL twin (Verilog) and co-simulation"). Optional: without Verilator (Debian's `verilator`,
+# The RTL twin (rtl/) and its co-simulation with the SystemC model through `verilator --sc`
+# (rtl/README.md). Optional: without Verilator (Debian's `verilator`,
 # scripts/setup.sh installs it) there are no RTL targets or tests.
 #
 # Sets SHADING_RTL (ON/OFF), SHADING_RTL_DIR (rtl/ in the source tree), SHADING_RTL_GENERATED (the

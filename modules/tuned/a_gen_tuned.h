@@ -1,4 +1,4 @@
-// The tuned generator of `a` (README, "A better ROM-free a(n)"): the patent's MUL6 and ADD15 on
+// The tuned generator of `a` (modules/tuned/README.md, "A better ROM-free a(n)"): the patent's MUL6 and ADD15 on
 // the same buses, with node 32 carrying a signed constant (ua60553::tuned_generator, default the
 // search's winner ua60553::minimax: a = 0.7890625 n - 0.625), and one special case: n < 2 forces
 // a = 0 (an OR gate over n's bits 9..1 opens the key block between ADD15 and MUL10). A unit with

@@ -1,4 +1,4 @@
-// The tuned variant of UA 60553 (README, "A better ROM-free a(n)"): the specular datapath with
+// The tuned variant of UA 60553 (modules/tuned/README.md, "A better ROM-free a(n)"): the specular datapath with
 // the tuned generator of `a` (a_gen_tuned.h: signed node 32, n < 2 forces a = 0). The patent's
 // device, device_ua60553, is unchanged. Construct as
 // device_ua60553_tuned(name, mode, generator = ua60553::minimax, block delays).

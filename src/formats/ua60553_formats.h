@@ -32,10 +32,10 @@ inline constexpr qfmt a_fmt{18, false, 7};     // ADD15 = a: Q11.7, one bit wide
 namespace shading::ua60553 {
 
 // A ROM-free generator beyond formula 10, found by the study's search (testbenches/study,
-// README "A better ROM-free a(n)"): the same MUL6 and ADD15 on the same buses, but node 32 may
+// modules/tuned/README.md, "A better ROM-free a(n)"): the same MUL6 and ADD15 on the same buses, but node 32 may
 // carry a negative constant (its two's complement on a Q1.7 signed bus, sign-extended by ADD15),
 // and n < 2 forces a = 0 (an OR gate over n's bits 9..1 drives the key block on the a bus).
-// Why: a(n) = 2(1 - e^(-1/2)) n - 1/2 + O(1/n) = 0.78694 n - 0.5 (README), so the patent's slope is
+// Why: a(n) = 2(1 - e^(-1/2)) n - 1/2 + O(1/n) = 0.78694 n - 0.5 (modules/tuned/README.md), so the patent's slope is
 // right but its +0.5 has the wrong sign; and a(1) = 0 cannot lie on a line through a(2) = 1 with
 // slope 0.79.
 struct tuned_generator {

@@ -57,7 +57,7 @@ TEST(InterpLineGolden, HandWorkedRamp) {
 // The 200-pixel raster line (make_line: 6 intervals of 32 pixels and a last one of 8) through the
 // line unit: bit-exact against the golden chain, one pixel per clock with no bubble, `last` on the
 // last pixel of every interval, and max |I - exact| no larger than the figure measured for this
-// variant through the separate units (README, "Measured": the same pixels, so the same figure).
+// variant through the separate units (modules/interp/README.md, "Measured": the same pixels, so the same figure).
 template <typename Bench>
 void expect_raster_line(Bench& bench, const line_scenario& line, sample_set set, div3_mode mode,
                         double measured_max_error) {
@@ -94,7 +94,7 @@ void expect_raster_line(Bench& bench, const line_scenario& line, sample_set set,
 struct line_case {
     sample_set set;
     div3_mode mode;
-    double measured_max_error;  // intensity levels (README, "Measured")
+    double measured_max_error;  // intensity levels (modules/interp/README.md, "Measured")
 };
 void PrintTo(const line_case& c, std::ostream* os) {
     *os << (c.set == sample_set::case1 ? "case 1, " : "case 2, ") << (c.mode == div3_mode::shift_add ? "shift-and-add" : "exact");

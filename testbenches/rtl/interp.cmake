@@ -68,7 +68,7 @@ add_test(NAME rtl.lint.horner_unit
          COMMAND ${VERILATOR_BIN} --lint-only -Wall --top-module horner_unit ${SHADING_RTL_DIR}/interp/horner_unit.v
                  ${_interp_ydirs})
 
-# Synthesis smoke test (scripts/synth.sh, README "Hardware cost by synthesis"): the flow runs on the
+# Synthesis smoke test (scripts/synth.sh, docs/synthesis.md): the flow runs on the
 # smallest unit (UA 60553's generator), and yosys, reading the generated ROM case tables as memories,
 # counts exactly the ROM size of the format tables (16 384 bits at F = 6, and F = 2). Skipped (exit 3)
 # when yosys is not installed.

@@ -79,7 +79,7 @@ std::vector<method> methods(const std::vector<double>& trial_a) {
     return ms;
 }
 
-// Hardware cost (README, "Cost"): multiplier cells = WA x WB of each array multiplier (a multiplier
+// Hardware cost (modules/tuned/README.md, "Hardware cost"): multiplier cells = WA x WB of each array multiplier (a multiplier
 // by a hardwired constant keeps only the rows of its non-zero constant bits: WN x nnz); adder bits
 // = output width of each adder; gates = inputs of the special case's OR gate + AND gates of the key
 // block. Registers and the colour path are common to all and listed for completeness. Every width is

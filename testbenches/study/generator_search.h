@@ -1,4 +1,4 @@
-// Search of the ROM-free generators of `a` that cost no more than UA 60553's (README, "A better
+// Search of the ROM-free generators of `a` that cost no more than UA 60553's (modules/tuned/README.md, "A better
 // ROM-free a(n)"): a = n*K31 + s*K32 on the patent's buses (K31, |K32| Q0.7, a Q11.7), with
 //   K31: at most 4 non-zero bits (the patent's node 31 has 4), in [0.75, 0.83];
 //   K32: at most 3 non-zero bits, either sign (node 32 tied to the constant's two's complement);

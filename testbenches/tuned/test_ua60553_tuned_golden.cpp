@@ -81,7 +81,7 @@ TEST(UA60553TunedGolden, RomMatchedIsTheSearchChoiceClosestToTheRom) {
 
 TEST(UA60553TunedGolden, RomMatchedFollowsTheRomNByN) {
     // Computed here directly against cos^n, n by n: never more than 0.27 points above the ROM
-    // prototype, and no worse than it from n = 31 on (README, "A better ROM-free a(n)").
+    // prototype, and no worse than it from n = 31 on (modules/tuned/README.md, "A better ROM-free a(n)").
     for (unsigned n = 1; n <= 1000; ++n) {
         double tuned = 0, rom = 0;
         for (uint64_t c = spec::cos_one; c > 0; --c) {
