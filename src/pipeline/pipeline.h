@@ -89,6 +89,14 @@ std::vector<rgb_codes> golden_interval(const interval_job& job, const frame_cons
                                        interp::div3_mode div);
 
 // ---- The geometry side: planning a frame into intervals ----
+// How the geometry side computes N, V, L, H at the points it needs: `stepped` (the default) steps the
+// interpolated attributes along the line from point to point as a scan-line renderer does
+// (scene::span_stepper: per-triangle set-up, run starts, adds per step); `scratch` computes each point
+// from scratch (scene::geometry_at: barycentrics, one division, three interpolations). The plan and
+// its images are the same; only the counts differ (plan.geometry_stepped or plan.geometry).
+enum class geometry_unit { stepped, scratch };
+const char* geometry_unit_name(geometry_unit u);  // "stepped", "scratch"
+
 enum class length_policy { fixed, adaptive };
 enum class degree_policy { cubic, quadratic, zones, adaptive };
 const char* length_policy_name(length_policy p);  // "fixed", "adaptive"
@@ -108,6 +116,7 @@ struct plan_config {
     double depth_step = 0.02;              // world units: a depth jump that ends a segment (raster.h)
     bool surface_breaks = true;            // also end segments where neighbours' triangles share no vertex (a fold)
     evaluator eval = evaluator::horner;    // fd: fixed length keeps one m (tails exact); adaptive as Horner
+    geometry_unit unit = geometry_unit::stepped;  // which geometry count hardware_ops charges
 };
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
 // a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
@@ -130,6 +139,10 @@ struct plan {
     unsigned width = 0, height = 0;
     std::vector<interval_job> jobs;
     scene::op_counts geometry, decision;
+    // The same points' geometry (and dot products) stepped along each line in increasing x by one
+    // scene::span_stepper over the frame (its set-ups, run starts and steps in `stepping`).
+    scene::op_counts geometry_stepped;
+    scene::stepping_stats stepping;
     std::size_t geometry_points = 0;   // distinct pixels whose geometry was computed
     // Colour samples the adaptive policies evaluated (golden_sample) at pixels that are no job's
     // sample point: their check points. The sample stage's cost for these is the decision's too.
@@ -166,7 +179,7 @@ frame golden_frame(const plan& p, const frame_constants& k, const scene::device_
 frame per_pixel_frame(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev);
 
 // Operations of the hardware path for a planned frame, counted per block as the hardware performs
-// them: the geometry side (plan.geometry + plan.decision), per sample evaluated by the sample stage
+// them: the geometry side (plan.geometry_stepped, or plan.geometry with c.unit = scratch, + plan.decision), per sample evaluated by the sample stage
 // the device's multipliers and adders and the diffuse multiplier and adders, per interval the
 // coefficient unit's adders, per pixel the evaluator's multiplications and additions. `interpolation`
 // is everything after the geometry side.

@@ -11,6 +11,8 @@
 
 namespace shading::pipeline {
 
+const char* geometry_unit_name(geometry_unit u) { return u == geometry_unit::stepped ? "stepped" : "scratch"; }
+
 const char* length_policy_name(length_policy p) {
     switch (p) {
         case length_policy::fixed: return "fixed";
@@ -103,7 +105,7 @@ public:
             geo_[x] = scene::geometry_at(r_, x, y_, &scratch);
             p_.geometry += scratch;
             smp_[x] = sample_of(geo_[x]);
-            charge_dots(geo_[x]);
+            charge_dots(geo_[x], &p_.geometry);
             uncount(geo_[x]);  // the scratch count dies here: the kept values charge nothing
             ++p_.geometry_points;
             have_geo_[x] = 1;
@@ -113,6 +115,16 @@ public:
     sample_geometry sample(unsigned x) {
         geometry(x);
         return smp_[x];
+    }
+    bool has_geometry(unsigned x) const { return have_geo_[x] != 0; }
+    // N.L, the N.L > 0 gate, and N.H clamped at 0 where the light reaches (sample_of, shade.cpp).
+    static void charge_dots(const scene::pixel_geometry& g, op_counts* ops) {
+        auto recount = [ops](const cvec3& v) {
+            return cvec3{cnum(v.x.value(), ops), cnum(v.y.value(), ops), cnum(v.z.value(), ops)};
+        };
+        const cvec3 n = recount(g.n);
+        const cnum zero(0.0, ops);
+        if (dot(n, recount(g.l[0])) > zero) max(dot(n, recount(g.h[0])), zero);
     }
     // The colour sample at pixel x (the sample stage's output), for the policies' estimates.
     bool has_colour(unsigned x) const { return have_col_[x] != 0; }
@@ -133,17 +145,6 @@ private:
         for (auto& v : g.l) plain(v);
         for (auto& v : g.h) plain(v);
     }
-    // N.L, the N.L > 0 gate, and N.H clamped at 0 where the light reaches (sample_of, shade.cpp).
-    void charge_dots(const scene::pixel_geometry& g) {
-        op_counts* ops = &p_.geometry;
-        auto recount = [ops](const cvec3& v) {
-            return cvec3{cnum(v.x.value(), ops), cnum(v.y.value(), ops), cnum(v.z.value(), ops)};
-        };
-        const cvec3 n = recount(g.n);
-        const cnum zero(0.0, ops);
-        if (dot(n, recount(g.l[0])) > zero) max(dot(n, recount(g.h[0])), zero);
-    }
-
     const scene::rasterised& r_;
     unsigned y_;
     const frame_constants& k_;
@@ -160,7 +161,7 @@ class planner {
 public:
     planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
             const plan_config& c, plan& p)
-        : r_(r), k_(k), dev_(dev), c_(c), p_(p), cubic_(cubic_points(c.set)),
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), stepper_(r), cubic_(cubic_points(c.set)),
           w_deg_(lagrange(quad_points, degree_check(c.set))),
           w_len_cubic_(lagrange(cubic_, length_check(c.set))),
           w_len_quad_(lagrange(quad_points, length_check(c.set))),
@@ -205,6 +206,11 @@ public:
         }
         for (unsigned x = 0; x < r_.width; ++x)
             if (lg.has_colour(x) && !sampled[x]) ++p_.check_samples;
+        // The stepping geometry unit's count: the same points, left to right, stepped along the line.
+        for (unsigned x = 0; x < r_.width; ++x)
+            if (lg.has_geometry(x))
+                line_geometry::charge_dots(stepper_.at(x, y, &p_.geometry_stepped), &p_.geometry_stepped);
+        p_.stepping = stepper_.stats();
     }
 
 private:
@@ -389,6 +395,7 @@ private:
     const scene::device_config& dev_;
     const plan_config& c_;
     plan& p_;
+    scene::span_stepper stepper_;
     std::array<unsigned, 4> cubic_;
     std::array<double, 3> w_deg_;
     std::array<double, 4> w_len_cubic_;

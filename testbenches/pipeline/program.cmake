@@ -6,10 +6,13 @@ if(TARGET shading_pipeline)
     message(WARNING "render_pipeline needs nlohmann-json (Debian: nlohmann-json3-dev; scripts/setup.sh installs it): not built")
     return()
   endif()
-  add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp)
+  add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_setup.cpp
+                 ${CMAKE_CURRENT_SOURCE_DIR}/render_run.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_report.cpp
+                 ${CMAKE_CURRENT_SOURCE_DIR}/render_images.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_sweep.cpp)
   target_link_libraries(render_pipeline PRIVATE shading_pipeline CLI11::CLI11 nlohmann_json::nlohmann_json)
   # The default --data-dir: this source tree (the head scan lives in data/head/).
   target_compile_definitions(render_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_include_directories(render_pipeline PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   set_target_properties(render_pipeline PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   if(TARGET shading_pipeline_sim)
     target_link_libraries(render_pipeline PRIVATE shading_pipeline_sim)
@@ -31,7 +34,7 @@ if(TARGET shading_pipeline)
            COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 48 $2 --out \"$1\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/head48 ${rp_sim})
   add_test(NAME pipeline.render.head48.report
-           COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"clocks_per_pixel\"' '\"forehead\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
+           COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"scanline_phong_long_over_hardware_long\"' '\"displayed_8bit\"' '\"phong_scanline\"' '\"clocks_per_pixel\"' '\"forehead\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
                    ${rp_out}/head48)
   set_tests_properties(pipeline.render.head48.report PROPERTIES DEPENDS pipeline.render.head48)
   list(APPEND rp_tests pipeline.render.head48 pipeline.render.head48.report)
