@@ -59,7 +59,21 @@ if(TARGET shading_pipeline)
   add_test(NAME pipeline.sweep.exponents
            COMMAND sh -c "\"$0\" --sweep --grid exponents --scene head --size 24 --device minimax --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 9 && grep -q ',500,minimax,' \"$1/sweep.csv\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/sweep_n)
-  list(APPEND rp_tests pipeline.sweep.tiny pipeline.sweep.exponents)
+  # The claims grid, tiny (2 scenes x 1 light x 1 n x 1 size x 1 device x 12 policies, 24 pixels):
+  # two shards merged (rows sorted by the config column) equal one run row for row; --emit-jobs
+  # prints one command line per configuration; a bad shard is bad input.
+  set(rp_claims --sweep --grid claims --scenes sphere torus --lights 0,30 --ns 20 --sizes 24 --device squared --jobs 2)
+  add_test(NAME pipeline.sweep.claims_shards
+           COMMAND sh -c "set -e; b=\"$0\"; o=\"$1\"; shift; rm -rf \"$o\"; \"$b\" \"$@\" --out \"$o/all\"; \"$b\" \"$@\" --shard 1/2 --out \"$o/s1\"; \"$b\" \"$@\" --shard 2/2 --out \"$o/s2\"; test $(wc -l < \"$o/all/sweep.csv\") -eq 25; (tail -n +2 \"$o/s1/sweep.csv\"; tail -n +2 \"$o/s2/sweep.csv\") | sort -t, -k1,1n > \"$o/merged\"; tail -n +2 \"$o/all/sweep.csv\" | cmp - \"$o/merged\"; grep -q ',geometry,.*,yes$' \"$o/all/sweep.csv\"; grep -q ',adaptive,.*,no$' \"$o/all/sweep.csv\""
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/claims ${rp_claims})
+  add_test(NAME pipeline.sweep.emit_jobs
+           COMMAND sh -c "b=\"$0\"; test $(\"$b\" \"$@\" --emit-jobs --out /nonexistent | grep -c -- '--shard [0-9]*/24 --csv') -eq 24"
+                   $<TARGET_FILE:render_pipeline> ${rp_claims})
+  add_test(NAME pipeline.sweep.bad_shard
+           COMMAND sh -c "b=\"$0\"; o=\"$1\"; shift; \"$b\" \"$@\" --shard 3/2 --out \"$o\"; test $? -eq 1"
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/bad_shard ${rp_claims})
+  list(APPEND rp_tests pipeline.sweep.tiny pipeline.sweep.exponents pipeline.sweep.claims_shards pipeline.sweep.emit_jobs
+       pipeline.sweep.bad_shard)
   # Bad input: a clear message and exit status 1, nothing written. Each case: name, then arguments.
   set(rp_bad
       "m0|--m 0"

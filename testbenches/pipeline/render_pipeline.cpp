@@ -73,7 +73,12 @@ int main(int argc, char* argv[]) {
     app.add_option("--kd", o.kd, "k_d: one value or r,g,b in [0, 1]");
     app.add_option("--ks", o.ks, "k_s: one value or r,g,b in [0, 1]");
     app.add_option("--ambient", o.ambient, "ambient: one value or r,g,b in [0, 1]");
-    app.add_option("--length", o.length, "interval length policy")->check(CLI::IsMember({"fixed", "adaptive"}));
+    app.add_option("--length", o.length,
+                   "interval length policy: fixed, adaptive (exact colours at a check point: host only) or geometry "
+                   "(N.H and N.L only: a hardware geometry side can run it)")
+        ->check(CLI::IsMember({"fixed", "adaptive", "geometry"}));
+    app.add_option("--lobe-tol", o.pc.lobe_tol, "geometry length: N.H spread allowed in a highlight, x the derived bound")
+        ->check(CLI::PositiveNumber);
     app.add_option("--m", o.pc.m, "fixed length: intervals of 2^m pixels");
     app.add_option("--m-min", o.pc.m_min, "adaptive length: shortest interval 2^m_min");
     app.add_option("--m-max", o.pc.m_max, "adaptive length: longest interval 2^m_max");
@@ -83,7 +88,7 @@ int main(int argc, char* argv[]) {
     app.add_flag("--surface-breaks,!--no-surface-breaks", o.pc.surface_breaks,
                  "also end segments at folds (neighbouring pixels' triangles share no vertex; default on)");
     app.add_option("--degree", o.degree, "degree policy")
-        ->check(CLI::IsMember({"cubic", "quadratic", "zones", "adaptive"}));
+        ->check(CLI::IsMember({"cubic", "quadratic", "zones", "adaptive", "geometry"}));
     app.add_option("--degree-tol", o.pc.degree_tol, "adaptive degree: largest accepted quadratic error estimate");
     app.add_option("--eval", o.eval, "evaluator: the Fig. 4 Horner unit or our forward differences")
         ->check(CLI::IsMember({"horner", "fd"}));
@@ -115,9 +120,17 @@ int main(int argc, char* argv[]) {
         ->check(CLI::PositiveNumber);
     app.add_flag("--sweep", o.sweep, "run the grid of configurations on the golden model, one CSV (--csv)");
     app.add_option("--jobs", o.jobs, "--sweep: parallel processes (default: the hardware's cores)");
-    app.add_option("--grid", o.grid, "--sweep: small, full, or exponents (every device x n = 2..500, this command's plan settings)")
-        ->check(CLI::IsMember({"small", "full", "exponents"}));
+    app.add_option("--grid", o.grid, "--sweep: small, full, exponents (every device x n = 2..500, this command's plan settings) or claims (--scenes x --lights x --ns x --sizes x devices x twelve policies)")
+        ->check(CLI::IsMember({"small", "full", "exponents", "claims"}));
     app.add_option("--csv", o.csv, "--sweep: CSV path (default: <out>/sweep.csv)");
+    app.add_option("--shard", o.shard, "--sweep: run only shard I of N (configurations i with i % N = I - 1)");
+    app.add_flag("--emit-jobs", o.emit_jobs,
+                 "--sweep: print one command line per configuration (a shard of one, its own CSV) and exit, for GNU "
+                 "parallel or a job array; merge the CSVs with scripts/pipeline_claims.py");
+    app.add_option("--scenes", o.claims_scenes, "--grid claims: scenes (built-in names or OBJ paths; default head sphere torus)");
+    app.add_option("--lights", o.claims_lights, "--grid claims: light directions az,el (default -40,25 35,20 10,60)");
+    app.add_option("--ns", o.claims_ns, "--grid claims: exponents n (default 5 20 100 500)");
+    app.add_option("--sizes", o.claims_sizes, "--grid claims: image sizes (default 512 1024)");
     app.add_flag("--inject-mismatch", o.inject_mismatch, "")->group("");
     bool sim_available = false;
     app.add_flag("--sim-available", sim_available, "exit 0 if this build has the SystemC pipeline (--sim), 1 if not");
@@ -128,6 +141,7 @@ int main(int argc, char* argv[]) {
         return app.exit(e) == 0 ? 0 : 1;
     }
     if (sim_available) return SHADING_PIPELINE_SIM ? 0 : 1;
+    o.argv.assign(argv, argv + argc);
     o.device_given = app.count("--device") > 0;
     if (!o.sweep && o.device == "all") {
         std::fprintf(stderr, "render_pipeline: --device all is for --sweep\n");

@@ -56,7 +56,11 @@ struct options {
     std::string grid = "small", csv;
     std::string shard;                  // "I/N": only the configurations i with i % N == I - 1
     bool emit_jobs = false;             // print one command line per configuration instead of running
-    std::vector<std::string> scenes;    // --grid claims: the scenes (default head, sphere, torus)
+    // --grid claims: the lists (a light is "azimuth,elevation")
+    std::vector<std::string> claims_scenes{"head", "sphere", "torus"}, claims_lights{"-40,25", "35,20", "10,60"};
+    std::vector<int> claims_ns{5, 20, 100, 500};
+    std::vector<unsigned> claims_sizes{512, 1024};
+    std::vector<std::string> argv;      // the command line, for --emit-jobs
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0);

@@ -143,6 +143,8 @@ json report_json(const options& o, const render_data& d) {
                      {"div3", o.div3},
                      {"depth_step", cfg.depth_step},
                      {"geometry_unit", geometry_unit_name(cfg.unit)},
+                     {"runs_on_geometry_side",
+                      policy_runs_on_geometry_side(cfg.length) && policy_runs_on_geometry_side(cfg.degree)},
                      {"sim", o.sim}};
     rep["frame_constants"] = {{"n", k.n}, {"ksi", k.ksi}, {"kdi", k.kdi}, {"ambient", k.ambient}};
     rep["plan"] = {{"intervals", p.jobs.size()},

@@ -62,10 +62,13 @@ plan_config plan_config_of(const options& o) {
     plan_config c = o.pc;
     c.set = o.set == "case2" ? interp::sample_set::case2 : interp::sample_set::case1;
     c.div = o.div3 == "exact" ? interp::div3_mode::exact : interp::div3_mode::shift_add;
-    c.length = o.length == "adaptive" ? length_policy::adaptive : length_policy::fixed;
+    c.length = o.length == "adaptive"   ? length_policy::adaptive
+               : o.length == "geometry" ? length_policy::geometry
+                                        : length_policy::fixed;
     c.degree = o.degree == "quadratic" ? degree_policy::quadratic
                : o.degree == "zones"   ? degree_policy::zones
                : o.degree == "adaptive" ? degree_policy::adaptive
+               : o.degree == "geometry" ? degree_policy::geometry
                                         : degree_policy::cubic;
     c.eval = o.eval == "fd" ? evaluator::fd : evaluator::horner;
     c.unit = o.unit == "scratch" ? geometry_unit::scratch : geometry_unit::stepped;

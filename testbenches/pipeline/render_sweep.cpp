@@ -30,12 +30,16 @@ struct sweep_point {
     unsigned m = 4;
     double length_tol = 0.5, degree_tol = 0.25;
     int n = -1;  // -1: --n or the scene's
+    std::string scene, light;  // empty: --scene, --light
+    unsigned size = 0;         // 0: --size
 };
 
 // small: two devices x the degree policies x fixed m = 3..5 and three adaptive-length tolerances,
-// each with the Horner unit and the forward differences; full: every device, m = 2..6, five tolerances, three adaptive-degree tolerances;
-// exponents: every device x n = 2..500 with the command line's own plan settings (the total error
-// against Phong per device and n).
+// each with the Horner unit and the forward differences; full: every device, m = 2..6, five
+// tolerances, three adaptive-degree tolerances, and the geometry-only policies; exponents: every
+// device x n = 2..500 with the command line's own plan settings (the total error against Phong per
+// device and n); claims: scenes (--scenes, default head, sphere, torus) x light directions (--lights)
+// x n (--ns) x sizes (--sizes) x devices x twelve policies (render_sweep.cpp: claims_policies).
 std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& only_device, const options& o) {
     std::vector<std::string> devices = grid != "small" ? scene::device_names() : std::vector<std::string>{"patent", "minimax"};
     if (!only_device.empty()) devices = {only_device};
@@ -43,7 +47,32 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
         std::vector<sweep_point> g;
         for (const auto& d : devices)
             for (int n : {2, 5, 10, 20, 50, 100, 200, 500})
-                g.push_back({d, o.length, o.degree, o.eval, o.pc.m, o.pc.length_tol, o.pc.degree_tol, n});
+                g.push_back({d, o.length, o.degree, o.eval, o.pc.m, o.pc.length_tol, o.pc.degree_tol, n, "", "", 0});
+        return g;
+    }
+    if (grid == "claims") {
+        // The policies whose worst case and median the claims are about: the program's default, the
+        // seed's zones, the colour-checked adaptive ones (host only) and the geometry-only ones, each
+        // through both evaluators.
+        struct pol {
+            const char* length;
+            unsigned m;
+            double ltol;
+            const char* degree;
+            double dtol;
+        };
+        const pol policies[] = {{"fixed", 4, 0.5, "cubic", 0.5},        {"fixed", 3, 0.5, "zones", 0.5},
+                                {"adaptive", 4, 1.0, "adaptive", 0.5},  {"adaptive", 4, 2.0, "adaptive", 0.5},
+                                {"geometry", 4, 1.0, "geometry", 0.5},  {"geometry", 4, 2.0, "geometry", 0.5}};
+        std::vector<sweep_point> g;
+        for (const auto& sc : o.claims_scenes)
+            for (const auto& li : o.claims_lights)
+                for (int n : o.claims_ns)
+                    for (unsigned sz : o.claims_sizes)
+                        for (const auto& d : devices)
+                            for (const pol& p : policies)
+                                for (const char* ev : {"fd", "horner"})
+                                    g.push_back({d, p.length, p.degree, ev, p.m, p.ltol, p.dtol, n, sc, li, sz});
         return g;
     }
     const std::vector<unsigned> ms = grid == "full" ? std::vector<unsigned>{2, 3, 4, 5, 6} : std::vector<unsigned>{3, 4, 5};
@@ -52,20 +81,40 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
     const std::vector<std::pair<std::string, double>> degrees =
         grid == "full" ? std::vector<std::pair<std::string, double>>{{"cubic", 0.5},     {"quadratic", 0.5},
                                                                      {"zones", 0.5},    {"adaptive", 0.25},
-                                                                     {"adaptive", 0.5},  {"adaptive", 1.0}}
+                                                                     {"adaptive", 0.5},  {"adaptive", 1.0},
+                                                                     {"geometry", 0.5}}
                        : std::vector<std::pair<std::string, double>>{
                              {"cubic", 0.5}, {"quadratic", 0.5}, {"zones", 0.5}, {"adaptive", 0.5}};
     std::vector<sweep_point> g;
     for (const auto& d : devices)
         for (const auto& [deg, dtol] : degrees) {
             for (unsigned m : ms)
-                for (const char* ev : {"horner", "fd"}) g.push_back({d, "fixed", deg, ev, m, 0.5, dtol});
+                for (const char* ev : {"horner", "fd"}) g.push_back({d, "fixed", deg, ev, m, 0.5, dtol, -1, "", "", 0});
             for (double lt : ltols)
-                for (const char* ev : {"horner", "fd"}) g.push_back({d, "adaptive", deg, ev, 4, lt, dtol});
+                for (const char* ev : {"horner", "fd"})
+                    g.push_back({d, "adaptive", deg, ev, 4, lt, dtol, -1, "", "", 0});
+            if (grid == "full")
+                for (double lt : {0.5, 1.0, 2.0, 4.0, 8.0})
+                    for (const char* ev : {"horner", "fd"})
+                        g.push_back({d, "geometry", deg, ev, 4, lt, dtol, -1, "", "", 0});
         }
     return g;
 }
 
+// "I/N" -> (I - 1, N); throws scene_error unless 1 <= I <= N.
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
+    const std::size_t slash = s.find('/');
+    try {
+        if (slash == std::string::npos) throw std::invalid_argument("");
+        std::size_t u1 = 0, u2 = 0;
+        const std::string a = s.substr(0, slash), b = s.substr(slash + 1);
+        const unsigned long i = std::stoul(a, &u1), n = std::stoul(b, &u2);
+        if (u1 != a.size() || u2 != b.size() || i < 1 || i > n) throw std::invalid_argument("");
+        return {i - 1, n};
+    } catch (const std::exception&) {
+        throw scene::scene_error("--shard '" + s + "': expected I/N with 1 <= I <= N");
+    }
+}
 
 // The light as a CSV field: "az:el" (the option's comma would split the row), "default" for the scene's.
 std::string light_field(std::string l) {
@@ -78,13 +127,46 @@ std::string light_field(std::string l) {
 
 int run_sweep(const options& o) {
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<sweep_point> grid = sweep_grid(o.grid, !o.device_given || o.device == "all" ? "" : o.device, o);
+    const std::vector<sweep_point> full_grid =
+        sweep_grid(o.grid, !o.device_given || o.device == "all" ? "" : o.device, o);
+    // The configurations of this shard: index i of the whole grid runs in shard i % N (the CSV's
+    // `config` column keeps i, so the shards' rows merge back into the whole grid's by sorting).
+    std::vector<sweep_point> grid;
+    std::vector<std::size_t> index;
+    const auto [shard_i, shard_n] = o.shard.empty() ? std::pair<std::size_t, std::size_t>{0, 1} : parse_shard(o.shard);
+    for (std::size_t i = 0; i < full_grid.size(); ++i)
+        if (i % shard_n == shard_i) {
+            grid.push_back(full_grid[i]);
+            index.push_back(i);
+        }
     const unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
     // Checked once here, so a bad scene is one message and not one per child.
     {
         options probe = o;
         probe.size = 8;
-        (void)load_world(probe);
+        for (const auto& sp : full_grid) {
+            if (!sp.scene.empty()) probe.scene = sp.scene;
+            if (!sp.light.empty()) probe.light = sp.light;
+            (void)load_world(probe);
+            if (sp.size > max_size || (o.grid == "claims" && sp.size == 0))
+                throw scene::scene_error("--sizes: " + std::to_string(sp.size) + " outside 1..4096");
+            if (sp.n != -1 && (sp.n < 1 || sp.n > 1000))
+                throw scene::scene_error("--ns: " + std::to_string(sp.n) + " outside 1..1000");
+        }
+    }
+    if (o.emit_jobs) {
+        // One command line per configuration: this program, the same options, a shard of one.
+        for (std::size_t i = 0; i < full_grid.size(); ++i) {
+            std::string cmd;
+            for (const std::string& arg : o.argv) {
+                if (arg == "--emit-jobs") continue;
+                cmd += "'" + arg + "' ";
+            }
+            cmd += "--shard " + std::to_string(i + 1) + "/" + std::to_string(full_grid.size()) + " --csv '" +
+                   (fs::path(o.out) / ("config_" + std::to_string(i) + ".csv")).string() + "'";
+            std::printf("%s\n", cmd.c_str());
+        }
+        return 0;
     }
     std::error_code ec;
     const std::string self = fs::read_symlink("/proc/self/exe", ec).string();
@@ -96,7 +178,9 @@ int run_sweep(const options& o) {
 
     auto args_of = [&](std::size_t i) {
         const sweep_point& sp = grid[i];
-        std::vector<std::string> a = {self, "--scene", o.scene, "--data-dir", o.data_dir, "--size", std::to_string(o.size),
+        const std::string scene = sp.scene.empty() ? o.scene : sp.scene;
+        const unsigned size = sp.size ? sp.size : o.size;
+        std::vector<std::string> a = {self, "--scene", scene, "--data-dir", o.data_dir, "--size", std::to_string(size),
                                       "--device", sp.device, "--mode", o.mode, "--length", sp.length, "--m",
                                       std::to_string(sp.m), "--m-min", std::to_string(o.pc.m_min), "--m-max",
                                       std::to_string(o.pc.m_max),
@@ -106,7 +190,9 @@ int run_sweep(const options& o) {
                                       o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
                                       o.pc.surface_breaks ? "--surface-breaks" : "--no-surface-breaks", "--no-sim", "--no-images", "--md", "",
                                       "--json", "report.json", "--out", (tmp / std::to_string(i)).string()};
-        if (!o.light.empty()) a.insert(a.end(), {"--light", o.light});
+        const std::string light = sp.light.empty() ? o.light : sp.light;
+        if (!light.empty()) a.insert(a.end(), {"--light", light});
+        a.insert(a.end(), {"--lobe-tol", num(o.pc.lobe_tol)});
         const int n = sp.n != -1 ? sp.n : o.n;
         if (n != -1) a.insert(a.end(), {"--n", std::to_string(n)});
         if (!o.kd.empty()) a.insert(a.end(), {"--kd", o.kd});
@@ -144,8 +230,11 @@ int run_sweep(const options& o) {
             std::fprintf(stderr, "sweep: %zu/%zu configurations done, %zu failed, %.0f s\n", done, grid.size(),
                          failed.size(), seconds_since(t0));
     };
-    std::fprintf(stderr, "sweep: %zu configurations of %s %ux%u in %u processes\n", grid.size(), o.scene.c_str(),
-                 o.size, o.size, jobs);
+    if (o.grid == "claims")
+        std::fprintf(stderr, "sweep: %zu configurations of the claims grid in %u processes\n", grid.size(), jobs);
+    else
+        std::fprintf(stderr, "sweep: %zu configurations of %s %ux%u in %u processes\n", grid.size(), o.scene.c_str(),
+                     o.size, o.size, jobs);
     while (done < grid.size()) {
         while (running.size() < jobs && next < grid.size()) {
             running[spawn(next)] = next;
@@ -175,11 +264,11 @@ int run_sweep(const options& o) {
 
     // One CSV row per configuration, from each child's report.json.
     std::ostringstream csv;
-    csv << "scene,size,n,device,mode,length,m,m_min,m_max,length_tol,degree,degree_tol,eval,set,"
+    csv << "config,scene,size,n,device,mode,length,m,m_min,m_max,length_tol,degree,degree_tol,eval,set,"
            "nmse_interp,psnr_interp,max_interp,nmse_phong,max_phong,nmse_brdf,"
            "long_per_px,mul_per_px,div_per_px,sqrt_per_px,add_per_px,interp_long_per_px,clocks_per_px,"
            "phong_long_per_px,phong_add_per_px,ratio_long,intervals,mean_len,quadratic_px,cubic_px,exact_px,"
-           "scanline_long_per_px,ratio_long_scanline,nmse_interp_8bit,nmse_phong_8bit,light\n";
+           "scanline_long_per_px,ratio_long_scanline,nmse_interp_8bit,nmse_phong_8bit,light,geometry_side\n";
     csv.precision(6);
     for (std::size_t i = 0; i < grid.size(); ++i) {
         std::ifstream f(tmp / std::to_string(i) / "report.json");
@@ -194,7 +283,7 @@ int run_sweep(const options& o) {
         const json& hw = j["ops_per_pixel"]["hardware"];
         const json& ph = j["ops_per_pixel"]["phong"]["total"];
         auto d = [](const json& v) { return v.is_null() ? std::string("inf") : num(v.get<double>()); };
-        csv << c["scene"].get<std::string>() << ',' << c["width"].get<unsigned>() << ',' << c["n"].get<unsigned>() << ','
+        csv << index[i] << ',' << c["scene"].get<std::string>() << ',' << c["width"].get<unsigned>() << ',' << c["n"].get<unsigned>() << ','
             << c["device"].get<std::string>() << ',' << c["mode"].get<std::string>() << ','
             << c["length"].get<std::string>() << ',' << c["m"].get<unsigned>() << ',' << c["m_min"].get<unsigned>()
             << ',' << c["m_max"].get<unsigned>() << ',' << num(c["length_tol"].get<double>()) << ','
@@ -218,7 +307,8 @@ int run_sweep(const options& o) {
             << num(j["ops_per_pixel"]["scanline_phong_long_over_hardware_long"].get<double>()) << ','
             << num(e["interpolation"]["displayed_8bit"]["nmse"].get<double>()) << ','
             << num(e["total"]["displayed_8bit"]["nmse"].get<double>()) << ','
-            << light_field(j["config"]["light"].get<std::string>()) << '\n';
+            << light_field(j["config"]["light"].get<std::string>()) << ','
+            << (c["runs_on_geometry_side"].get<bool>() ? "yes" : "no") << '\n';
     }
     const std::string csv_path = o.csv.empty() ? (fs::path(o.out) / "sweep.csv").string() : o.csv;
     if (fs::path(csv_path).has_parent_path()) fs::create_directories(fs::path(csv_path).parent_path());
@@ -226,8 +316,9 @@ int run_sweep(const options& o) {
     write_text(csv_tmp, csv.str());
     fs::rename(csv_tmp, csv_path);
     fs::remove_all(tmp);
-    std::printf("sweep: %zu configurations of %s %ux%u in %.1f s (%u processes); wrote %s\n", grid.size(),
-                o.scene.c_str(), o.size, o.size, seconds_since(t0), jobs, csv_path.c_str());
+    std::printf("sweep: %zu configurations (grid %s%s%s) in %.1f s (%u processes); wrote %s\n", grid.size(),
+                o.grid.c_str(), o.shard.empty() ? "" : ", shard ", o.shard.c_str(), seconds_since(t0), jobs,
+                csv_path.c_str());
     return 0;
 }
 }  // namespace shading::render_program

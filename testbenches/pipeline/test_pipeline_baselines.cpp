@@ -3,6 +3,7 @@
 // Plain C++, no simulation: tests may share a process.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -92,4 +93,103 @@ TEST(PipelineGeometryUnit, SteppedCheaperOnTheHeadSamePlan) {
     EXPECT_EQ(a.geometry, b.geometry);
     EXPECT_LT(a.geometry_stepped.long_ops(), a.geometry.long_ops());
     EXPECT_GT(a.stepping.steps, 0u);
+}
+
+// ---- The geometry-only policies ----
+
+// Hand-worked constants: n = 20, k_s I code 102 (0.4 x 255), 255 k_d I = 153 (code 39168 in Q8.8),
+// tolerance 1 level, degree tolerance 0.5, case 1:
+//   highlight c_n = (0.5 / 102)^(1/20) = 0.766511 -> x 32768 = 25117.04 (codes)
+//   N.L's miss 1 / 153 x 32768 = 214.170; for the degree 0.5 / 153 x 32768 = 107.085
+//   N.H's miss 0.5 / (102 x 20) x 32768 = 8.0314
+//   spread, cubic: K = max |t (t - 1/4)(t - 1/2)(t - 1)| / 4! = 0.027008 / 24 = 0.00112534 (at t = 0.832),
+//     (0.5 / (102 K))^(1/4) / 20 x 32768 = 2366.96; quadratic: K = 0.048112 / 3! = 0.00801874
+//     (t = 0.211), (0.5 / (102 K))^(1/3) / 20 x 32768 = 1390.51.
+TEST(PipelineGeometryPolicy, LimitsHandWorked) {
+    frame_constants k;
+    k.n = 20;
+    k.ksi = {102, 102, 102};
+    k.kdi = {39168, 39168, 39168};
+    plan_config c;
+    c.length_tol = 1.0;
+    c.degree_tol = 0.5;
+    const geometry_limits g = geometry_limits_of(k, c);
+    EXPECT_NEAR(g.highlight, 25117.04, 0.01);
+    EXPECT_NEAR(g.nl_miss, 214.170, 0.001);
+    EXPECT_NEAR(g.nl_miss_degree, 107.085, 0.001);
+    EXPECT_NEAR(g.nh_miss, 8.0314, 0.0001);
+    EXPECT_NEAR(g.spread_cubic, 2366.96, 0.05);
+    EXPECT_NEAR(g.spread_quad, 1390.51, 0.05);
+    // No specular term: no highlight anywhere (a bound above every code).
+    k.ksi = {0, 0, 0};
+    EXPECT_GT(geometry_limits_of(k, c).highlight, 65536.0);
+}
+
+// The labels: only the policies that read exact colours cannot run on a geometry side.
+TEST(PipelineGeometryPolicy, Labels) {
+    EXPECT_TRUE(policy_runs_on_geometry_side(length_policy::fixed));
+    EXPECT_TRUE(policy_runs_on_geometry_side(length_policy::geometry));
+    EXPECT_FALSE(policy_runs_on_geometry_side(length_policy::adaptive));
+    EXPECT_TRUE(policy_runs_on_geometry_side(degree_policy::geometry));
+    EXPECT_TRUE(policy_runs_on_geometry_side(degree_policy::zones));
+    EXPECT_FALSE(policy_runs_on_geometry_side(degree_policy::adaptive));
+    EXPECT_STREQ(length_policy_name(length_policy::geometry), "geometry");
+    EXPECT_STREQ(degree_policy_name(degree_policy::geometry), "geometry");
+}
+
+// An unbounded tolerance accepts every first try: the geometry length policy then tiles exactly as
+// the adaptive one does (same positions, lengths, degrees), reading no colour (no check samples).
+// At tolerance 0 every interval in light fails (c_n = 0: all highlight, no spread allowed) and the
+// plan is nearly all exact pixels; a tighter tolerance never costs fewer operations.
+TEST(PipelineGeometryPolicy, ExtremesAndNoColourRead) {
+    const fixture f("sphere", 64);
+    plan_config c;
+    c.length = length_policy::adaptive;
+    c.length_tol = 1e12;
+    const plan a = make_plan(f.r, f.k, squared, c);
+    c.length = length_policy::geometry;
+    const plan g = make_plan(f.r, f.k, squared, c);
+    ASSERT_EQ(a.jobs.size(), g.jobs.size());
+    for (std::size_t i = 0; i < a.jobs.size(); ++i) {
+        EXPECT_EQ(a.jobs[i].x0, g.jobs[i].x0);
+        EXPECT_EQ(a.jobs[i].len, g.jobs[i].len);
+        EXPECT_EQ(a.jobs[i].s, g.jobs[i].s);
+    }
+    EXPECT_EQ(g.check_samples, 0u);
+    c.length_tol = 0.0;
+    const plan z = make_plan(f.r, f.k, squared, c);
+    std::size_t exact = 0;
+    for (const auto& j : z.jobs) exact += j.m == 0;
+    EXPECT_GT(exact, z.pixels * 9 / 10);
+    EXPECT_EQ(z.check_samples, 0u);
+    c.length_tol = 1.0;
+    c.degree = degree_policy::geometry;
+    const plan one = make_plan(f.r, f.k, squared, c);
+    c.length_tol = 0.25;
+    const plan quarter = make_plan(f.r, f.k, squared, c);
+    EXPECT_EQ(one.check_samples + quarter.check_samples, 0u);
+    EXPECT_GE(hardware_ops(quarter, c).total().long_ops(), hardware_ops(one, c).total().long_ops());
+}
+
+// The geometry degree policy: cubic wherever the highlight reaches (some sample's N.H >= c_n), and
+// on the sphere some quadratic intervals (diffuse flanks, where N.L is nearly quadratic).
+TEST(PipelineGeometryPolicy, DegreeCubicInTheHighlight) {
+    const fixture f("sphere", 64);
+    plan_config c;
+    c.m = 3;
+    c.degree = degree_policy::geometry;
+    const plan p = make_plan(f.r, f.k, squared, c);
+    const geometry_limits lim = geometry_limits_of(f.k, c);
+    std::size_t quad = 0;
+    for (const auto& j : p.jobs) {
+        if (j.m == 0) continue;
+        double hi = 0.0;
+        for (const auto& s : j.s) hi = std::max(hi, double(s.cos_nh));
+        if (hi >= lim.highlight) {
+            EXPECT_FALSE(j.deg2) << j.y << " " << j.x0;
+        }
+        quad += j.deg2;
+    }
+    EXPECT_GT(quad, 0u);
+    EXPECT_EQ(p.check_samples, 0u);
 }
