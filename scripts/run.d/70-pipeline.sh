@@ -31,7 +31,9 @@ hw, ph = ops["hardware"]["total"]["long"], ops["phong"]["total"]["long"]
 cpp = sim["clocks_per_pixel"] if sim["ran"] else j["clocks_per_pixel"]["hardware_ops"]
 note = (f"NMSE vs per-pixel device {e['interpolation']['image']['nmse']:.2e} (max {e['interpolation']['image']['max_abs']:.1f} lv), "
         f"vs Phong {e['total']['image']['nmse']:.2e}, device vs Phong {e['brdf']['image']['nmse']:.2e}; "
-        f"long ops/pixel {hw:.1f} vs Phong {ph:.1f} ({ops['phong_long_over_hardware_long']:.2f}x)")
+        f"long ops/pixel {hw:.1f} vs Phong {ph:.1f} ({ops['phong_long_over_hardware_long']:.2f}x), "
+        f"vs scan-line Phong {ops['phong_scanline']['total']['long']:.1f} "
+        f"({ops['scanline_phong_long_over_hardware_long']:.2f}x)")
 if sim["ran"]:
     note += (f"; sim ({sim.get('abstraction', 'block')}) {sim['pixels_per_second']:.0f} px/s wall, "
              f"{sim.get('pixels_per_cpu_second', 0):.0f} px per CPU second")

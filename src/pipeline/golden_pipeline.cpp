@@ -254,7 +254,7 @@ hardware_counts hardware_ops(const plan& p, const plan_config& c) {
 hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::device_config& dev, unsigned n) {
     const scene::op_counts device_per_sample = device_sample_ops(dev, n);
     hardware_counts h;
-    h.geometry = p.geometry;
+    h.geometry = c.unit == geometry_unit::stepped ? p.geometry_stepped : p.geometry;
     h.geometry += p.decision;
     // The adaptive policies' check points: colours formed by the sample stage for the decision only
     // (plan.check_samples), charged to the geometry side's decision, not to `samples`.

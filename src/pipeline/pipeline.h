@@ -89,10 +89,27 @@ std::vector<rgb_codes> golden_interval(const interval_job& job, const frame_cons
                                        interp::div3_mode div);
 
 // ---- The geometry side: planning a frame into intervals ----
-enum class length_policy { fixed, adaptive };
-enum class degree_policy { cubic, quadratic, zones, adaptive };
-const char* length_policy_name(length_policy p);  // "fixed", "adaptive"
-const char* degree_policy_name(degree_policy p);  // "cubic", "quadratic", "zones", "adaptive"
+// How the geometry side computes N, V, L, H at the points it needs: `stepped` (the default) steps the
+// interpolated attributes along the line from point to point as a scan-line renderer does
+// (scene::span_stepper: per-triangle set-up, run starts, adds per step); `scratch` computes each point
+// from scratch (scene::geometry_at: barycentrics, one division, three interpolations). The plan and
+// its images are the same; only the counts differ (plan.geometry_stepped or plan.geometry).
+enum class geometry_unit { stepped, scratch };
+const char* geometry_unit_name(geometry_unit u);  // "stepped", "scratch"
+
+// Length and degree policies. `geometry` (ours) decides from the geometry side's own values only:
+// N.H and N.L at the interval's sample points and check point and per-frame constants (from n,
+// k_s I, k_d I and the tolerance, computed once per frame like the device's a(n)); see plan.cpp.
+// `adaptive` reads exact colours (the sample stage's output) at a check point, which no modelled
+// hardware returns to the geometry side: policy_runs_on_geometry_side() says which can run there.
+enum class length_policy { fixed, adaptive, geometry };
+enum class degree_policy { cubic, quadratic, zones, adaptive, geometry };
+const char* length_policy_name(length_policy p);  // "fixed", "adaptive", "geometry"
+const char* degree_policy_name(degree_policy p);  // "cubic", "quadratic", "zones", "adaptive", "geometry"
+// True where a hardware geometry side can run the policy as it stands (its inputs are N.H, N.L,
+// positions and per-frame constants); false for the adaptive ones (they need the colour samples back).
+bool policy_runs_on_geometry_side(length_policy p);
+bool policy_runs_on_geometry_side(degree_policy p);
 
 struct plan_config {
     interp::sample_set set = interp::sample_set::case1;
@@ -105,13 +122,28 @@ struct plan_config {
     bool exact_fallback = true;            // adaptive length: where even 2^m_min fails, 2^m_min exact pixels
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
+    // Geometry length policy: 0 < lobe_tol; the spread of N.H an interval may span in the highlight,
+    // as a multiple of the bound derived from length_tol (plan.cpp); 1 is the bound itself.
+    double lobe_tol = 1.0;
     double depth_step = 0.02;              // world units: a depth jump that ends a segment (raster.h)
     bool surface_breaks = true;            // also end segments where neighbours' triangles share no vertex (a fold)
     evaluator eval = evaluator::horner;    // fd: fixed length keeps one m (tails exact); adaptive as Horner
+    geometry_unit unit = geometry_unit::stepped;  // which geometry count hardware_ops charges
 };
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
 // a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
 void validate(const plan_config& c);
+
+// The geometry-only policies' per-frame constants, in Q1.15 code units of N.H / N.L (plan.cpp says how
+// each follows from n, k_s I, k_d I, length_tol, degree_tol and lobe_tol).
+struct geometry_limits {
+    double highlight = 0.0;     // c_n: N.H at or above it is in a highlight
+    double nl_miss = 0.0;       // largest accepted miss of N.L's polynomial (length)
+    double nl_miss_degree = 0.0;  // the same for the quadratic degree
+    double nh_miss = 0.0;       // largest accepted miss of N.H's polynomial in a highlight
+    double spread_cubic = 0.0, spread_quad = 0.0;  // largest N.H spread of an interval in a highlight
+};
+geometry_limits geometry_limits_of(const frame_constants& k, const plan_config& c);
 
 // A frame's intervals, line by line, left to right, and what the geometry side spent on them:
 // `geometry` counts geometry_at plus the two dot products at every distinct pixel whose geometry was
@@ -130,6 +162,10 @@ struct plan {
     unsigned width = 0, height = 0;
     std::vector<interval_job> jobs;
     scene::op_counts geometry, decision;
+    // The same points' geometry (and dot products) stepped along each line in increasing x by one
+    // scene::span_stepper over the frame (its set-ups, run starts and steps in `stepping`).
+    scene::op_counts geometry_stepped;
+    scene::stepping_stats stepping;
     std::size_t geometry_points = 0;   // distinct pixels whose geometry was computed
     // Colour samples the adaptive policies evaluated (golden_sample) at pixels that are no job's
     // sample point: their check points. The sample stage's cost for these is the decision's too.
@@ -166,7 +202,7 @@ frame golden_frame(const plan& p, const frame_constants& k, const scene::device_
 frame per_pixel_frame(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev);
 
 // Operations of the hardware path for a planned frame, counted per block as the hardware performs
-// them: the geometry side (plan.geometry + plan.decision), per sample evaluated by the sample stage
+// them: the geometry side (plan.geometry_stepped, or plan.geometry with c.unit = scratch, + plan.decision), per sample evaluated by the sample stage
 // the device's multipliers and adders and the diffuse multiplier and adders, per interval the
 // coefficient unit's adders, per pixel the evaluator's multiplications and additions. `interpolation`
 // is everything after the geometry side.

@@ -11,10 +11,13 @@
 
 namespace shading::pipeline {
 
+const char* geometry_unit_name(geometry_unit u) { return u == geometry_unit::stepped ? "stepped" : "scratch"; }
+
 const char* length_policy_name(length_policy p) {
     switch (p) {
         case length_policy::fixed: return "fixed";
         case length_policy::adaptive: return "adaptive";
+        case length_policy::geometry: return "geometry";
     }
     return "?";
 }
@@ -25,9 +28,15 @@ const char* degree_policy_name(degree_policy p) {
         case degree_policy::quadratic: return "quadratic";
         case degree_policy::zones: return "zones";
         case degree_policy::adaptive: return "adaptive";
+        case degree_policy::geometry: return "geometry";
     }
     return "?";
 }
+
+bool policy_runs_on_geometry_side(length_policy p) { return p != length_policy::adaptive; }
+// zones: the zone's box tests on the position the geometry side interpolates, against per-frame
+// thresholds from the mesh (host set-up, as the scene's other frame constants).
+bool policy_runs_on_geometry_side(degree_policy p) { return p != degree_policy::adaptive; }
 
 void validate(const plan_config& c) {
     const std::string range = std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max);
@@ -42,6 +51,7 @@ void validate(const plan_config& c) {
     if (!(c.length_tol >= 0.0)) fail("the length tolerance must be >= 0 (8-bit levels)");
     if (!(c.degree_tol >= 0.0)) fail("the degree tolerance must be >= 0 (8-bit levels)");
     if (!(c.depth_step > 0.0)) fail("the depth step must be > 0 (world units)");
+    if (!(c.lobe_tol > 0.0)) fail("the lobe tolerance must be > 0");
     // Any evaluator takes either length policy: fd_eval_var sets the forward differences up per
     // interval for every m in m_min..m_max, as the Horner unit takes any t.
 }
@@ -103,7 +113,7 @@ public:
             geo_[x] = scene::geometry_at(r_, x, y_, &scratch);
             p_.geometry += scratch;
             smp_[x] = sample_of(geo_[x]);
-            charge_dots(geo_[x]);
+            charge_dots(geo_[x], &p_.geometry);
             uncount(geo_[x]);  // the scratch count dies here: the kept values charge nothing
             ++p_.geometry_points;
             have_geo_[x] = 1;
@@ -113,6 +123,16 @@ public:
     sample_geometry sample(unsigned x) {
         geometry(x);
         return smp_[x];
+    }
+    bool has_geometry(unsigned x) const { return have_geo_[x] != 0; }
+    // N.L, the N.L > 0 gate, and N.H clamped at 0 where the light reaches (sample_of, shade.cpp).
+    static void charge_dots(const scene::pixel_geometry& g, op_counts* ops) {
+        auto recount = [ops](const cvec3& v) {
+            return cvec3{cnum(v.x.value(), ops), cnum(v.y.value(), ops), cnum(v.z.value(), ops)};
+        };
+        const cvec3 n = recount(g.n);
+        const cnum zero(0.0, ops);
+        if (dot(n, recount(g.l[0])) > zero) max(dot(n, recount(g.h[0])), zero);
     }
     // The colour sample at pixel x (the sample stage's output), for the policies' estimates.
     bool has_colour(unsigned x) const { return have_col_[x] != 0; }
@@ -133,17 +153,6 @@ private:
         for (auto& v : g.l) plain(v);
         for (auto& v : g.h) plain(v);
     }
-    // N.L, the N.L > 0 gate, and N.H clamped at 0 where the light reaches (sample_of, shade.cpp).
-    void charge_dots(const scene::pixel_geometry& g) {
-        op_counts* ops = &p_.geometry;
-        auto recount = [ops](const cvec3& v) {
-            return cvec3{cnum(v.x.value(), ops), cnum(v.y.value(), ops), cnum(v.z.value(), ops)};
-        };
-        const cvec3 n = recount(g.n);
-        const cnum zero(0.0, ops);
-        if (dot(n, recount(g.l[0])) > zero) max(dot(n, recount(g.h[0])), zero);
-    }
-
     const scene::rasterised& r_;
     unsigned y_;
     const frame_constants& k_;
@@ -160,12 +169,14 @@ class planner {
 public:
     planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
             const plan_config& c, plan& p)
-        : r_(r), k_(k), dev_(dev), c_(c), p_(p), cubic_(cubic_points(c.set)),
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), stepper_(r), cubic_(cubic_points(c.set)),
           w_deg_(lagrange(quad_points, degree_check(c.set))),
           w_len_cubic_(lagrange(cubic_, length_check(c.set))),
           w_len_quad_(lagrange(quad_points, length_check(c.set))),
           // Tolerances in 8-bit levels against Q8.8 codes: scaled once per frame.
-          length_tol_(c.length_tol * (1u << colour_fmt.frac)), degree_tol_(c.degree_tol * (1u << colour_fmt.frac)) {}
+          length_tol_(c.length_tol * (1u << colour_fmt.frac)), degree_tol_(c.degree_tol * (1u << colour_fmt.frac)) {
+        geometry_constants();
+    }
 
     void line(unsigned y) {
         line_geometry lg(r_, y, k_, dev_, p_);
@@ -205,6 +216,11 @@ public:
         }
         for (unsigned x = 0; x < r_.width; ++x)
             if (lg.has_colour(x) && !sampled[x]) ++p_.check_samples;
+        // The stepping geometry unit's count: the same points, left to right, stepped along the line.
+        for (unsigned x = 0; x < r_.width; ++x)
+            if (lg.has_geometry(x))
+                line_geometry::charge_dots(stepper_.at(x, y, &p_.geometry_stepped), &p_.geometry_stepped);
+        p_.stepping = stepper_.stats();
     }
 
 private:
@@ -320,7 +336,7 @@ private:
         for (unsigned m = top;; --m) {
             interval_job job = make(m);
             if (m == lowest && !c_.exact_fallback) return job;
-            if (passes(job)) return job;
+            if (c_.length == length_policy::geometry ? geometry_passes(lg, job) : passes(job)) return job;
             if (m == lowest) return std::nullopt;
         }
     }
@@ -336,6 +352,7 @@ private:
                 p_.decision.cmp += 10;
                 return zone_is_quadratic(head_zone(r_, lg.geometry(pos)));
             }
+            case degree_policy::geometry: return geometry_quadratic(lg, pos, n);
             case degree_policy::adaptive: {
                 // The quadratic through t = 0, 1/2, 1 at the cubic's other sample, which the cubic
                 // computes anyway; no extra sample.
@@ -384,11 +401,122 @@ private:
         return worst;
     }
 
+    // ---- Geometry-only policies: N.H and N.L codes (Q1.15) and per-frame constants ----
+    // Per frame (host set-up, like the device's a(n) generator; not counted per pixel), with the
+    // specular amplitude A = max k_s I code (levels), the diffuse slope B = max k_d I (levels per unit
+    // N.L) and the tolerance T (levels):
+    //  - the highlight threshold c_n: A c^n = T / 2, below it the specular term is under half the
+    //    tolerance: an interval whose N.H stays below c_n is lit diffusely only;
+    //  - N.L's tolerance T / B (a miss of N.L by that moves the colour by T);
+    //  - in the highlight, N.H's tolerance T / (2 A n) (the specular slope is at most A n), and the
+    //    largest spread D of N.H over an interval: the colour there is about A exp(-n (1 - N.H)), and
+    //    the polynomial through its samples misses it by about A K (n D)^(d+1) for degree d with
+    //    K = max |prod (t - t_i)| / (d + 1)! over [0, 1], so D = lobe_tol (T / (2 A K))^(1/(d+1)) / n.
+    void geometry_constants() {
+        const geometry_limits g = geometry_limits_of(k_, c_);
+        geo_cn_ = g.highlight;
+        geo_nl_tol_ = g.nl_miss;
+        geo_nl_deg_tol_ = g.nl_miss_degree;
+        geo_nh_tol_ = g.nh_miss;
+        geo_spread_cubic_ = g.spread_cubic;
+        geo_spread_quad_ = g.spread_quad;
+    }
+
+    // |polynomial through the codes at `nodes` (Lagrange weights: shift-and-add) - the code at `check`|,
+    // charged to the decision as estimate() charges its colour version.
+    template <std::size_t K>
+    double code_miss(const std::array<double, K>& v, const std::array<double, K>& w, double exact) {
+        double e = 0.0;
+        for (std::size_t i = 0; i < K; ++i) {
+            e += w[i] * v[i];
+            p_.decision.add += shift_add_cost(w[i]);
+        }
+        p_.decision.add += K - 1 + 1;
+        return std::abs(e - exact);
+    }
+    bool over(double v, double limit) { return cnum(v, &p_.decision) > cnum(limit, &p_.decision); }
+
+    // The N.H and N.L codes at pixels pos + e N / 8.
+    struct codes {
+        double nh, nl;
+    };
+    codes at(line_geometry& lg, unsigned pos, unsigned n, unsigned e) {
+        const sample_geometry g = lg.sample(pos + e * n / 8);
+        return {double(g.cos_nh), double(g.cos_nl)};
+    }
+
+    // Geometry-only length: the interval's samples and its check point (geometry only, no colour).
+    bool geometry_passes(line_geometry& lg, const interval_job& job) {
+        const unsigned n = 1u << job.m;
+        std::vector<unsigned> pts(cubic_.begin(), cubic_.end());
+        if (job.deg2) pts.assign(quad_points.begin(), quad_points.end());
+        pts.push_back(length_check(c_.set));
+        if (job.deg2) pts.push_back(degree_check(c_.set));  // N.L's curvature, as for a cubic
+        double lo = 1e300, hi = -1.0;
+        for (unsigned e : pts) {
+            const double h = at(lg, job.x0, n, e).nh;
+            lo = std::min(lo, h);
+            hi = std::max(hi, h);
+            p_.decision.cmp += 2;
+        }
+        const codes chk = at(lg, job.x0, n, length_check(c_.set));
+        double nl_miss = 0.0, nh_miss = 0.0;
+        if (job.deg2) {
+            std::array<double, 3> nl{}, nh{};
+            for (unsigned i = 0; i < 3; ++i) {
+                const codes q = at(lg, job.x0, n, quad_points[i]);
+                nl[i] = q.nl;
+                nh[i] = q.nh;
+            }
+            nl_miss = code_miss(nl, w_len_quad_, chk.nl);
+            nl_miss = std::max(nl_miss, code_miss(nl, w_deg_, at(lg, job.x0, n, degree_check(c_.set)).nl));
+            nh_miss = code_miss(nh, w_len_quad_, chk.nh);
+        } else {
+            std::array<double, 4> nl{}, nh{};
+            for (unsigned i = 0; i < 4; ++i) {
+                const codes q = at(lg, job.x0, n, cubic_[i]);
+                nl[i] = q.nl;
+                nh[i] = q.nh;
+            }
+            nl_miss = code_miss(nl, w_len_cubic_, chk.nl);
+            std::array<double, 3> nl3{nl[0], nl[2], nl[3]};  // t = 0, 1/2, 1 (case 1; case 2 below)
+            if (c_.set == interp::sample_set::case2) nl3 = {nl[0], nl[1], nl[3]};
+            nl_miss = std::max(nl_miss, code_miss(nl3, w_deg_, at(lg, job.x0, n, degree_check(c_.set)).nl));
+            nh_miss = code_miss(nh, w_len_cubic_, chk.nh);
+        }
+        if (over(nl_miss, geo_nl_tol_)) return false;
+        if (!over(hi, geo_cn_)) return true;  // no highlight in the interval
+        ++p_.decision.add;                      // the spread hi - lo
+        if (over(hi - lo, job.deg2 ? geo_spread_quad_ : geo_spread_cubic_)) return false;
+        return !over(nh_miss, geo_nh_tol_);
+    }
+
+    // Geometry-only degree: the quadratic where no highlight reaches the interval and N.L's quadratic
+    // through t = 0, 1/2, 1 misses the cubic's other sample by at most degree_tol (in levels).
+    bool geometry_quadratic(line_geometry& lg, unsigned pos, unsigned n) {
+        std::array<codes, 4> q{};
+        double hi = -1.0;
+        for (unsigned i = 0; i < 4; ++i) {
+            q[i] = at(lg, pos, n, cubic_[i]);
+            hi = std::max(hi, q[i].nh);
+            ++p_.decision.cmp;
+        }
+        if (!over(geo_cn_, hi)) return false;  // a highlight: cubic
+        const std::array<double, 3> nl3 = c_.set == interp::sample_set::case1
+                                              ? std::array<double, 3>{q[0].nl, q[2].nl, q[3].nl}
+                                              : std::array<double, 3>{q[0].nl, q[1].nl, q[3].nl};
+        const unsigned other = c_.set == interp::sample_set::case1 ? 1 : 2;
+        return !over(code_miss(nl3, w_deg_, q[other].nl), geo_nl_deg_tol_);
+    }
+    double geo_cn_ = 0.0, geo_nl_tol_ = 0.0, geo_nl_deg_tol_ = 0.0, geo_nh_tol_ = 0.0;
+    double geo_spread_cubic_ = 0.0, geo_spread_quad_ = 0.0;
+
     const scene::rasterised& r_;
     const frame_constants& k_;
     const scene::device_config& dev_;
     const plan_config& c_;
     plan& p_;
+    scene::span_stepper stepper_;
     std::array<unsigned, 4> cubic_;
     std::array<double, 3> w_deg_;
     std::array<double, 4> w_len_cubic_;
@@ -397,6 +525,41 @@ private:
 };
 
 }  // namespace
+
+geometry_limits geometry_limits_of(const frame_constants& k, const plan_config& c) {
+    const double one = double(spec::cos_one);
+    const double tol = c.length_tol;
+    double a = 0.0, b = 0.0;
+    for (int ch = 0; ch < 3; ++ch) {
+        a = std::max(a, double(k.ksi[ch]));
+        b = std::max(b, double(k.kdi[ch]) / double(1u << kdi_fmt.frac));
+    }
+    const double n = std::max(1u, k.n);
+    const double big = 4.0 * one;  // a bound no code difference reaches
+    geometry_limits g;
+    g.highlight = a > 0.0 ? std::pow(std::min(1.0, 0.5 * tol / a), 1.0 / n) * one : big;
+    g.nl_miss = b > 0.0 ? tol / b * one : big;
+    g.nl_miss_degree = b > 0.0 ? c.degree_tol / b * one : big;
+    g.nh_miss = a > 0.0 ? 0.5 * tol / (a * n) * one : big;
+    // K = max over [0, 1] of |prod (t - t_i)| / (d + 1)!, on a grid of 1/1000 (frame constant).
+    auto spread = [&](const std::vector<double>& nodes) {
+        double worst = 0.0;
+        for (int i = 0; i <= 1000; ++i) {
+            double v = 1.0;
+            for (double t : nodes) v *= (i / 1000.0 - t);
+            worst = std::max(worst, std::abs(v));
+        }
+        double fact = 1.0;
+        for (std::size_t i = 2; i <= nodes.size(); ++i) fact *= double(i);
+        const double kk = worst / fact;
+        return a > 0.0 ? c.lobe_tol * std::pow(0.5 * tol / (a * kk), 1.0 / double(nodes.size())) / n * one : big;
+    };
+    std::vector<double> cubic_t;
+    for (unsigned e : cubic_points(c.set)) cubic_t.push_back(e / 8.0);
+    g.spread_cubic = spread(cubic_t);
+    g.spread_quad = spread({0.0, 0.5, 1.0});
+    return g;
+}
 
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c) {

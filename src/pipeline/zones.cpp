@@ -1,9 +1,11 @@
-// The zone map of the head (seed 004, Fig. 5). The figure is not in the seed's text (SPEC.md): the
-// seed names the zones (forehead, brows, eyes, nose, cheeks, mouth, chin) and says zones 2, 4 and 7
-// are interpolated by a quadratic, the others by a cubic. Our reconstruction numbers the zones so
-// that 2, 4 and 7 are the flat ones (forehead, cheeks, chin), which is what a quadratic suits, and
-// calibrates the boxes below on the head scan (Lee Perry-Smith's, data/head/) by eye on a zone map
-// drawn over the shaded head (test_pipeline_plan writes it: build/out/pipeline/zones_head.png).
+// The zone map of the head (seed 004, Fig. 5). The figure is not in the seed's text, and the text
+// names no zone: it says only that the face is cut into characteristic zones and that zones 2, 4 and
+// 7 are interpolated by a quadratic, the others by a cubic. The names and boxes below are OUR reading:
+// we number the zones so that 2, 4 and 7 are the flat ones (forehead, cheeks, chin), which is what a
+// quadratic suits, and calibrate the boxes on the head scan (Lee Perry-Smith's, data/head/) by eye on
+// a zone map drawn over the shaded head (test_pipeline_plan writes it: build/out/pipeline/zones_head.png).
+// The zone policy takes an interval's degree from the zone of its first pixel; intervals are not cut
+// at zone borders (plan.cpp, modules/pipeline/README.md: why not).
 #include <algorithm>
 #include <cmath>
 

@@ -34,8 +34,14 @@ rgb shade_common(const pixel_geometry& g, const material& m, const std::vector<l
     return {acc[0].value(), acc[1].value(), acc[2].value()};
 }
 
-template <class Shade>
-shaded_image render(const rasterised& r, render_stats* stats, Shade shade) {
+// The per-pixel references' geometry: geometry_at, from scratch at every pixel.
+auto from_scratch(const rasterised& r) {
+    return [&r](unsigned x, unsigned y, op_counts* ops) { return geometry_at(r, x, y, ops); };
+}
+
+// `geometry(x, y, ops)`: the pixel's geometry, charged to ops (geometry_at, or a span_stepper's).
+template <class Geometry, class Shade>
+shaded_image render(const rasterised& r, render_stats* stats, Geometry geometry, Shade shade) {
     const auto t0 = std::chrono::steady_clock::now();
     shaded_image img;
     img.width = r.width;
@@ -46,7 +52,7 @@ shaded_image render(const rasterised& r, render_stats* stats, Shade shade) {
     for (unsigned y = 0; y < r.height; ++y)
         for (const span& sp : line_spans(r, y))
             for (unsigned x = sp.x_begin; x < sp.x_end; ++x) {
-                const pixel_geometry g = geometry_at(r, x, y, &st.geometry);
+                const pixel_geometry g = geometry(x, y, &st.geometry);
                 pixel_geometry gs = g;  // the same values, now charging the shading counts
                 auto rebind = [&st](cvec3& v) {
                     v = {cnum(v.x.value(), &st.shading), cnum(v.y.value(), &st.shading), cnum(v.z.value(), &st.shading)};
@@ -141,18 +147,28 @@ rgb shade_device(const pixel_geometry& g, const material& m, const std::vector<l
 }
 
 shaded_image render_phong(const rasterised& r, render_stats* stats) {
-    return render(r, stats, [&r](const pixel_geometry& g, const material& m) { return shade_phong(g, m, r.src->lights); });
+    return render(r, stats, from_scratch(r),
+                  [&r](const pixel_geometry& g, const material& m) { return shade_phong(g, m, r.src->lights); });
 }
 
 shaded_image render_device(const rasterised& r, const device_config& dev, render_stats* stats) {
-    return render(r, stats,
+    return render(r, stats, from_scratch(r),
                   [&r, &dev](const pixel_geometry& g, const material& m) { return shade_device(g, m, r.src->lights, dev); });
 }
 
 shaded_image render_specular(const rasterised& r, const specular_fn& unit, render_stats* stats) {
-    return render(r, stats, [&r, &unit](const pixel_geometry& g, const material& m) {
+    return render(r, stats, from_scratch(r), [&r, &unit](const pixel_geometry& g, const material& m) {
         return shade_specular(g, m, r.src->lights, unit);
     });
+}
+
+shaded_image render_phong_scanline(const rasterised& r, render_stats* stats, stepping_stats* steps) {
+    span_stepper st(r);
+    shaded_image img = render(
+        r, stats, [&st](unsigned x, unsigned y, op_counts* o) { return st.at(x, y, o); },
+        [&r](const pixel_geometry& g, const material& m) { return shade_phong(g, m, r.src->lights); });
+    if (steps) *steps = st.stats();
+    return img;
 }
 
 }  // namespace shading::scene

@@ -6,10 +6,13 @@ if(TARGET shading_pipeline)
     message(WARNING "render_pipeline needs nlohmann-json (Debian: nlohmann-json3-dev; scripts/setup.sh installs it): not built")
     return()
   endif()
-  add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp)
+  add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_setup.cpp
+                 ${CMAKE_CURRENT_SOURCE_DIR}/render_run.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_report.cpp
+                 ${CMAKE_CURRENT_SOURCE_DIR}/render_images.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_sweep.cpp)
   target_link_libraries(render_pipeline PRIVATE shading_pipeline CLI11::CLI11 nlohmann_json::nlohmann_json)
   # The default --data-dir: this source tree (the head scan lives in data/head/).
   target_compile_definitions(render_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_include_directories(render_pipeline PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   set_target_properties(render_pipeline PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   if(TARGET shading_pipeline_sim)
     target_link_libraries(render_pipeline PRIVATE shading_pipeline_sim)
@@ -31,7 +34,7 @@ if(TARGET shading_pipeline)
            COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 48 $2 --out \"$1\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/head48 ${rp_sim})
   add_test(NAME pipeline.render.head48.report
-           COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"clocks_per_pixel\"' '\"forehead\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
+           COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"scanline_phong_long_over_hardware_long\"' '\"displayed_8bit\"' '\"phong_scanline\"' '\"clocks_per_pixel\"' '\"forehead\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
                    ${rp_out}/head48)
   set_tests_properties(pipeline.render.head48.report PROPERTIES DEPENDS pipeline.render.head48)
   list(APPEND rp_tests pipeline.render.head48 pipeline.render.head48.report)
@@ -56,7 +59,21 @@ if(TARGET shading_pipeline)
   add_test(NAME pipeline.sweep.exponents
            COMMAND sh -c "\"$0\" --sweep --grid exponents --scene head --size 24 --device minimax --jobs 2 --out \"$1\" && test $(wc -l < \"$1/sweep.csv\") -eq 9 && grep -q ',500,minimax,' \"$1/sweep.csv\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/sweep_n)
-  list(APPEND rp_tests pipeline.sweep.tiny pipeline.sweep.exponents)
+  # The claims grid, tiny (2 scenes x 1 light x 1 n x 1 size x 1 device x 12 policies, 24 pixels):
+  # two shards merged (rows sorted by the config column) equal one run row for row; --emit-jobs
+  # prints one command line per configuration; a bad shard is bad input.
+  set(rp_claims --sweep --grid claims --scenes sphere torus --lights 0,30 --ns 20 --sizes 24 --device squared --jobs 2)
+  add_test(NAME pipeline.sweep.claims_shards
+           COMMAND sh -c "set -e; b=\"$0\"; o=\"$1\"; shift; rm -rf \"$o\"; \"$b\" \"$@\" --out \"$o/all\"; \"$b\" \"$@\" --shard 1/2 --out \"$o/s1\"; \"$b\" \"$@\" --shard 2/2 --out \"$o/s2\"; test $(wc -l < \"$o/all/sweep.csv\") -eq 25; (tail -n +2 \"$o/s1/sweep.csv\"; tail -n +2 \"$o/s2/sweep.csv\") | sort -t, -k1,1n > \"$o/merged\"; tail -n +2 \"$o/all/sweep.csv\" | cmp - \"$o/merged\"; grep -q ',geometry,.*,yes$' \"$o/all/sweep.csv\"; grep -q ',adaptive,.*,no$' \"$o/all/sweep.csv\""
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/claims ${rp_claims})
+  add_test(NAME pipeline.sweep.emit_jobs
+           COMMAND sh -c "b=\"$0\"; test $(\"$b\" \"$@\" --emit-jobs --out /nonexistent | grep -c -- '--shard [0-9]*/24 --csv') -eq 24"
+                   $<TARGET_FILE:render_pipeline> ${rp_claims})
+  add_test(NAME pipeline.sweep.bad_shard
+           COMMAND sh -c "b=\"$0\"; o=\"$1\"; shift; \"$b\" \"$@\" --shard 3/2 --out \"$o\"; test $? -eq 1"
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/bad_shard ${rp_claims})
+  list(APPEND rp_tests pipeline.sweep.tiny pipeline.sweep.exponents pipeline.sweep.claims_shards pipeline.sweep.emit_jobs
+       pipeline.sweep.bad_shard)
   # Bad input: a clear message and exit status 1, nothing written. Each case: name, then arguments.
   set(rp_bad
       "m0|--m 0"

@@ -530,6 +530,7 @@ plan mixed_plan() {
     p.width = 64;
     p.height = 4;
     p.geometry = {10, 2, 1, 20, 3};
+    p.geometry_stepped = {6, 1, 1, 30, 3};
     p.decision = {1, 0, 0, 4, 0};
     p.jobs.push_back(job_of({0, 0, 0, 0}, 4, false));
     p.jobs.push_back(job_of({0, 0, 0, 0}, 4, false, 10));
@@ -546,8 +547,12 @@ plan mixed_plan() {
 // (40 mul, 40 add) and are the geometry side's: {10 + 1 + 40, 2, 1, 20 + 4 + 40, 3}. Horner, case 1, shift-and-add /3: coefficient units 5 cubic-unit
 // intervals x 3 channels x 22 adders = 330 and 1 x 3 x 5 = 15; Horner 29 cubic pixels x 3 x (3, 3) =
 // 261 mul, 261 add and 8 quadratic pixels x 3 x (2, 2) = 48, 48; clocks 29 x 6 + 8 x 4 = 206.
+// The geometry side from scratch (plan.geometry); stepped (the default) the stepped count instead:
+// {6 + 1 + 40, 1, 1, 30 + 4 + 40, 3}.
 TEST(PipelineOps, HornerHandSums) {
     plan_config c;
+    EXPECT_EQ(hardware_ops(mixed_plan(), c).geometry, (scene::op_counts{47, 1, 1, 74, 3}));
+    c.unit = geometry_unit::scratch;
     c.set = interp::sample_set::case1;
     c.div = interp::div3_mode::shift_add;
     c.eval = evaluator::horner;
@@ -573,6 +578,7 @@ TEST(PipelineOps, SquaredDeviceSamplesCountTheirSquarings) {
     EXPECT_EQ(device_sample_ops(scene::device_config{}, 1000), (scene::op_counts{5, 0, 0, 2, 0}));
     plan_config c;
     c.eval = evaluator::horner;
+    c.unit = geometry_unit::scratch;
     const hardware_counts h = hardware_ops(mixed_plan(), c, sq, 20);
     EXPECT_EQ(h.sample_stage, (scene::op_counts{14 * 12, 0, 0, 14 * 8, 0}));
     EXPECT_EQ(h.geometry, (scene::op_counts{10 + 1 + 5 * 12, 2, 1, 20 + 4 + 5 * 8, 3}));

@@ -1,0 +1,97 @@
+#include "scene/scanline.h"
+
+#include <glm/glm.hpp>
+
+namespace shading::scene {
+
+span_stepper::span_stepper(const rasterised& r) : r_(r), grad_(r.setups.size()) {
+    const world& s = *r.src;
+    perspective_ = !s.cam.orthographic();
+    need_p_ = perspective_;
+    for (const auto& l : s.lights) need_p_ = need_p_ || l.type == light::kind::point;
+}
+
+void span_stepper::setup(int32_t t, op_counts* ops) {
+    gradients& g = grad_[static_cast<std::size_t>(t)];
+    const triangle_setup& ts = r_.setups[static_cast<std::size_t>(t)];
+    const mesh& m = r_.src->objects[ts.object].geometry;
+    const auto& tri = m.triangles[ts.triangle];
+    auto c = [ops](double v) { return cnum(v, ops); };
+    // One plane coefficient of sum_i g_i A_i: 3 mul, 2 add.
+    auto coef = [&](int k, const std::array<double, 3>& a) {
+        return (c(ts.plane[0][k]) * c(a[0]) + c(ts.plane[1][k]) * c(a[1]) + c(ts.plane[2][k]) * c(a[2])).value();
+    };
+    auto plane_of = [&](const std::array<double, 3>& a) { return plane3{coef(0, a), coef(1, a), coef(2, a)}; };
+    for (int comp = 0; comp < 3; ++comp) {
+        g.n[comp] = plane_of({m.normals[tri[0]][comp], m.normals[tri[1]][comp], m.normals[tri[2]][comp]});
+        if (need_p_)
+            g.p[comp] = plane_of({m.positions[tri[0]][comp], m.positions[tri[1]][comp], m.positions[tri[2]][comp]});
+    }
+    if (perspective_) {
+        // Q = sum_i g_i: the vertices' weights are 1, so only the sums (2 adds per coefficient).
+        auto sum = [&](int k) { return (c(ts.plane[0][k]) + c(ts.plane[1][k]) + c(ts.plane[2][k])).value(); };
+        g.q = {sum(0), sum(1), sum(2)};
+    }
+    g.ready = true;
+    ++stats_.triangle_setups;
+}
+
+pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops) {
+    const int32_t t = r_.tri[r_.index(x, y)];
+    if (!grad_[static_cast<std::size_t>(t)].ready) setup(t, ops);
+    const gradients& g = grad_[static_cast<std::size_t>(t)];
+    auto c = [ops](double v) { return cnum(v, ops); };
+    // Counted values start from the stored ones, charging `ops` from here on.
+    auto rebind = [&c](cnum v) { return c(v.value()); };
+    if (t == tri_ && y == y_ && x > x_) {
+        // Step d pixels right: + d a per component (shift, or shift-and-add: popcount(d) adds).
+        const unsigned d = x - x_;
+        unsigned ones = 0;
+        for (unsigned k = d; k; k >>= 1) ones += k & 1u;
+        auto step = [&](cnum v, const plane3& pl) {
+            if (ops) ops->add += ones - 1;
+            return rebind(v) + c(d * pl.a);
+        };
+        for (int k = 0; k < 3; ++k) {
+            cnum* un = k == 0 ? &un_.x : k == 1 ? &un_.y : &un_.z;
+            *un = step(*un, g.n[k]);
+            if (need_p_) {
+                cnum* up = k == 0 ? &up_.x : k == 1 ? &up_.y : &up_.z;
+                *up = step(*up, g.p[k]);
+            }
+        }
+        if (perspective_) q_ = step(q_, g.q);
+        ++stats_.steps;
+    } else {
+        // Run start: a x + b y + c at the pixel centre (2 mul, 2 add per component).
+        const cnum px = c(x + 0.5), py = c(y + 0.5);
+        auto eval = [&](const plane3& pl) { return c(pl.a) * px + c(pl.b) * py + c(pl.c); };
+        un_ = {eval(g.n[0]), eval(g.n[1]), eval(g.n[2])};
+        if (need_p_) up_ = {eval(g.p[0]), eval(g.p[1]), eval(g.p[2])};
+        if (perspective_) q_ = eval(g.q);
+        tri_ = t;
+        ++stats_.run_starts;
+    }
+    x_ = x;
+    y_ = y;
+    ++stats_.points;
+
+    const world& s = *r_.src;
+    auto cv = [&c](const glm::dvec3& v) { return cvec3{c(v.x), c(v.y), c(v.z)}; };
+    auto rb = [&rebind](const cvec3& v) { return cvec3{rebind(v.x), rebind(v.y), rebind(v.z)}; };
+    pixel_geometry out;
+    out.object = r_.setups[static_cast<std::size_t>(t)].object;
+    // U_N is Q times the perspective-correct normal: normalising removes Q, so no division here.
+    out.n = normalize(rb(un_));
+    if (need_p_) out.p = perspective_ ? (c(1.0) / rebind(q_)) * rb(up_) : rb(up_);
+    out.v = s.cam.orthographic() ? cv(r_.view_dir) : normalize(cv(r_.eye) - out.p);
+    for (const auto& l : s.lights) {
+        const cvec3 lv = l.type == light::kind::directional ? cv(glm::normalize(l.vector))
+                                                             : normalize(cv(l.vector) - out.p);
+        out.l.push_back(lv);
+        out.h.push_back(normalize(lv + out.v));
+    }
+    return out;
+}
+
+}  // namespace shading::scene

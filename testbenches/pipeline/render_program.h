@@ -1,0 +1,143 @@
+// render_pipeline's parts (testbenches/pipeline/), split by what they do:
+//   render_pipeline.cpp   the command line, main and sc_main
+//   render_setup.cpp      options to a scene and a plan configuration
+//   render_run.cpp        one render: plan, golden frame, references, SystemC run, comparisons, counts
+//   render_report.cpp     report.json, report.md and the summary printed
+//   render_images.cpp     the PNGs
+//   render_sweep.cpp      --sweep: the grids, shards, --emit-jobs, child processes and the CSV
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pipeline/pipeline.h"
+#include "scene/image.h"
+#include "scene/raster.h"
+#include "scene/shade.h"
+
+namespace shading::render_program {
+
+using json = nlohmann::json;
+using namespace shading::pipeline;
+
+// The largest --size: a frame costs about 250 bytes per pixel here (depth and triangle buffers, the
+// reference and hardware images as doubles, the frames' codes, the maps), so 4096 x 4096 needs
+// about 4 GB; beyond that the program refuses rather than failing half-way through.
+constexpr unsigned max_size = 4096;
+
+// True while a progress line on a terminal has no newline yet (an error message then starts a new line).
+extern bool progress_open;
+
+struct options {
+    std::string scene = "head", data_dir = SHADING_SOURCE_DIR, out = "out/pipeline";
+    unsigned size = 256;
+    std::string light;                  // "azimuth,elevation" in degrees; empty: the scene's own
+    int n = -1;                         // -1: the scene's material
+    std::string kd, ks, ambient;        // "v" or "r,g,b" in [0, 1]; empty: the scene's material
+    std::string length = "fixed", degree = "cubic", eval = "horner", set = "case1", div3 = "shift_add";
+    std::string unit = "stepped";       // the geometry side's unit: stepped or scratch
+    plan_config pc;                     // the numeric and boolean settings, defaults from pipeline.h
+    std::string device = "patent", mode = "saturate";
+    bool device_given = false;          // --sweep: without --device, the grid's devices
+    bool sim = true, images = true;
+    std::string abstraction = "block";  // the SystemC pipeline's level: block or fast (interp/abstraction.h)
+    std::string vcd, json_name = "report.json", md_name = "report.md";
+    double error_scale = 2.0, error_scale_total = 16.0;
+    bool inject_mismatch = false;       // (hidden, for the tests) corrupt one golden pixel before the comparison
+    // --sweep
+    bool sweep = false;
+    unsigned jobs = 0;
+    std::string grid = "small", csv;
+    std::string shard;                  // "I/N": only the configurations i with i % N == I - 1
+    bool emit_jobs = false;             // print one command line per configuration instead of running
+    // --grid claims: the lists (a light is "azimuth,elevation")
+    std::vector<std::string> claims_scenes{"head", "sphere", "torus"}, claims_lights{"-40,25", "35,20", "10,60"};
+    std::vector<int> claims_ns{5, 20, 100, 500};
+    std::vector<unsigned> claims_sizes{512, 1024};
+    std::vector<std::string> argv;      // the command line, for --emit-jobs
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0);
+plan_config plan_config_of(const options& o);
+// Throws scene_error for a bad size, scene, light, material value.
+scene::world load_world(const options& o);
+
+// Everything one render computed, for the report and the images.
+struct render_data {
+    plan_config cfg;
+    scene::device_config dev;
+    scene::world s;
+    scene::rasterised r;
+    frame_constants k;
+    plan p;
+    frame hw, pp;
+    scene::shaded_image phong, devref, hw_img, pp_img;
+    scene::render_stats sp, sl, sd;  // Phong from scratch, scan-line Phong, device reference
+    scene::stepping_stats sl_steps;
+    hardware_counts hc, hc_other;    // the configured geometry unit, and the other one
+    json sim_j = {{"ran", false}};
+    double sim_clocks_per_px = 0.0, sim_px_per_s = 0.0, sr_cpu = 0.0, sim_px_per_cpu_s = 0.0;
+    std::map<std::string, double> wall;
+    // The compared pairs, whole image (NMSE etc.) and their JSON with the zones.
+    struct pair_def {
+        const char* key;
+        const scene::shaded_image* a;
+        const scene::shaded_image* ref;
+        const char* what;
+    };
+    std::vector<pair_def> pairs;
+    std::map<std::string, error_stats> whole;
+    json errors;
+    std::vector<std::size_t> zone_px;
+    // The 8-bit displayed images (rounded, as the PNGs): their NMSE beside the frame buffer's.
+    error_stats interp_8bit, total_8bit;
+    std::vector<std::string> written;  // the PNGs
+};
+
+// One render (render_run.cpp): returns the process's exit status.
+int render(const options& o);
+// The comparisons of a finished render (render_run.cpp).
+void compare_all(render_data& d);
+// report.json (render_report.cpp).
+json report_json(const options& o, const render_data& d);
+// report.md and the printed summary.
+std::string report_md(const options& o, const render_data& d);
+void print_summary(const options& o, const render_data& d);
+// The PNGs into the staging folder; names appended to d.written (render_images.cpp).
+class staged_output;
+void write_images(const options& o, render_data& d, staged_output& out);
+// An image as the 8-bit display shows it: each value rounded to an integer level.
+scene::shaded_image displayed(const scene::shaded_image& img);
+
+// The sweep (render_sweep.cpp).
+int run_sweep(const options& o);
+
+// Report pieces.
+json stats_json(const error_stats& s);
+json ops_json(const scene::op_counts& c, double pixels);
+std::string fmt(const char* f, double v);
+std::string fmt_psnr(double db);
+std::string num(double v);
+void write_text(const std::string& path, const std::string& text);
+
+// Files are written under temporary names in a staging folder inside --out and renamed into place
+// only when everything succeeded; on failure the staging folder is removed.
+class staged_output {
+public:
+    explicit staged_output(const std::string& out);
+    ~staged_output();
+    std::string path(const std::string& name);
+    void commit();
+
+private:
+    std::string out_, stage_;
+    std::vector<std::string> names_;
+};
+
+}  // namespace shading::render_program
