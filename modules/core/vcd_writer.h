@@ -5,6 +5,9 @@
 // formatted into one buffer flushed with fwrite, no virtual call, string or stream per value.
 // Other value types are reported (shading/trace), not traced: SHADING_TRACE_WRITER=systemc (trace.h)
 // selects SystemC's writer for them.
+// Both SystemC versions the project builds with (docs/systemc-versions.md): 2.3.x calls a trace
+// file's cycle() from the kernel's list (sc_simcontext::add_trace_file); 3.0 removed that list and
+// drives its own writers from a stage callback before every time step, which this writer then uses too.
 #pragma once
 
 #include <algorithm>
@@ -23,9 +26,19 @@
 
 #include "core/report_ids.h"
 
+#if defined(SC_VERSION_MAJOR) && SC_VERSION_MAJOR >= 3
+#define SHADING_VCD_STAGE_CALLBACK 1
+#else
+#define SHADING_VCD_STAGE_CALLBACK 0
+#endif
+
 namespace shading {
 
-class vcd_writer : public sc_core::sc_trace_file {
+class vcd_writer : public sc_core::sc_trace_file
+#if SHADING_VCD_STAGE_CALLBACK
+    , private sc_core::sc_stage_callback_if
+#endif
+{
 public:
     // Opens <path_without_ext>.vcd now (an unopenable path is reported at once, shading/trace) and
     // registers with the kernel, which calls cycle() after every delta cycle and time step.
@@ -36,14 +49,14 @@ public:
             return;  // reached only if errors do not throw: every call below is then a no-op
         }
         buf_.resize(1 << 20);
-        sc_core::sc_get_curr_simcontext()->add_trace_file(this);
+        attach();
     }
 
     // Writes the last time stamp (as SystemC's writer does) and closes the file. A file closed before
     // the first time step has nothing in it: it is removed, with SystemC's warning in our words.
     ~vcd_writer() override {
         if (fp_ == nullptr) return;
-        sc_core::sc_get_curr_simcontext()->remove_trace_file(this);
+        detach();
         if (!initialized_) {
             std::fclose(fp_);
             std::remove(filename_.c_str());
@@ -160,6 +173,16 @@ protected:
     }
 
 private:
+#if SHADING_VCD_STAGE_CALLBACK
+    // SystemC 3.0: called before every time step, as its own writers are (sc_trace_file_base).
+    void stage_callback(const sc_core::sc_stage&) override { cycle(false); }
+    void attach() { sc_core::sc_register_stage_callback(*this, sc_core::SC_PRE_TIMESTEP); }
+    void detach() { sc_core::sc_unregister_stage_callback(*this, sc_core::SC_PRE_TIMESTEP); }
+#else
+    void attach() { sc_core::sc_get_curr_simcontext()->add_trace_file(this); }
+    void detach() { sc_core::sc_get_curr_simcontext()->remove_trace_file(this); }
+#endif
+
     struct entry {
         const sc_dt::sc_uint_base* uint;  // exactly one of uint, boolean is set
         const bool* boolean;
@@ -414,3 +437,5 @@ private:
 };
 
 }  // namespace shading
+
+#undef SHADING_VCD_STAGE_CALLBACK
