@@ -13,6 +13,8 @@
 #   simulates gets its own process (SystemC allows one elaboration per process). Run one with
 #   `ctest --test-dir build -R <Suite.Test>` or `build/bin/<name> --gtest_filter=<Suite.Test>`.
 #   SHADING_TRACE=<dir> makes the simulating tests write their VCDs there.
+# Every test of a program carries the program's name as its ctest label (`ctest -L '^test_blocks$'`;
+# scripts/systemc3.sh --subset selects by label).
 function(shading_add_bench name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;RANDOM" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
@@ -44,7 +46,7 @@ function(shading_add_bench name)
     math(EXPR i "${i} + 1")
   endforeach()
   # No summary rows from tests; SystemC's banner off.
-  set_tests_properties(${tests} PROPERTIES TIMEOUT 120
+  set_tests_properties(${tests} PROPERTIES TIMEOUT 120 LABELS ${name}
                        ENVIRONMENT "SHADING_SUMMARY=;SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
 endfunction()
 
@@ -61,5 +63,5 @@ function(shading_add_gtest name)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60
-    PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+    PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS ${name})
 endfunction()

@@ -18,6 +18,13 @@ if(NOT verilator_FOUND)
   set(SHADING_RTL OFF)
   return()
 endif()
+# Verilator's verilate() links the SystemC it finds itself (SYSTEMC_* variables, /usr/include, then
+# the SystemCLanguage package) unless Verilator::systemc exists: make it the project's choice, so a
+# build against another SystemC (SHADING_SYSTEMC_PREFIX) never mixes two kernels in one program.
+if(NOT TARGET Verilator::systemc)
+  add_library(Verilator::systemc INTERFACE IMPORTED)
+  set_target_properties(Verilator::systemc PROPERTIES INTERFACE_LINK_LIBRARIES ${SHADING_SYSTEMC_TARGET})
+endif()
 set(SHADING_RTL ON)
 message(STATUS "verilator ${verilator_VERSION}: RTL twin co-simulated with the SystemC model")
 find_package(Threads REQUIRED)

@@ -10,7 +10,7 @@ set(_interp_gen_src ${CMAKE_CURRENT_SOURCE_DIR}/gen_interp_rtl.cpp)
 set(_interp_gen_dir ${PROJECT_BINARY_DIR}/CMakeFiles/gen_interp_rtl_configure)
 try_compile(_interp_gen_ok ${_interp_gen_dir} SOURCES ${_interp_gen_src}
             CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src;${PROJECT_SOURCE_DIR}/modules"
-            LINK_LIBRARIES PkgConfig::SYSTEMC
+            LINK_LIBRARIES ${SHADING_SYSTEMC_TARGET}
             CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
             OUTPUT_VARIABLE _interp_gen_log COPY_FILE ${_interp_gen_dir}/gen_interp_rtl)
 if(NOT _interp_gen_ok)
