@@ -15,6 +15,15 @@
 #   SHADING_TRACE=<dir> makes the simulating tests write their VCDs there.
 # Every test of a program carries the program's name as its ctest label (`ctest -L '^test_blocks$'`;
 # scripts/systemc3.sh --subset selects by label).
+# shading_add_skipped(<test> <label> <reason>)
+#   A test that cannot run in this build (a tool missing, a version that cannot build it): it is still
+#   registered, prints "skipped: <reason>" and ctest reports it as skipped (exit 77, SKIP_RETURN_CODE),
+#   so a suite run never silently loses it.
+function(shading_add_skipped test label reason)
+  add_test(NAME ${test} COMMAND sh -c "echo \"skipped: $0\"; exit 77" "${reason}")
+  set_tests_properties(${test} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 10 LABELS ${label})
+endfunction()
+
 function(shading_add_bench name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;RANDOM" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})

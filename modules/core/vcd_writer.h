@@ -57,10 +57,11 @@ public:
     ~vcd_writer() override {
         if (fp_ == nullptr) return;
         detach();
-        if (!initialized_) {
+        if (!initialized_ || unusable_) {
             std::fclose(fp_);
             std::remove(filename_.c_str());
-            SC_REPORT_WARNING(msg::trace, (filename_ + ": closed before any time step was traced, not written").c_str());
+            if (!unusable_)
+                SC_REPORT_WARNING(msg::trace, (filename_ + ": closed before any time step was traced, not written").c_str());
             return;
         }
         uint64_t high = 0, low = 0;
@@ -131,6 +132,10 @@ public:
             SC_REPORT_ERROR(msg::trace, (filename_ + ": the time unit cannot change once tracing has begun").c_str());
             return;
         }
+        if (unit_fs(tu) == 0) {
+            SC_REPORT_ERROR(msg::trace, (filename_ + ": VCD time units finer than 1 fs are not supported").c_str());
+            return;  // the unit stays as it was
+        }
         trace_unit_fs_ = static_cast<uint64_t>(v * static_cast<double>(unit_fs(tu)));
         unit_set_ = true;
     }
@@ -146,7 +151,7 @@ protected:
     // before every time step: the first writes the header and the values at the start, each later one
     // the values changed since, under the current time.
     void cycle(bool delta_cycle) override {
-        if (delta_cycle || fp_ == nullptr) return;
+        if (delta_cycle || fp_ == nullptr || unusable_) return;
         if (!initialized_) {
             initialize();
             return;
@@ -229,8 +234,8 @@ private:
             case sc_core::SC_US: return 1000000000;
             case sc_core::SC_MS: return 1000000000000;
             case sc_core::SC_SEC: return 1000000000000000;
+            default: return 0;  // SystemC 3.0's as, zs and ys: finer than this writer counts
         }
-        return 1;
     }
 
     static std::string unit_name(uint64_t fs) {
@@ -261,6 +266,12 @@ private:
     void initialize() {
         initialized_ = true;
         kernel_unit_fs_ = static_cast<uint64_t>(std::llround(sc_core::sc_get_time_resolution().to_seconds() * 1e15));
+        if (kernel_unit_fs_ == 0) {  // SystemC 3.0 allows a resolution below 1 fs
+            SC_REPORT_ERROR(msg::trace, (filename_ + ": the kernel's time resolution is finer than 1 fs; not traced, "
+                                                     "SHADING_TRACE_WRITER=systemc may be used").c_str());
+            unusable_ = true;  // nothing is written; the file is removed when the writer closes
+            return;
+        }
         if (!unit_set_) trace_unit_fs_ = kernel_unit_fs_;
         low_units_ = kernel_unit_fs_ > trace_unit_fs_;
         if (low_units_) {
@@ -429,6 +440,7 @@ private:
     std::vector<entry> entries_;
     std::vector<std::string> names_;  // until the header is written
     bool initialized_ = false;
+    bool unusable_ = false;  // the kernel's resolution cannot be written (below 1 fs)
     bool unit_set_ = false;
     bool low_units_ = false;
     int low_digits_ = 0;
