@@ -24,11 +24,26 @@ function(shading_add_skipped test label reason)
   set_tests_properties(${test} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 10 LABELS ${label})
 endfunction()
 
+# shading_add_usage_test(<program> [ARGS <arguments...>])
+#   usage.<program>: the program run with bad usage (default: an unknown option) must exit exactly 2,
+#   the project's status for it (testbenches/common/exit_status.h: 0 success, 1 failure, 2 bad usage).
+function(shading_add_usage_test prog)
+  cmake_parse_arguments(ARG "" "" "ARGS" ${ARGN})
+  if(NOT ARG_ARGS)
+    set(ARG_ARGS --no-such-option)
+  endif()
+  add_test(NAME usage.${prog} COMMAND sh -c "\"$0\" \"$@\"; test $? -eq 2" $<TARGET_FILE:${prog}> ${ARG_ARGS}
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  set_tests_properties(usage.${prog} PROPERTIES TIMEOUT 30 LABELS ${prog}
+                       ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+endfunction()
+
 function(shading_add_bench name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;RANDOM" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE shading_modules shading_golden shading_tb_common CLI11::CLI11 ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  shading_add_usage_test(${name})
   set(tests bench.${name}.default bench.${name}.inject bench.${name}.inject256)
   add_test(NAME bench.${name}.default COMMAND ${name} --no-vcd WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
   # Exit status exactly 1 (a crash would also be non-zero, and must not pass).

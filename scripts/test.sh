@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 if [ "${1:-}" != "--sanitize" ]; then
   scripts/build.sh
-  ctest --test-dir build --output-on-failure -j "$(nproc)" "$@"
+  ctest --test-dir build --output-on-failure --no-tests=error -j "$(nproc)" "$@"
   exit
 fi
 shift
@@ -28,4 +28,4 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # package.install_and_consume left out: it installs this build and links a consumer project built
 # without -fsanitize against it (undefined __asan_* symbols); it checks the packaging, which the
 # normal run covers, not our code's memory or arithmetic.
-ctest --test-dir build-asan --output-on-failure -j "$(nproc)" -E '^package\.install_and_consume$' "$@"
+ctest --test-dir build-asan --output-on-failure --no-tests=error -j "$(nproc)" -E '^package\.install_and_consume$' "$@"
