@@ -54,9 +54,9 @@ try_compile(_shading_rtl_trace_ok ${_trace_dir}/build SOURCES ${_trace_dir}/chec
             OUTPUT_VARIABLE _trace_log)
 set(SHADING_RTL_TRACE ${_shading_rtl_trace_ok})
 if(NOT SHADING_RTL_TRACE)
-  set(SHADING_RTL_TRACE_SKIP_REASON "verilator ${verilator_VERSION}'s SystemC trace file (verilated_vcd_sc.h) does not "
-                                    "build against SystemC ${SHADING_SYSTEMC_VERSION} (it calls add_trace_file, "
-                                    "which SystemC 3.0 removed)")
+  string(CONCAT SHADING_RTL_TRACE_SKIP_REASON "verilator ${verilator_VERSION}'s SystemC trace file (verilated_vcd_sc.h) "
+                "does not build against SystemC ${SHADING_SYSTEMC_VERSION} (it calls add_trace_file, which "
+                "SystemC 3.0 removed)")
   message(STATUS "${SHADING_RTL_TRACE_SKIP_REASON}: the specular devices' co-simulations are registered as skipped")
 endif()
 find_package(Threads REQUIRED)
