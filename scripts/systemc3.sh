@@ -22,7 +22,7 @@ SUBSET=(test_blocks test_ua60553 test_ua22802 test_squared_device test_interp_bl
 # What package.install_and_consume installs besides the programs above.
 PACKAGE_TARGETS=(shading_golden shading_scene shading_pipeline ua22802_rom_content)
 
-usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 subset=0
 jobs=2
 ctest_args=()
