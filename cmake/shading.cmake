@@ -13,11 +13,37 @@
 #   simulates gets its own process (SystemC allows one elaboration per process). Run one with
 #   `ctest --test-dir build -R <Suite.Test>` or `build/bin/<name> --gtest_filter=<Suite.Test>`.
 #   SHADING_TRACE=<dir> makes the simulating tests write their VCDs there.
+# Every test of a program carries the program's name as its ctest label (`ctest -L '^test_blocks$'`;
+# scripts/systemc3.sh --subset selects by label).
+# shading_add_skipped(<test> <label> <reason>)
+#   A test that cannot run in this build (a tool missing, a version that cannot build it): it is still
+#   registered, prints "skipped: <reason>" and ctest reports it as skipped (exit 77, SKIP_RETURN_CODE),
+#   so a suite run never silently loses it.
+function(shading_add_skipped test label reason)
+  add_test(NAME ${test} COMMAND sh -c "echo \"skipped: $0\"; exit 77" "${reason}")
+  set_tests_properties(${test} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 10 LABELS ${label})
+endfunction()
+
+# shading_add_usage_test(<program> [ARGS <arguments...>])
+#   usage.<program>: the program run with bad usage (default: an unknown option) must exit exactly 2,
+#   the project's status for it (testbenches/common/exit_status.h: 0 success, 1 failure, 2 bad usage).
+function(shading_add_usage_test prog)
+  cmake_parse_arguments(ARG "" "" "ARGS" ${ARGN})
+  if(NOT ARG_ARGS)
+    set(ARG_ARGS --no-such-option)
+  endif()
+  add_test(NAME usage.${prog} COMMAND sh -c "\"$0\" \"$@\"; test $? -eq 2" $<TARGET_FILE:${prog}> ${ARG_ARGS}
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  set_tests_properties(usage.${prog} PROPERTIES TIMEOUT 30 LABELS ${prog}
+                       ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+endfunction()
+
 function(shading_add_bench name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;RANDOM" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE shading_modules shading_golden shading_tb_common CLI11::CLI11 ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  shading_add_usage_test(${name})
   set(tests bench.${name}.default bench.${name}.inject bench.${name}.inject256)
   add_test(NAME bench.${name}.default COMMAND ${name} --no-vcd WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
   # Exit status exactly 1 (a crash would also be non-zero, and must not pass).
@@ -44,7 +70,7 @@ function(shading_add_bench name)
     math(EXPR i "${i} + 1")
   endforeach()
   # No summary rows from tests; SystemC's banner off.
-  set_tests_properties(${tests} PROPERTIES TIMEOUT 120
+  set_tests_properties(${tests} PROPERTIES TIMEOUT 120 LABELS ${name}
                        ENVIRONMENT "SHADING_SUMMARY=;SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
 endfunction()
 
@@ -61,5 +87,5 @@ function(shading_add_gtest name)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60
-    PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+    PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS ${name})
 endfunction()

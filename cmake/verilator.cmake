@@ -1,27 +1,17 @@
 # The RTL twin (rtl/) and its co-simulation with the SystemC model through `verilator --sc`
 # (rtl/README.md). Optional: without Verilator (Debian's `verilator`,
-# scripts/setup.sh installs it) there are no RTL targets or tests.
+# scripts/setup.sh installs it) there are no RTL targets, and the RTL tests are registered as skipped
+# with the reason (testbenches/rtl).
 #
-# Sets SHADING_RTL (ON/OFF), SHADING_RTL_DIR (rtl/ in the source tree), SHADING_RTL_GENERATED (the
+# Sets SHADING_RTL (ON/OFF: Verilator found), SHADING_RTL_SKIP_REASON (why not, when OFF),
+# SHADING_RTL_TRACE (ON/OFF: Verilator's SystemC trace file, which the co-simulations of the specular
+# devices record their RTL waveform with, builds against the chosen SystemC) and
+# SHADING_RTL_TRACE_SKIP_REASON, SHADING_RTL_DIR (rtl/ in the source tree), SHADING_RTL_GENERATED (the
 # generated Verilog in the build tree: shading_formats.vh, ua22802_a_rom.v, rom_sweep/) and
 # SHADING_RTL_INCLUDE_DIRS (every folder the specular devices' modules are found in),
 # SHADING_RTL_SQUARED_DIRS (the same for the squared-quadratic device and its comparison designs),
 # and defines shading_verilate_rtl, shading_verilate_specular and shading_verilate_squared (below).
 # A project that pulls the model in with add_subdirectory() gets the SystemC modules alone.
-if(NOT SHADING_TOP_LEVEL)
-  set(SHADING_RTL OFF)
-  return()
-endif()
-find_package(verilator QUIET HINTS $ENV{VERILATOR_ROOT})
-if(NOT verilator_FOUND)
-  message(STATUS "verilator not found: RTL co-simulation skipped")
-  set(SHADING_RTL OFF)
-  return()
-endif()
-set(SHADING_RTL ON)
-message(STATUS "verilator ${verilator_VERSION}: RTL twin co-simulated with the SystemC model")
-find_package(Threads REQUIRED)
-
 set(SHADING_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
 set(SHADING_RTL_GENERATED ${PROJECT_BINARY_DIR}/generated/rtl)
 set(SHADING_RTL_INCLUDE_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/specular ${SHADING_RTL_DIR}/ua60553
@@ -29,6 +19,48 @@ set(SHADING_RTL_INCLUDE_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/specul
 # The squared-quadratic device, its series variant and the square-and-multiply baseline.
 set(SHADING_RTL_SQUARED_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/squared ${SHADING_RTL_DIR}/sqmul
     ${SHADING_RTL_GENERATED})
+set(SHADING_RTL OFF)
+set(SHADING_RTL_TRACE OFF)
+if(NOT SHADING_TOP_LEVEL)
+  return()
+endif()
+find_package(verilator QUIET HINTS $ENV{VERILATOR_ROOT})
+if(NOT verilator_FOUND)
+  set(SHADING_RTL_SKIP_REASON "verilator not found (Debian: apt-get install verilator, or scripts/setup.sh)")
+  message(STATUS "${SHADING_RTL_SKIP_REASON}: the RTL tests are registered as skipped")
+  return()
+endif()
+# Verilator's verilate() links the SystemC it finds itself (SYSTEMC_* variables, /usr/include, then
+# the SystemCLanguage package) unless Verilator::systemc exists: make it the project's choice, so a
+# build against another SystemC (SHADING_SYSTEMC_PREFIX) never mixes two kernels in one program.
+if(NOT TARGET Verilator::systemc)
+  add_library(Verilator::systemc INTERFACE IMPORTED)
+  set_target_properties(Verilator::systemc PROPERTIES INTERFACE_LINK_LIBRARIES ${SHADING_SYSTEMC_TARGET})
+endif()
+set(SHADING_RTL ON)
+message(STATUS "verilator ${verilator_VERSION}: RTL twin co-simulated with the SystemC model")
+
+# Verilator's SystemC trace file (verilated_vcd_sc.h) registers with sc_simcontext::add_trace_file,
+# which SystemC 3.0 removed (Verilator 5.006, Debian 12's, predates 3.0). Compiled once here against
+# the chosen SystemC; when it does not build, the co-simulations that record the RTL's waveform are
+# registered as skipped with this reason, and everything else of the RTL still runs.
+set(_trace_dir ${PROJECT_BINARY_DIR}/CMakeFiles/verilator_sc_trace_check)
+file(WRITE ${_trace_dir}/check.cpp "#include <verilated_vcd_sc.h>\nvoid shading_check() { VerilatedVcdSc t; }\n")
+try_compile(_shading_rtl_trace_ok ${_trace_dir}/build SOURCES ${_trace_dir}/check.cpp
+            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${VERILATOR_ROOT}/include;${VERILATOR_ROOT}/include/vltstd"
+                        -DCMAKE_TRY_COMPILE_TARGET_TYPE=STATIC_LIBRARY
+            LINK_LIBRARIES ${SHADING_SYSTEMC_TARGET}
+            CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
+            OUTPUT_VARIABLE _trace_log)
+set(SHADING_RTL_TRACE ${_shading_rtl_trace_ok})
+if(NOT SHADING_RTL_TRACE)
+  string(CONCAT SHADING_RTL_TRACE_SKIP_REASON "verilator ${verilator_VERSION}'s SystemC trace file (verilated_vcd_sc.h) "
+                "does not build against SystemC ${SHADING_SYSTEMC_VERSION} (it calls add_trace_file, which "
+                "SystemC 3.0 removed)")
+  message(STATUS "${SHADING_RTL_TRACE_SKIP_REASON}: the specular devices' co-simulations are registered as skipped")
+endif()
+find_package(Threads REQUIRED)
+
 
 # The generated Verilog must exist when CMake configures: verilate() runs Verilator then, to learn the
 # C++ files it writes. So src/tools/gen_rtl.cpp is compiled and run here, and any change to it or to

@@ -9,7 +9,9 @@
 #   3. build and run one file with `pkg-config --cflags --libs shading` (PKG_CONFIG_PATH=<prefix>/...)
 #      and check shading-scene.pc's libraries and data directory.
 # Usage: scripts/check_package.sh [build-dir]   (default: build). Everything temporary is removed.
-# CXX and SHADING_CXX_LAUNCHER (e.g. ccache) are taken from the environment (ctest sets them).
+# CXX and SHADING_CXX_LAUNCHER (e.g. ccache) are taken from the environment (ctest sets them), and
+# SHADING_SYSTEMC_PREFIX when the build used an Accellera SystemC (docs/systemc-versions.md): the
+# consumer then finds it there, as a user would, through CMAKE_PREFIX_PATH and PKG_CONFIG_PATH.
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:-$src/build}" && pwd)"
@@ -61,10 +63,17 @@ echo "== moved to $prefix"
 launcher=()
 [ -n "${SHADING_CXX_LAUNCHER:-}" ] && launcher=("$SHADING_CXX_LAUNCHER")
 cxx="${CXX:-c++}"
+search="$prefix"
+if [ -n "${SHADING_SYSTEMC_PREFIX:-}" ]; then
+  search="$prefix;$SHADING_SYSTEMC_PREFIX"
+  sc_libdir="$(dirname "$(find "$SHADING_SYSTEMC_PREFIX" -name 'libsystemc.so' -print -quit)")"
+  export PKG_CONFIG_PATH="$sc_libdir/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
+  export LD_LIBRARY_PATH="$sc_libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+fi
 
 echo "== find_package(shading): testbenches/example/installed"
 cmake -S "$src/testbenches/example/installed" -B "$tmp/consumer" -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMPILER="$cxx" \
+      -DCMAKE_PREFIX_PATH="$search" -DCMAKE_CXX_COMPILER="$cxx" \
       ${SHADING_CXX_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER="$SHADING_CXX_LAUNCHER"} >"$tmp/configure.log" \
   || { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/consumer" -j2

@@ -5,6 +5,9 @@
 // formatted into one buffer flushed with fwrite, no virtual call, string or stream per value.
 // Other value types are reported (shading/trace), not traced: SHADING_TRACE_WRITER=systemc (trace.h)
 // selects SystemC's writer for them.
+// Both SystemC versions the project builds with (docs/systemc-versions.md): 2.3.x calls a trace
+// file's cycle() from the kernel's list (sc_simcontext::add_trace_file); 3.0 removed that list and
+// drives its own writers from a stage callback before every time step, which this writer then uses too.
 #pragma once
 
 #include <algorithm>
@@ -23,9 +26,19 @@
 
 #include "core/report_ids.h"
 
+#if defined(SC_VERSION_MAJOR) && SC_VERSION_MAJOR >= 3
+#define SHADING_VCD_STAGE_CALLBACK 1
+#else
+#define SHADING_VCD_STAGE_CALLBACK 0
+#endif
+
 namespace shading {
 
-class vcd_writer : public sc_core::sc_trace_file {
+class vcd_writer : public sc_core::sc_trace_file
+#if SHADING_VCD_STAGE_CALLBACK
+    , private sc_core::sc_stage_callback_if
+#endif
+{
 public:
     // Opens <path_without_ext>.vcd now (an unopenable path is reported at once, shading/trace) and
     // registers with the kernel, which calls cycle() after every delta cycle and time step.
@@ -36,18 +49,19 @@ public:
             return;  // reached only if errors do not throw: every call below is then a no-op
         }
         buf_.resize(1 << 20);
-        sc_core::sc_get_curr_simcontext()->add_trace_file(this);
+        attach();
     }
 
     // Writes the last time stamp (as SystemC's writer does) and closes the file. A file closed before
     // the first time step has nothing in it: it is removed, with SystemC's warning in our words.
     ~vcd_writer() override {
         if (fp_ == nullptr) return;
-        sc_core::sc_get_curr_simcontext()->remove_trace_file(this);
-        if (!initialized_) {
+        detach();
+        if (!initialized_ || unusable_) {
             std::fclose(fp_);
             std::remove(filename_.c_str());
-            SC_REPORT_WARNING(msg::trace, (filename_ + ": closed before any time step was traced, not written").c_str());
+            if (!unusable_)
+                SC_REPORT_WARNING(msg::trace, (filename_ + ": closed before any time step was traced, not written").c_str());
             return;
         }
         uint64_t high = 0, low = 0;
@@ -118,6 +132,10 @@ public:
             SC_REPORT_ERROR(msg::trace, (filename_ + ": the time unit cannot change once tracing has begun").c_str());
             return;
         }
+        if (unit_fs(tu) == 0) {
+            SC_REPORT_ERROR(msg::trace, (filename_ + ": VCD time units finer than 1 fs are not supported").c_str());
+            return;  // the unit stays as it was
+        }
         trace_unit_fs_ = static_cast<uint64_t>(v * static_cast<double>(unit_fs(tu)));
         unit_set_ = true;
     }
@@ -133,7 +151,7 @@ protected:
     // before every time step: the first writes the header and the values at the start, each later one
     // the values changed since, under the current time.
     void cycle(bool delta_cycle) override {
-        if (delta_cycle || fp_ == nullptr) return;
+        if (delta_cycle || fp_ == nullptr || unusable_) return;
         if (!initialized_) {
             initialize();
             return;
@@ -160,6 +178,16 @@ protected:
     }
 
 private:
+#if SHADING_VCD_STAGE_CALLBACK
+    // SystemC 3.0: called before every time step, as its own writers are (sc_trace_file_base).
+    void stage_callback(const sc_core::sc_stage&) override { cycle(false); }
+    void attach() { sc_core::sc_register_stage_callback(*this, sc_core::SC_PRE_TIMESTEP); }
+    void detach() { sc_core::sc_unregister_stage_callback(*this, sc_core::SC_PRE_TIMESTEP); }
+#else
+    void attach() { sc_core::sc_get_curr_simcontext()->add_trace_file(this); }
+    void detach() { sc_core::sc_get_curr_simcontext()->remove_trace_file(this); }
+#endif
+
     struct entry {
         const sc_dt::sc_uint_base* uint;  // exactly one of uint, boolean is set
         const bool* boolean;
@@ -206,8 +234,8 @@ private:
             case sc_core::SC_US: return 1000000000;
             case sc_core::SC_MS: return 1000000000000;
             case sc_core::SC_SEC: return 1000000000000000;
+            default: return 0;  // SystemC 3.0's as, zs and ys: finer than this writer counts
         }
-        return 1;
     }
 
     static std::string unit_name(uint64_t fs) {
@@ -238,6 +266,12 @@ private:
     void initialize() {
         initialized_ = true;
         kernel_unit_fs_ = static_cast<uint64_t>(std::llround(sc_core::sc_get_time_resolution().to_seconds() * 1e15));
+        if (kernel_unit_fs_ == 0) {  // SystemC 3.0 allows a resolution below 1 fs
+            SC_REPORT_ERROR(msg::trace, (filename_ + ": the kernel's time resolution is finer than 1 fs; not traced, "
+                                                     "SHADING_TRACE_WRITER=systemc may be used").c_str());
+            unusable_ = true;  // nothing is written; the file is removed when the writer closes
+            return;
+        }
         if (!unit_set_) trace_unit_fs_ = kernel_unit_fs_;
         low_units_ = kernel_unit_fs_ > trace_unit_fs_;
         if (low_units_) {
@@ -406,6 +440,7 @@ private:
     std::vector<entry> entries_;
     std::vector<std::string> names_;  // until the header is written
     bool initialized_ = false;
+    bool unusable_ = false;  // the kernel's resolution cannot be written (below 1 fs)
     bool unit_set_ = false;
     bool low_units_ = false;
     int low_digits_ = 0;
@@ -414,3 +449,5 @@ private:
 };
 
 }  // namespace shading
+
+#undef SHADING_VCD_STAGE_CALLBACK

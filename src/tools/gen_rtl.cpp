@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -193,7 +194,11 @@ int main(int argc, char* argv[]) {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "formats" && argc == 3) return write_formats(argv[2]);
     if (mode == "rom" && argc == 3) return write_rom(argv[2], shading::ua22802::a_fmt.frac, "ua22802_a_rom");
-    if (mode == "rom" && argc == 5) return write_rom(argv[2], std::stoi(argv[3]), argv[4]);
+    if (mode == "rom" && argc == 5) {
+        char* end = nullptr;
+        const long frac = std::strtol(argv[3], &end, 10);
+        if (end != argv[3] && *end == '\0' && frac >= 0 && frac <= 64) return write_rom(argv[2], static_cast<int>(frac), argv[4]);
+    }
     std::cerr << "usage: gen_rtl formats <out.vh> | gen_rtl rom <out.v> [<frac_bits> <module>]\n";
     return 2;
 }

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "common/bench_jobs.h"
+#include "common/exit_status.h"
 #include "common/report_log.h"
 #include "core/trace.h"
 #include "formats/fixed_point.h"
@@ -106,7 +107,7 @@ public:
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& e) {
-            return app.exit(e) == 0 ? 0 : 2;
+            return cli_exit(app, e);
         }
         if (random_ > 0 && app.count("--vcd") == 0) no_vcd_ = true;  // 10^7 stimuli make a huge VCD
         if (random_ > 0) {

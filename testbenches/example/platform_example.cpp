@@ -88,6 +88,8 @@ int run() {
 }
 
 int sc_main(int argc, char* argv[]) {
-    if (argc > 1 && !std::strcmp(argv[1], "squared")) return run<shading::device_squared>();
-    return run<shading::device_ua60553>();
+    if (argc == 1) return run<shading::device_ua60553>();
+    if (argc == 2 && !std::strcmp(argv[1], "squared")) return run<shading::device_squared>();
+    std::fprintf(stderr, "usage: %s [squared]\n", argv[0]);  // bad usage: exit 2, as every program here
+    return 2;
 }

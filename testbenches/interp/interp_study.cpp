@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "common/exit_status.h"
 #include "formats/fixed_point.h"
 #include "interp/interp_line.h"
 
@@ -126,7 +127,7 @@ int main(int argc, char* argv[]) {
     std::string grouping_path;
     app.add_option("--grouping-csv", grouping_path,
                    "CSV of the /3 grouping study (default: interp_div3_grouping.csv beside --csv)");
-    CLI11_PARSE(app, argc, argv);
+    SHADING_CLI_PARSE(app, argc, argv);
     if (grouping_path.empty())
         grouping_path = (std::filesystem::path(csv_path).parent_path() / "interp_div3_grouping.csv").string();
 

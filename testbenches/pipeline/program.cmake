@@ -1,4 +1,4 @@
-# The render program (render_pipeline): a scene through seed 004's shading system, golden model and
+# The render program (render_pipeline): a scene through the interpolation paper's shading system, golden model and
 # (when the SystemC pipeline is built, sim.cmake) the SystemC pipeline, PNGs and a report; --sweep.
 if(TARGET shading_pipeline)
   find_package(nlohmann_json 3 QUIET)
@@ -9,7 +9,7 @@ if(TARGET shading_pipeline)
   add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_setup.cpp
                  ${CMAKE_CURRENT_SOURCE_DIR}/render_run.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_report.cpp
                  ${CMAKE_CURRENT_SOURCE_DIR}/render_images.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_sweep.cpp)
-  target_link_libraries(render_pipeline PRIVATE shading_pipeline CLI11::CLI11 nlohmann_json::nlohmann_json)
+  target_link_libraries(render_pipeline PRIVATE shading_pipeline shading_tb_common CLI11::CLI11 nlohmann_json::nlohmann_json)
   # The default --data-dir: this source tree (the head scan lives in data/head/).
   target_compile_definitions(render_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(render_pipeline PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
@@ -70,33 +70,40 @@ if(TARGET shading_pipeline)
            COMMAND sh -c "b=\"$0\"; test $(\"$b\" \"$@\" --emit-jobs --out /nonexistent | grep -c -- '--shard [0-9]*/24 --csv') -eq 24"
                    $<TARGET_FILE:render_pipeline> ${rp_claims})
   add_test(NAME pipeline.sweep.bad_shard
-           COMMAND sh -c "b=\"$0\"; o=\"$1\"; shift; \"$b\" \"$@\" --shard 3/2 --out \"$o\"; test $? -eq 1"
+           COMMAND sh -c "b=\"$0\"; o=\"$1\"; shift; \"$b\" \"$@\" --shard 3/2 --out \"$o\"; test $? -eq 2"
                    $<TARGET_FILE:render_pipeline> ${rp_out}/bad_shard ${rp_claims})
   list(APPEND rp_tests pipeline.sweep.tiny pipeline.sweep.exponents pipeline.sweep.claims_shards pipeline.sweep.emit_jobs
        pipeline.sweep.bad_shard)
-  # Bad input: a clear message and exit status 1, nothing written. Each case: name, then arguments.
+  # Bad input: a clear message, nothing written, and the project's status (common/exit_status.h): 2 for
+  # bad usage (a value out of range, an unknown name, a plan the units cannot run), 1 for an OBJ file
+  # that cannot be read or used. Each case: name, arguments, status.
   set(rp_bad
-      "m0|--m 0"
-      "m7|--m 7"
-      "adaptive_range|--length adaptive --m-min 2 --m-max 9"
-      "unknown_scene|--scene teapot"
-      "too_large|--size 100000"
-      "n0|--n 0"
-      "n1001|--n 1001"
-      "missing_obj|--scene ${CMAKE_BINARY_DIR}/no_such_file.obj"
-      "malformed_obj|--scene ${CMAKE_CURRENT_SOURCE_DIR}/data/malformed.obj"
-      "empty_obj|--scene ${CMAKE_CURRENT_SOURCE_DIR}/data/empty.obj"
-      "unknown_device|--device phong"
-      "bad_light|--light 30"
-      "fd_adaptive_range|--eval fd --length adaptive --m-min 1")
+      "m0|--m 0|2"
+      "m7|--m 7|2"
+      "adaptive_range|--length adaptive --m-min 2 --m-max 9|2"
+      "unknown_scene|--scene teapot|2"
+      "too_large|--size 100000|2"
+      "n0|--n 0|2"
+      "n1001|--n 1001|2"
+      "n_not_a_number|--n ten|2"
+      "missing_obj|--scene ${CMAKE_BINARY_DIR}/no_such_file.obj|1"
+      "malformed_obj|--scene ${CMAKE_CURRENT_SOURCE_DIR}/data/malformed.obj|1"
+      "empty_obj|--scene ${CMAKE_CURRENT_SOURCE_DIR}/data/empty.obj|1"
+      "unknown_device|--device phong|2"
+      "device_all|--device all|2"
+      "bad_light|--light 30|2"
+      "fd_adaptive_range|--eval fd --length adaptive --m-min 1|2")
   foreach(case IN LISTS rp_bad)
     string(REPLACE "|" ";" parts "${case}")
     list(GET parts 0 name)
     list(GET parts 1 args)
+    list(GET parts 2 rc)
     add_test(NAME pipeline.render.bad.${name}
-             COMMAND sh -c "rm -rf \"$1\"; \"$0\" --no-sim ${args} --out \"$1\"; rc=$?; test $rc -eq 1 && test ! -e \"$1/report.json\""
+             COMMAND sh -c "rm -rf \"$1\"; \"$0\" --no-sim ${args} --out \"$1\"; rc=$?; test $rc -eq ${rc} && test ! -e \"$1/report.json\""
                      $<TARGET_FILE:render_pipeline> ${rp_out}/bad_${name})
     list(APPEND rp_tests pipeline.render.bad.${name})
   endforeach()
-  set_tests_properties(${rp_tests} PROPERTIES TIMEOUT 120 ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+  set_tests_properties(${rp_tests} PROPERTIES TIMEOUT 120 LABELS render_pipeline
+                       ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+  shading_add_usage_test(render_pipeline)
 endif()

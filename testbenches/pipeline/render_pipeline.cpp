@@ -11,12 +11,14 @@
 // draws it).
 //   build/bin/render_pipeline --sweep --scene head --size 256 --out out/pipeline/sweep
 #include <CLI/CLI.hpp>
-#include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <string>
 
+#include "common/exit_status.h"
 #include "render_program.h"
 
 #ifndef SHADING_PIPELINE_SIM
@@ -37,7 +39,33 @@ bool progress_open = false;
 
 namespace {
 
+namespace fs = std::filesystem;
+
 options g_options;  // handed from main() to sc_main() when the SystemC pipeline runs
+
+// Bad usage found from the command line alone, before any work (exit 2, common/exit_status.h): an
+// unknown built-in scene, a light or colour that does not parse, a plan the units cannot run. Empty
+// when none. A missing or malformed OBJ file is found later, and is a failure (exit 1).
+std::string usage_problem(const options& o) {
+    if (!o.sweep && o.device == "all") return "--device all is for --sweep";
+    const bool looks_like_obj = o.scene.size() > 4 && o.scene.substr(o.scene.size() - 4) == ".obj";
+    if (!looks_like_obj && !fs::is_regular_file(o.scene)) {
+        const auto names = scene::builtin_scene_names();
+        if (std::find(names.begin(), names.end(), o.scene) == names.end())
+            return "--scene '" + o.scene + "' is neither a file nor a built-in scene (sphere, torus, head)";
+    }
+    try {
+        if (!o.light.empty()) parse_light(o.light);
+        if (!o.kd.empty()) parse_colour("--kd", o.kd);
+        if (!o.ks.empty()) parse_colour("--ks", o.ks);
+        if (!o.ambient.empty()) parse_colour("--ambient", o.ambient);
+        if (!o.shard.empty()) parse_shard(o.shard);
+        validate(plan_config_of(o));
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
 
 int run(const options& o) {
     try {
@@ -65,11 +93,12 @@ int main(int argc, char* argv[]) {
                  "SystemC), against per-pixel and Phong references; PNGs and a report. --sweep: a grid of "
                  "configurations in parallel processes, one CSV."};
     app.add_option("--scene", o.scene, "built-in scene (sphere, torus, head) or a path to an OBJ file");
-    app.add_option("--size", o.size, "image width and height in pixels (1.." + std::to_string(max_size) + ")");
+    app.add_option("--size", o.size, "image width and height in pixels (1.." + std::to_string(max_size) + ")")
+        ->check(CLI::Range(1u, max_size));
     app.add_option("--data-dir", o.data_dir, "repository root holding data/head/ (for the built-in head)");
     app.add_option("--light", o.light, "one directional light from azimuth,elevation (degrees; azimuth towards +x "
                                        "from +z); default: the scene's light");
-    app.add_option("--n", o.n, "the material's exponent n (1..1000); default: the scene's");
+    app.add_option("--n", o.n, "the material's exponent n (1..1000); default: the scene's")->check(CLI::Range(1, 1000));
     app.add_option("--kd", o.kd, "k_d: one value or r,g,b in [0, 1]");
     app.add_option("--ks", o.ks, "k_s: one value or r,g,b in [0, 1]");
     app.add_option("--ambient", o.ambient, "ambient: one value or r,g,b in [0, 1]");
@@ -95,7 +124,8 @@ int main(int argc, char* argv[]) {
     app.add_option("--set", o.set, "cubic sample points: case1 (0, 1/4, 1/2, 1) or case2 (0, 1/2, 3/4, 1)")
         ->check(CLI::IsMember({"case1", "case2"}));
     app.add_option("--div3", o.div3, "division by 3 in the coefficient unit")->check(CLI::IsMember({"shift_add", "exact"}));
-    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared (--sweep: default all of the grid's)");
+    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared (--sweep: default all of the grid's)")
+        ->check(CLI::IsMember({"patent", "minimax", "rom_matched", "ua22802", "squared", "all"}));
     app.add_option("--mode", o.mode, "overflow mode of the device's ADD11")->check(CLI::IsMember({"saturate", "wrap"}));
     app.add_option("--unit", o.unit,
                    "the geometry side's unit: stepped (along the line, as a scan-line renderer; default) or scratch "
@@ -134,18 +164,13 @@ int main(int argc, char* argv[]) {
     app.add_flag("--inject-mismatch", o.inject_mismatch, "")->group("");
     bool sim_available = false;
     app.add_flag("--sim-available", sim_available, "exit 0 if this build has the SystemC pipeline (--sim), 1 if not");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        // Help exits 0; every bad option exits 1 (the bad input: a clear message, status 1).
-        return app.exit(e) == 0 ? 0 : 1;
-    }
+    SHADING_CLI_PARSE(app, argc, argv);  // help 0, a bad option 2 (common/exit_status.h)
     if (sim_available) return SHADING_PIPELINE_SIM ? 0 : 1;
     o.argv.assign(argv, argv + argc);
     o.device_given = app.count("--device") > 0;
-    if (!o.sweep && o.device == "all") {
-        std::fprintf(stderr, "render_pipeline: --device all is for --sweep\n");
-        return 1;
+    if (const std::string why = usage_problem(o); !why.empty()) {
+        std::fprintf(stderr, "render_pipeline: %s\n", why.c_str());
+        return tb::exit_usage;
     }
 #if SHADING_PIPELINE_SIM
     if (o.sim && !o.sweep) {

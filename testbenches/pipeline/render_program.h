@@ -65,6 +65,12 @@ struct options {
 
 double seconds_since(std::chrono::steady_clock::time_point t0);
 plan_config plan_config_of(const options& o);
+// --kd/--ks/--ambient ("v" or "r,g,b" in [0, 1]) and --light ("azimuth,elevation" in degrees); a
+// value that does not parse throws scene::scene_error naming the option.
+scene::rgb parse_colour(const std::string& opt, const std::string& s);
+glm::dvec3 parse_light(const std::string& s);
+// --shard "I/N" as (I - 1, N); throws scene::scene_error unless 1 <= I <= N.
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& s);
 // Throws scene_error for a bad size, scene, light, material value.
 scene::world load_world(const options& o);
 

@@ -11,7 +11,6 @@ namespace shading::render_program {
 
 namespace fs = std::filesystem;
 
-namespace {
 constexpr double pi = 3.14159265358979323846;
 // "v" or "r,g,b" -> a colour; throws scene_error naming the option.
 scene::rgb parse_colour(const std::string& opt, const std::string& s) {
@@ -52,7 +51,6 @@ glm::dvec3 parse_light(const std::string& s) {
     const double a = az * pi / 180.0, e = el * pi / 180.0;
     return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
 }
-}  // namespace
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -102,6 +102,8 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
 }
 
 // "I/N" -> (I - 1, N); throws scene_error unless 1 <= I <= N.
+}  // namespace
+
 std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
     const std::size_t slash = s.find('/');
     try {
@@ -115,6 +117,8 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
         throw scene::scene_error("--shard '" + s + "': expected I/N with 1 <= I <= N");
     }
 }
+
+namespace {
 
 // The light as a CSV field: "az:el" (the option's comma would split the row), "default" for the scene's.
 std::string light_field(std::string l) {

@@ -6,6 +6,7 @@
 //   build/bin/render_reference --scene head --size 512 --n 20 --compare patent,squared --out out/scene/compare
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/exit_status.h"
 #include "scene/image.h"
 #include "scene/raster.h"
 #include "scene/shade.h"
@@ -41,39 +43,52 @@ int main(int argc, char* argv[]) {
     std::string scene_arg = "head", out_dir = "out/scene", device_arg = "minimax", mode_arg = "saturate";
     std::string data_dir = SHADING_SOURCE_DIR;
     unsigned size = 256;
-    int n_override = 0;
+    unsigned n_override = 0;  // 0: the material's own
     double err_scale = 8.0, depth_step_arg = 0.02;
     app.add_option("--scene", scene_arg, "built-in scene (sphere, torus, head) or a path to an OBJ file");
     app.add_option("--size", size, "image width and height in pixels")->check(CLI::Range(1u, 8192u));
     std::vector<std::string> compare_arg;
-    app.add_option("--device", device_arg, "specular device: patent, minimax, rom_matched, ua22802, squared");
+    // Names, ranges and numbers are checked by the parser: any bad one is bad usage (exit 2).
+    const auto devices = CLI::IsMember({"patent", "minimax", "rom_matched", "ua22802", "squared"});
+    app.add_option("--device", device_arg, "specular device: patent, minimax, rom_matched, ua22802, squared")
+        ->check(devices);
     app.add_option("--compare", compare_arg,
                    "devices (comma-separated) for compare.png: Phong and their images above their error maps")
-        ->delimiter(',');
-    app.add_option("--mode", mode_arg, "overflow mode of the device's ADD11: saturate or wrap");
-    app.add_option("--n", n_override, "override the material's exponent n (1..1000)");
+        ->delimiter(',')
+        ->check(devices);
+    app.add_option("--mode", mode_arg, "overflow mode of the device's ADD11: saturate or wrap")
+        ->check(CLI::IsMember({"saturate", "wrap"}));
+    app.add_option("--n", n_override, "override the material's exponent n (1..1000)")->check(CLI::Range(1u, 1000u));
     app.add_option("--error-scale", err_scale, "8-bit error shown as white in the heat map")->check(CLI::PositiveNumber);
     app.add_option("--depth-step", depth_step_arg, "depth jump (world units) that splits a raster line")
         ->check(CLI::PositiveNumber);
     app.add_option("--out", out_dir, "output folder");
     app.add_option("--data-dir", data_dir, "repository root holding data/head/ (for the built-in head)");
-    CLI11_PARSE(app, argc, argv);
+    SHADING_CLI_PARSE(app, argc, argv);
+
+    // A name that is no file and does not end in .obj is taken as a built-in scene's name: an unknown
+    // one is bad usage, reported with the list of names. A missing or malformed OBJ file is a failure.
+    const bool looks_like_obj = scene_arg.size() > 4 && scene_arg.substr(scene_arg.size() - 4) == ".obj";
+    const bool builtin = !looks_like_obj && !std::filesystem::is_regular_file(scene_arg);
+    if (builtin) {
+        const auto names = builtin_scene_names();
+        if (std::find(names.begin(), names.end(), scene_arg) == names.end()) {
+            std::string known;
+            for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+            std::fprintf(stderr, "render_reference: --scene '%s' is neither a file nor a built-in scene (%s)\n",
+                         scene_arg.c_str(), known.c_str());
+            return tb::exit_usage;
+        }
+    }
 
     try {
-        if (mode_arg != "saturate" && mode_arg != "wrap") throw scene_error("unknown --mode '" + mode_arg + "'");
         const device_config dev{parse_device(device_arg),
                                 mode_arg == "wrap" ? overflow_mode::wrap : overflow_mode::saturate};
         std::vector<device_config> compare_devs;  // checked before any rendering
         for (const std::string& name : compare_arg) compare_devs.push_back({parse_device(name), dev.mode});
-        // A name that is no file and does not end in .obj is taken as a built-in scene's name (so an
-        // unknown one is reported as such, with the list of names).
-        const bool looks_like_obj = scene_arg.size() > 4 && scene_arg.substr(scene_arg.size() - 4) == ".obj";
-        const bool builtin = !looks_like_obj && !std::filesystem::is_regular_file(scene_arg);
         world s = builtin ? builtin_scene(scene_arg, data_dir, size, size) : obj_scene(scene_arg, size, size);
-        if (n_override != 0) {
-            if (n_override < 1 || n_override > 1000) throw scene_error("--n must be in 1..1000");
-            for (auto& o : s.objects) o.mat.n = static_cast<unsigned>(n_override);
-        }
+        if (n_override != 0)
+            for (auto& o : s.objects) o.mat.n = n_override;
         const auto t0 = std::chrono::steady_clock::now();
         const rasterised r = rasterise(s);
         const double t_raster = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -150,7 +165,7 @@ int main(int argc, char* argv[]) {
                     dname.c_str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "render_reference: %s\n", e.what());
-        return 1;
+        return tb::exit_failure;
     }
-    return 0;
+    return tb::exit_success;
 }

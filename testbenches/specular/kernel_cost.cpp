@@ -3,6 +3,7 @@
 // nothing computed. A model's speed is bounded by how many of these it needs per pixel.
 //
 //   kernel_cost [N]     N activations per case (default 2000000); prints ns per activation
+// Exit 2 on bad usage (N not a whole number in 1..10^10, an unknown case), as every program here.
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -74,9 +75,23 @@ struct bench : sc_core::sc_module {
 
 }  // namespace
 
+// A whole number in [lo, hi] (decimal digits only), or -1.
+long parse_count(const char* s, long lo, long hi) {
+    char* end = nullptr;
+    if (*s < '0' || *s > '9') return -1;
+    const long v = std::strtol(s, &end, 10);
+    return *end == '\0' && v >= lo && v <= hi ? v : -1;
+}
+
 int sc_main(int argc, char* argv[]) {
-    const long n = argc > 1 ? std::atol(argv[1]) : 2000000;
-    const cost_case k = static_cast<cost_case>(argc > 2 ? std::atoi(argv[2]) : 0);
+    const int last_case = static_cast<int>(cost_case::event_method);
+    const long n = argc > 1 ? parse_count(argv[1], 1, 10'000'000'000L) : 2000000;
+    const long kc = argc > 2 ? parse_count(argv[2], 0, last_case) : 0;
+    if (argc > 3 || n < 0 || kc < 0) {
+        std::fprintf(stderr, "usage: %s [N (activations per case, 1..10^10) [case 0..%d]]\n", argv[0], last_case);
+        return 2;
+    }
+    const cost_case k = static_cast<cost_case>(kc);
     if (argc <= 2) {  // every case, each in its own process (one elaboration per process)
         for (int i = 0; i <= static_cast<int>(cost_case::event_method); ++i) {
             const std::string cmd = std::string(argv[0]) + " " + std::to_string(n) + " " + std::to_string(i);

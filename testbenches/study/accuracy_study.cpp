@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "common/exit_status.h"
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
@@ -127,7 +128,7 @@ int main(int argc, char* argv[]) {
     app.add_option("--n-max", n_max, "study n in [1, n-max] (a short run for the tests)")->check(CLI::Range(1u, 1000u));
     app.add_option("--size", size, "the head's image size for the cos distribution")->check(CLI::Range(16u, 4096u));
     app.add_option("--data-dir", data_dir, "repository root holding data/head/");
-    CLI11_PARSE(app, argc, argv);
+    SHADING_CLI_PARSE(app, argc, argv);
     fig2_n = std::min(fig2_n, n_max);
 
     // The distribution of N.H on the head, and the trial law's a fitted on it for every n.

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "common/exit_status.h"
 #include "generator_search.h"
 
 int main(int argc, char* argv[]) {
@@ -16,7 +17,7 @@ int main(int argc, char* argv[]) {
     double keep = 0.06;
     app.add_option("--csv", csv, "output CSV");
     app.add_option("--keep", keep, "keep candidates whose worst max rel error is below this");
-    CLI11_PARSE(app, argc, argv);
+    SHADING_CLI_PARSE(app, argc, argv);
 
     using namespace shading::study;
     const grid g;

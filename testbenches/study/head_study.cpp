@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "common/exit_status.h"
 #include "head_surface.h"
 #include "scene/image.h"
 #include "scene/shade.h"
@@ -82,18 +83,13 @@ int main(int argc, char* argv[]) {
     std::vector<unsigned> ns{2, 5, 10, 20, 50, 100, 200, 500, 1000};
     app.add_option("--out", out_dir, "output directory");
     app.add_option("--size", size, "the head's image size")->check(CLI::Range(16u, 4096u));
-    app.add_option("--n", ns, "exponents to render (comma-separated, 1..1000)")->delimiter(',');
+    app.add_option("--n", ns, "exponents to render (comma-separated, 1..1000)")->delimiter(',')->check(CLI::Range(1u, 1000u));
     app.add_option("--data-dir", data_dir, "repository root holding data/head/");
     app.add_option("--scan-max", scan_max,
                    "the baseline and every bend variant (the device is s2) against Phong for every n in [1, scan-max] "
                    "(0: none)")
         ->check(CLI::Range(0u, 1000u));
-    CLI11_PARSE(app, argc, argv);
-    for (unsigned n : ns)
-        if (n < 1 || n > 1000) {
-            std::fprintf(stderr, "head_study: --n %u is outside 1..1000\n", n);
-            return 1;
-        }
+    SHADING_CLI_PARSE(app, argc, argv);  // an n outside 1..1000 is bad usage (exit 2)
 
     try {
         const auto t0 = std::chrono::steady_clock::now();

@@ -42,7 +42,11 @@ struct bound : sc_core::sc_module {
 
 }  // namespace
 
-int sc_main(int, char*[]) {
+int sc_main(int argc, char* argv[]) {
+    if (argc > 1) {  // it takes no arguments: any is bad usage (exit 2)
+        std::fprintf(stderr, "usage: %s (no arguments)\n", argv[0]);
+        return 2;
+    }
     bound<shading::device_ua60553> ua60553("ua60553", "UA 60553 (a_gen_linear: MUL6, ADD15)");
     bound<shading::device_ua60553_tuned> tuned("tuned", "UA 60553 tuned (a_gen_tuned: MUL6, ADD15, OR, key block)");
     bound<shading::device_ua22802> ua22802("ua22802", "UA 22802 (a_gen_rom: ROM)");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "common/exit_status.h"
 #include "golden/specular_golden.h"
 #include "golden/squared_golden.h"
 #include "golden/ua22802_golden.h"
@@ -79,9 +80,10 @@ int sc_main(int argc, char* argv[]) {
     std::size_t lt_px = 100'000'000, pin_px = 200'000;
     app.add_option("--device", device, "specular device: patent, minimax, rom_matched, ua22802, squared")
         ->check(CLI::IsMember({"patent", "minimax", "rom_matched", "ua22802", "squared"}));
-    app.add_option("--lt-pixels", lt_px, "pixels shaded loosely timed (whole lines)");
-    app.add_option("--pin-pixels", pin_px, "pixels shaded pin-accurate (whole lines)");
-    CLI11_PARSE(app, argc, argv);
+    const auto pixels = CLI::Range(std::size_t{1}, std::size_t{1'000'000'000'000});
+    app.add_option("--lt-pixels", lt_px, "pixels shaded loosely timed (whole lines)")->check(pixels);
+    app.add_option("--pin-pixels", pin_px, "pixels shaded pin-accurate (whole lines)")->check(pixels);
+    SHADING_CLI_PARSE(app, argc, argv);
     if (device == "patent")
         return bench<specular_tlm_ua60553>("UA 60553", lt_px, pin_px, [](uint64_t c, const std::array<uint64_t, 3>& k) {
             return golden_ua60553(bench_n, c, k, sat).out;
