@@ -46,13 +46,18 @@ message(STATUS "verilator ${verilator_VERSION}: RTL twin co-simulated with the S
 # registered as skipped with this reason, and everything else of the RTL still runs.
 set(_trace_dir ${PROJECT_BINARY_DIR}/CMakeFiles/verilator_sc_trace_check)
 file(WRITE ${_trace_dir}/check.cpp "#include <verilated_vcd_sc.h>\nvoid shading_check() { VerilatedVcdSc t; }\n")
+# Compiled only (a static library: nothing to link, no sc_main), and again at every configure, so a
+# change of SystemC or Verilator is seen.
+unset(_shading_rtl_trace_ok CACHE)
+set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 try_compile(_shading_rtl_trace_ok ${_trace_dir}/build SOURCES ${_trace_dir}/check.cpp
             CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${VERILATOR_ROOT}/include;${VERILATOR_ROOT}/include/vltstd"
-                        -DCMAKE_TRY_COMPILE_TARGET_TYPE=STATIC_LIBRARY
             LINK_LIBRARIES ${SHADING_SYSTEMC_TARGET}
             CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
             OUTPUT_VARIABLE _trace_log)
+unset(CMAKE_TRY_COMPILE_TARGET_TYPE)
 set(SHADING_RTL_TRACE ${_shading_rtl_trace_ok})
+unset(_shading_rtl_trace_ok CACHE)
 if(NOT SHADING_RTL_TRACE)
   string(CONCAT SHADING_RTL_TRACE_SKIP_REASON "verilator ${verilator_VERSION}'s SystemC trace file (verilated_vcd_sc.h) "
                 "does not build against SystemC ${SHADING_SYSTEMC_VERSION} (it calls add_trace_file, which "
