@@ -122,7 +122,7 @@ struct target_impl : target {
         pin_mode_now = pin;
         reset();
         for (int r = 0; r < 3; ++r) compare(r, "after reset");
-        constexpr uint64_t cap = 1u << 17;  // no valid access is longer (the largest window is 64 KiB)
+        constexpr uint64_t cap = (1u << 16) + 64;  // no valid access is longer (the largest window: 64 KiB)
         for (int ops = 0; ops < 32 && !in.empty(); ++ops) {
             const uint8_t sel = in.u8(), am = in.u8(), lm = in.u8();
             const bool debug = (sel & 7) == 7;
@@ -149,7 +149,9 @@ struct target_impl : target {
             const sc_time delay_in(in.u8(), SC_NS);
             uint64_t seed = (static_cast<uint64_t>(in.u16()) << 16) | 0x9E37u;
             std::vector<unsigned char> buf(std::min(a.len, cap));
-            for (auto& b : buf) b = static_cast<unsigned char>(xorshift(seed));
+            // Random data where a write can be valid (the writable windows are at most 4 KiB).
+            for (std::size_t i = 0; i < buf.size(); ++i)
+                buf[i] = i < 4096 ? static_cast<unsigned char>(xorshift(seed)) : 0xA5;
             // Interval lengths inside 1..2^M for most line bursts (else nearly every one is refused).
             if (lm & 0x20) fix_lengths(buf);
             a.data = buf.data();
