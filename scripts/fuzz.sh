@@ -41,6 +41,7 @@ for t in "${targets[@]}"; do
   mkdir -p "$work" "$art" build-fuzz/logs
   case $t in
     fuzz_obj) extra=(-max_len=8192) ;;
+    fuzz_options) extra=(-max_len=4096 -close_fd_mask=1) ;;  # CLI11's --help text on stdout
     *) extra=(-max_len=4096) ;;
   esac
   rc=0
