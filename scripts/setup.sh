@@ -2,6 +2,7 @@
 # Installs what the project needs on Debian 12 when run as root and something is missing.
 set -euo pipefail
 pkgs=(cmake make g++ pkg-config libsystemc-dev googletest libgtest-dev libglm-dev libcli11-dev libtinyobjloader-dev libpng-dev nlohmann-json3-dev bsdextrautils libbenchmark-dev verilator yosys
+      clang-14 libclang-rt-14-dev
       python3-matplotlib python3-numpy)
 missing=()
 for p in "${pkgs[@]}"; do

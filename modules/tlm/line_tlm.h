@@ -185,13 +185,13 @@ public:
         const uint64_t n = p.get_data_length();
         if (!p.is_read()) return 0;
         unsigned char* data = p.get_data_ptr();
-        if (addr + n <= m::REG_END) {
+        if (debug_within(addr, n, 0, m::REG_END)) {
             unsigned char regs[m::REG_END];
             for (uint64_t a = 0; a < m::REG_END; a += 4) put32(regs + a, reg_read(a));
             std::memcpy(data, regs + addr, n);
-        } else if (addr >= m::INTERVAL_BLOCK && addr + n <= m::INTERVAL_BLOCK_END) {
+        } else if (debug_within(addr, n, m::INTERVAL_BLOCK, m::INTERVAL_BLOCK_END)) {
             std::memcpy(data, intervals_.data() + (addr - m::INTERVAL_BLOCK), n);
-        } else if (addr >= m::PIXEL_BLOCK && addr + n <= m::PIXEL_BLOCK_END) {
+        } else if (debug_within(addr, n, m::PIXEL_BLOCK, m::PIXEL_BLOCK_END)) {
             std::memcpy(data, reinterpret_cast<const unsigned char*>(pixels_.data()) + (addr - m::PIXEL_BLOCK), n);
         } else {
             return 0;

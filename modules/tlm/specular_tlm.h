@@ -281,13 +281,13 @@ public:
         const uint64_t len = p.get_data_length();
         if (!p.is_read()) return 0;
         unsigned char* data = p.get_data_ptr();
-        if (addr + len <= tlm_map::REG_END) {
+        if (debug_within(addr, len, 0, tlm_map::REG_END)) {
             unsigned char regs[tlm_map::REG_END];
             for (uint64_t a = 0; a < tlm_map::REG_END; a += 4) put32(regs + a, reg_read(a));
             std::memcpy(data, regs + addr, len);
-        } else if (addr >= tlm_map::COS_BLOCK && addr + len <= tlm_map::COS_BLOCK_END) {
+        } else if (debug_within(addr, len, tlm_map::COS_BLOCK, tlm_map::COS_BLOCK_END)) {
             std::memcpy(data, reinterpret_cast<const unsigned char*>(cos_.data()) + (addr - tlm_map::COS_BLOCK), len);
-        } else if (addr >= tlm_map::RESULT_BLOCK && addr + len <= tlm_map::RESULT_BLOCK_END) {
+        } else if (debug_within(addr, len, tlm_map::RESULT_BLOCK, tlm_map::RESULT_BLOCK_END)) {
             std::memcpy(data, reinterpret_cast<const unsigned char*>(results_.data()) + (addr - tlm_map::RESULT_BLOCK),
                         len);
         } else {

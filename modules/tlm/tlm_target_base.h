@@ -53,6 +53,12 @@ protected:
     }
     static void put32(unsigned char* d, uint32_t v) { std::memcpy(d, &v, 4); }
 
+    // A debug access's range: [addr, addr + len) non-empty and inside [begin, end). Written so that
+    // addr + len cannot wrap: an address near 2^64 would otherwise land in the first region.
+    static bool debug_within(uint64_t addr, uint64_t len, uint64_t begin, uint64_t end) {
+        return len > 0 && addr >= begin && addr <= end && len <= end - addr;
+    }
+
     static constexpr int access_ignored = -1, access_rejected = -2;
 
     // The checks every access goes through, in this order: TLM_IGNORE_COMMAND completes OK and

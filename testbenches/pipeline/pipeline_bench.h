@@ -115,7 +115,9 @@ private:
 
     unsigned w_, h_;
     std::vector<rgb_codes> expected_;
-    std::vector<uint8_t> wanted_;
+    // Writes each pixel is still owed: 32 bits, as a plan may repeat a frame (soak_pipeline renders the
+    // head 1000 times in one simulation; 8 bits wrapped at 256 and called every later write unexpected).
+    std::vector<uint32_t> wanted_;
     std::vector<std::size_t> order_;
     std::size_t pixels_ = 0, mismatches_ = 0, dropped_ = 0, reported_ = 0, inject_ = SIZE_MAX;
 };
