@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Simulation speed of every model (issue 11): runs build/bin/perf_models (Google Benchmark; each
+"""Simulation speed of every model: runs build/bin/perf_models (Google Benchmark; each
 SystemC case in its own process) and prints one table: model, rate, ratio to its golden model, the
 issue's target where it has one, and whether it is met. Markdown with --markdown (the README's
 "Simulation speed" section quotes it).

@@ -2,7 +2,7 @@
 # The claims sweep (opt-in, long: not part of scripts/run.sh or CI, whose ctest runs a 24-pixel smoke
 # of it, pipeline.sweep.claims_shards): render_pipeline --sweep --grid claims over the head, sphere and
 # torus (and any OBJ given with --scenes), three light directions, n = 5, 20, 100, 500, sizes 512 and
-# 1024, every device and twelve policies (the default fixed length, the seed's zones, the adaptive
+# 1024, every device and twelve policies (the default fixed length, the paper's zones, the adaptive
 # and the geometry-only policies, each through the forward differences and the Horner unit), golden
 # model only, then each policy's worst case and median (scripts/pipeline_claims.py).
 #   scripts/pipeline_claims.sh [OUT] [render_pipeline options...]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Plots of seed 004's interpolation units (scripts/run.d/40-interp.sh runs this).
+"""Plots of the interpolation paper's interpolation units (scripts/run.d/40-interp.sh runs this).
 
   plot_interp.py OUT_DIR
 reads OUT_DIR/interp_horner.csv, interp_fd.csv (unit,variant,pixel,t,exact,value,error) and
@@ -9,7 +9,7 @@ interp_div3.csv (interval,first_pixel,case,coef,real,shift_add,exact_div,rel_err
   interp_div3.png  - relative error of A and C caused by the shift-and-add division by 3;
 and, when OUT_DIR/interp_nmse.csv exists (interp_study),
   interp_nmse.png  - NMSE of the line against the interval length N, every variant and the
-                     adaptive degree, with seed 004's 1e-4.
+                     adaptive degree, with the interpolation paper's 1e-4.
 """
 import csv
 import os
@@ -46,7 +46,7 @@ def main():
         ax1.plot([p for p, _, _ in pts], [v for _, v, _ in pts], lw=1, label=f"Horner {var}")
     ax1.set_ylabel("intensity (0..255)")
     ax1.legend(fontsize=8)
-    ax1.set_title("Seed 004 interpolation along one raster line (samples Q8.8, coefficients Q16.16)")
+    ax1.set_title("Interpolation along one raster line (samples Q8.8, coefficients Q16.16)")
     for (unit, var), pts in sorted(series.items()):
         pts.sort()
         style = "-" if unit == "horner" else ":"
@@ -72,7 +72,7 @@ def main():
                     marker, label=f"case {case} {coef}, shift-and-add /3")
             ax.plot([int(r["interval"]) for r in sel], [100 * float(r["rel_err_exact_div"]) for r in sel],
                     marker, mfc="none", label=f"case {case} {coef}, exact /3 (floor)")
-    ax.axhline(0.79, color="r", ls="--", lw=1, label="seed 004 claim 0.79 %")
+    ax.axhline(0.79, color="r", ls="--", lw=1, label="the interpolation paper's claim 0.79 %")
     ax.axhline(100 / 128, color="k", ls=":", lw=1, label="1/128 = 0.78125 %")
     ax.set_xlabel("interval of the raster line")
     ax.set_ylabel("relative error of the coefficient (%)")
@@ -94,11 +94,11 @@ def main():
         for key, pts in curves.items():
             ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-" if "adaptive" not in key else "s--",
                       label=key)
-        ax.axhline(1e-4, color="r", ls="--", lw=1, label="seed 004: NMSE <= 1e-4")
+        ax.axhline(1e-4, color="r", ls="--", lw=1, label="the interpolation paper: NMSE <= 1e-4")
         ax.set_xscale("log", base=2)
         ax.set_xlabel("interval length N (pixels)")
         ax.set_ylabel("NMSE against the exact intensity")
-        ax.set_title("Seed 004's NMSE claim along one raster line with a highlight")
+        ax.set_title("The interpolation paper's NMSE claim along one raster line with a highlight")
         ax.legend(fontsize=7)
         fig.tight_layout()
         fig.savefig(os.path.join(out, "interp_nmse.png"), dpi=110)

@@ -12,7 +12,7 @@ counted long operations -- multiplications, divisions, square roots -- per pixel
                 <stem>_pareto.csv. <stem>_claims.txt (also printed): per device, the cheapest
                 configuration meeting NMSE <= 1e-4 and <= 1e-5 against per-pixel shading and <= 1e-4
                 against Phong, and the best one at >= 3x fewer long operations than Phong. Our target
-                (NMSE <= 1e-5 with Phong's long ops / 3) and seed 004's claim (NMSE <= 1e-4) are drawn
+                (NMSE <= 1e-5 with Phong's long ops / 3) and the interpolation paper's claim (NMSE <= 1e-4) are drawn
                 as lines.
 A CSV over several n (render_pipeline --sweep --grid exponents) gives instead <stem>.png with the
 errors against n per device (the total against Phong beside the device BRDF's own error) and the
@@ -68,8 +68,8 @@ def plot_exponents(rows, stem, devices):
             table.append(f"{dev} {r['n']} {float(r['nmse_interp']):.2e} {float(r['nmse_phong']):.2e} "
                          f"{float(r['nmse_brdf']):.2e} {float(r['long_per_px']):.1f} {float(r['ratio_long']):.2f}")
     axes[0].axhline(1e-5, color="tab:red", ls="--", lw=1, label="our target 1e-5")
-    axes[0].axhline(1e-4, color="tab:brown", ls="--", lw=1, label="seed 004: 1e-4")
-    axes[1].axhline(1e-4, color="tab:brown", ls="--", lw=1, label="seed 004: 1e-4")
+    axes[0].axhline(1e-4, color="tab:brown", ls="--", lw=1, label="the interpolation paper: 1e-4")
+    axes[1].axhline(1e-4, color="tab:brown", ls="--", lw=1, label="the interpolation paper: 1e-4")
     axes[0].set_title("interpolation: hardware vs per-pixel device", fontsize=10)
     axes[1].set_title("total: hardware vs exact Phong, and the device BRDF alone", fontsize=10)
     for ax in axes:
@@ -129,7 +129,7 @@ def main():
             ax.axvline(phong_long / 3, color="tab:red", ls=":", lw=1, label="Phong / 3")
             if key == "nmse_interp":
                 ax.axhline(1e-5, color="tab:red", ls="--", lw=1, label="our target 1e-5")
-            ax.axhline(1e-4, color="tab:brown", ls="--", lw=1, label="seed 004: NMSE <= 1e-4")
+            ax.axhline(1e-4, color="tab:brown", ls="--", lw=1, label="the interpolation paper: NMSE <= 1e-4")
             if key == "nmse_phong":
                 brdf = float(sel[0]["nmse_brdf"])
                 ax.axhline(brdf, color="0.5", ls="-.", lw=1, label=f"device BRDF alone {brdf:.1e}")
@@ -155,7 +155,7 @@ def main():
             w.writerow([dev, key, label(r), r["long_per_px"], r[key], r["ratio_long"]])
     claims = []
     # The claims, per device: the cheapest configuration meeting each error target, and its ratio of
-    # Phong's long operations to its own (seed 004 claims NMSE <= 1e-4 at up to 3x fewer; ours 1e-5).
+    # Phong's long operations to its own (the interpolation paper's claims NMSE <= 1e-4 at up to 3x fewer; ours 1e-5).
     for dev in devices:
         sel = [r for r in rows if r["device"] == dev]
         for key, target in (("nmse_interp", 1e-4), ("nmse_interp", 1e-5), ("nmse_phong", 1e-4), ("nmse_phong", 1e-5)):

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hardware cost by synthesis (issue 10): every variant of the RTL twin (rtl/) synthesized by yosys
+# Hardware cost by synthesis: every variant of the RTL twin (rtl/) synthesized by yosys
 # to a generic gate library (yosys's simple gates: NOT, AND, NAND, OR, NOR, XOR, XNOR, ANDNOT,
 # ORNOT, MUX, and flip-flops), flattened. Per variant: cells, flip-flops, the transistor estimate
 # of `stat -tech cmos`, and the critical path's depth in gates (`ltp -noff`: the longest path
@@ -133,7 +133,7 @@ EOF
   variant gen_rom a_gen_rom "" ""
   variant gen_linear a_gen_linear "" ""
   variant gen_tuned_minimax a_gen_tuned "" ""
-  # Seed 004's units.
+  # The interpolation paper's units.
   variant coef_c1_shift_add coef_unit_cubic "" "-chparam SET 0 -chparam DIV 0"
   # The exact /3 is described by its function (blocks/const_div.h), which yosys builds as a general
   # array divider: minutes of synthesis for a cost no designer would pay. Only with --extra.

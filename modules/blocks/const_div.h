@@ -1,5 +1,5 @@
 // Divider by a hardwired constant K: y = floor((x << ALIGN) / K) for a signed WIN-bit x, on a
-// signed WOUT-bit bus (wraps if the quotient does not fit). The reference against which seed 004's
+// signed WOUT-bit bus (wraps if the quotient does not fit). The reference against which the interpolation paper's
 // shift-and-add x/3 is compared ("exact division" option). In silicon this is a constant divider
 // (e.g. x * 0.010101...b to enough terms plus a remainder correction); modelled by its function,
 // with the delay of a multiplier.

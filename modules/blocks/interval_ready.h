@@ -1,4 +1,4 @@
-// "Ready for the next interval" gate of the raster-line interpolator (interp_line_unit.h, seed 004):
+// "Ready for the next interval" gate of the raster-line interpolator (interp_line_unit.h, the interpolation paper):
 // ready = NOT valid OR last, from the forward-difference controller's registered outputs. It says
 // what fd_ctrl decides internally at the next rising edge: an interval pending on `start` is taken
 // there when the evaluator is idle (valid = 0) or on its last pixel (last = 1). Exported so a

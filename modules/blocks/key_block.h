@@ -1,4 +1,4 @@
-// Key block BK of seed 004, Fig. 4 ("блок ключів"): one AND gate per wire, so the block passes its
+// Key block BK of the interpolation paper, Fig. 4 ("блок ключів"): one AND gate per wire, so the block passes its
 // operand when `pass` is 1 and forces every wire to 0 when `pass` is 0 ("режим обнулення").
 #pragma once
 

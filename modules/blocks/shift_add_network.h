@@ -1,5 +1,5 @@
 // Shift-and-add network: y = sum of +/- (in[k] << s), a multiplication by constants with no
-// multiplier (seed 004: "множення замінюється монтажним зсувом ... 10I = 8I + 2I"; Fig. 3 builds
+// multiplier (the interpolation paper: "множення замінюється монтажним зсувом ... 10I = 8I + 2I"; Fig. 3 builds
 // B this way). Structure, from a term table given at elaboration:
 //   each term:  a shifter (wiring, zero delay) aligns its input onto the W-bit output bus;
 //   positive terms: a balanced tree of adders -> P;

@@ -1,4 +1,4 @@
-// The level a unit is modelled at, chosen at construction (issue 11):
+// The level a unit is modelled at, chosen at construction:
 //   block - the figure's blocks wired as the hardware is (registers latching on falling edges,
 //           combinational blocks with their propagation delays, a waveform per block);
 //   fast  - the same pins and the same timing at the pins (the same handshake, the same clocks per

@@ -15,7 +15,7 @@ class inertial_driver {
 public:
     // Must be constructed inside a module's constructor: it spawns that module's settle process.
     // A zero delay spawns none: drive() writes the output itself, a delta cycle after its input
-    // changed, instead of two (issue 11: a notification, a settle process and a delta per block
+    // changed, instead of two (a notification, a settle process and a delta per block
     // that no waveform shows). The block's one process is then the output's only writer.
     inertial_driver(sc_core::sc_out<T>& out, const sc_core::sc_time& delay) : out_(out), delay_(delay) {
         if (delay_ == sc_core::SC_ZERO_TIME) return;

@@ -1,7 +1,7 @@
 // A lean VCD writer for the values trace_all traces (bool and sc_uint<1..64>): it writes the file
 // SystemC 2.3.4's own writer (vcd_trace_file) writes - the same scopes from dotted names, $var lines,
 // identifiers, $dumpvars block, value lines and time stamps, so the saved views in traces/ keep
-// working - at a fraction of its cost (issue 11): one pass over a flat table per time step, values
+// working - at a fraction of its cost: one pass over a flat table per time step, values
 // formatted into one buffer flushed with fwrite, no virtual call, string or stream per value.
 // Other value types are reported (shading/trace), not traced: SHADING_TRACE_WRITER=systemc (trace.h)
 // selects SystemC's writer for them.

@@ -1,9 +1,9 @@
-// Cubic coefficient unit of seed 004 (SPEC 1.5): A, B, C, D of I(t) = A t^3 + B t^2 + C t + D from
+// Cubic coefficient unit of the interpolation paper: A, B, C, D of I(t) = A t^3 + B t^2 + C t + D from
 // four exact intensities I1..I4, with shifts, adds and subtracts only (no multiplier). The samples
 // are latched in rg_i1..rg_i4 on the falling edge of clk; the networks settle within the half
 // period, so A..D are valid at the next rising edge: latency 1 clock, one interval per clock.
 // Formats (src/interp_formats.h): I Q8.8 unsigned -> network sums Q16.8 signed -> A..D Q16.16
-// signed. Division by 3: seed 004 Fig. 2 shift-and-add (div3_mode::shift_add) or an exact
+// signed. Division by 3: the interpolation paper, Fig. 2 shift-and-add (div3_mode::shift_add) or an exact
 // constant divider (div3_mode::exact). This class only instantiates and wires.
 #pragma once
 

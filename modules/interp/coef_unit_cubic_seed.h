@@ -1,4 +1,4 @@
-// Cubic coefficient unit with seed 004's grouping of the division by 3 (SPEC 1.5; the seed's
+// Cubic coefficient unit with the interpolation paper's grouping of the division by 3 (the paper's
 // printed formulas): /3 only on the part of A and C whose weights are not multiples of 3, the rest
 // added as an integer,
 //   case 1:  A = 8(8I2 + I4)/3 - 8(I1 + 2I3),   C = (32I2 + I4)/3 - 7I1 - 4I3,
@@ -140,7 +140,7 @@ private:
     }
 };
 
-// The coefficient unit by grouping of the /3: today's whole weighted sum or seed 004's partial sum.
+// The coefficient unit by grouping of the /3: today's whole weighted sum or the interpolation paper's partial sum.
 template <interp::sample_set SET, interp::div3_mode DIV, interp::div3_grouping G>
 using coef_unit_cubic_t = std::conditional_t<G == interp::div3_grouping::whole_sum, coef_unit_cubic<SET, DIV>,
                                              coef_unit_cubic_seed<SET, DIV>>;

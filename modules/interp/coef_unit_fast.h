@@ -1,4 +1,4 @@
-// Fast pin-level abstractions of seed 004's coefficient units (interp/abstraction.h): the pins and the
+// Fast pin-level abstractions of the interpolation paper's coefficient units (interp/abstraction.h): the pins and the
 // timing at them of coef_unit_cubic<SET, DIV> and coef_unit_quad, one process each, no internal
 // blocks or delays. At each falling edge of clk the samples on the pins are latched (as rg_i1..4
 // do) and A..D (a..c) computed by golden_cubic_coefs (the sample set, the /3 mode, the whole-sum

@@ -1,4 +1,4 @@
-// Quadratic coefficient unit of seed 004 (SPEC 1.5): a, b, c of I(t) = a t^2 + b t + c through
+// Quadratic coefficient unit of the interpolation paper: a, b, c of I(t) = a t^2 + b t + c through
 // I1, I2, I3 at t = 0, 1/2, 1 -- only shifts and adds, no division:
 //   a = 2 I1 - 4 I2 + 2 I3,  b = -3 I1 + 4 I2 - I3,  c = I1.
 // Same timing and formats as coef_unit_cubic: samples latched on the falling edge of clk, a..c

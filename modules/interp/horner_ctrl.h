@@ -1,4 +1,4 @@
-// Controller of the iterative Horner unit (seed 004, Fig. 4): runs the seed's micro-sequence one
+// Controller of the iterative Horner unit (the interpolation paper, Fig. 4): runs the paper's micro-sequence one
 // step per clock, driving MX1, MX2 and BK. A clocked FSM on the rising edge of clk; RG latches on
 // the falling edge, so every step's selects settle for half a period before RG takes the sum.
 //
@@ -11,7 +11,7 @@
 // (deg2 = 1) after the acceptance edge, and stays there until the falling edge after the next
 // acceptance (idle: RG recirculates through MX2 = 0, BK pass).
 //
-// Micro-steps (SPEC 5), with this model's MX2 codes 0 = 0 (hold), 1 = MUL, 2 = B, 3 = C, 4 = D
+// Micro-steps, with this model's MX2 codes 0 = 0 (hold), 1 = MUL, 2 = B, 3 = C, 4 = D
 // and MX1 codes 0 = A, 1 = RG:
 //   1 RG <- B            MX2 = B,   BK zero       (the seed loads RG with B; done here via MX2)
 //   2 RG <- A t + B      MX1 = A,   MX2 = MUL, BK pass

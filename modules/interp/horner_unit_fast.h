@@ -1,4 +1,4 @@
-// The fast pin-level abstraction of seed 004's iterative Horner unit (Fig. 4; interp/abstraction.h):
+// The fast pin-level abstraction of the interpolation paper's iterative Horner unit (Fig. 4; interp/abstraction.h):
 // horner_unit's pins, handshake and clocks per result, one process, no internal blocks or delays.
 //   - Rising edges: horner_ctrl.h's micro-sequencer as plain state (accept on start when idle or
 //     done, 6 steps cubic, 4 with deg2 read entering step 4, done high in the last step, busy while
@@ -7,7 +7,7 @@
 //     falling edge from acceptance to done, the handshake's rule) give every step's RG at once
 //     through golden_horner_into (src/golden/interp_golden.h, the shared Q16.16 / Q1.8 formats);
 //     each falling edge then puts its step's RG on i_t and rg_value, with no clock-to-output delay.
-//   - Speed (issue 11): the process wakes only at edges that switch a pin or sample start; done and
+//   - Speed: the process wakes only at edges that switch a pin or sample start; done and
 //     busy are written only when they change. Idle with start low, it sleeps until start rises.
 // rg_value is kept as a signal (the block model's RG net) so the same monitor checks every step.
 #pragma once

@@ -1,4 +1,4 @@
-// Propagation delays of seed 004's units, one per block kind the units instantiate themselves
+// Propagation delays of the interpolation paper's units, one per block kind the units instantiate themselves
 // (defaults in core/comb_delay.h). A unit passes them to its registers, adders, inverter banks,
 // multipliers, multiplexers and key blocks; its clock-phase requirements follow them, derived from
 // the elaborated structure (monitors/phase_checker.h, core/timing_graph.h). The shift-and-add

@@ -1,10 +1,10 @@
-// Raster-line interpolator of seed 004 (SPEC 1.5): per interval of N = 2^M pixels the exact
+// Raster-line interpolator of the interpolation paper: per interval of N = 2^M pixels the exact
 // intensities I1..I4 go in, the cubic coefficient unit forms A..D with shifts and adds, and the
 // forward-difference evaluator emits one pixel per clock. A device top: it only instantiates and
 // wires the coefficient unit (coef_unit_cubic_t<SET, DIV, G>: /3 on the whole weighted sum or on
-// seed 004's partial sum) -> fd_eval<M> and the ready gate; no arithmetic here.
+// the interpolation paper's partial sum) -> fd_eval<M> and the ready gate; no arithmetic here.
 //
-// Handshake and timing (decisions; seed 004 leaves them open, SPEC 6). Clock period T; the source
+// Handshake and timing (decisions; the interpolation paper leaves them open). Clock period T; the source
 // changes i1..i4, len and start only just after rising edges.
 // - start is a level, "interval pending": I1..I4 and len (1..N pixels; the last interval of a line
 //   may be shorter) are on the inputs. It is accepted at a rising edge where start = 1 and

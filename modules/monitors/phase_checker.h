@@ -1,5 +1,5 @@
 // Assertion monitor (not a hardware block) for a clocked unit whose registers latch on one edge of
-// clk while its controller switches on the other (seed 004's units): each phase must hold the
+// clk while its controller switches on the other (the interpolation paper's units): each phase must hold the
 // combinational paths launched at its opening edge. Every high phase (rise -> fall) not longer
 // than min_high and every low phase (fall -> rise) not longer than min_low is counted and reported
 // as shading/timing, naming the phase, the measured and required length and the paths. A phase

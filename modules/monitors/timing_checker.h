@@ -7,7 +7,7 @@
 // path would go unchecked. At every rising edge of `valid`, a register latched since the previous
 // validating edge less than path(i) ago means the outputs are not settled: shading/timing. When
 // strobe i fell is read from its registers (timed_block::last_latch), not from a process woken at
-// every edge (issue 11: one wakeup per strobe edge that showed nothing).
+// every edge (one wakeup per strobe edge that showed nothing).
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Frame buffer of the shading pipeline (ours; seed 004 leaves it open): a memory of width x height
+// Frame buffer of the shading pipeline (ours; the interpolation paper leaves it open): a memory of width x height
 // pixels, three pixel_fmt codes each (Q8.8 unsigned per channel). A synchronous write port: at a
 // rising edge of clk where `valid` is 1 it stores r, g, b at (x, y). Not hardware we model in
 // detail: the testbench and the render program read it back through pixel()/written().

@@ -1,4 +1,4 @@
-// One colour channel's evaluator with seed 004's Fig. 4 Horner unit: the degree-select pin picks
+// One colour channel's evaluator with the interpolation paper's Fig. 4 Horner unit: the degree-select pin picks
 // the coefficient unit (mx_a, mx_b, mx_c: 0 the cubic's A, B, C, 1 the quadratic's a, b, c; D is
 // the cubic's, unused at degree 2), horner evaluates I(t) at the t the pixel controller issues, and
 // out_clamp turns the Q16.16 signed result into the pixel's Q8.8 unsigned code (floor, saturated

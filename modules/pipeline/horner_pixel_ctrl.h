@@ -1,4 +1,4 @@
-// Pixel controller for the Horner evaluators (ours; seed 004 leaves the control open): a clocked
+// Pixel controller for the Horner evaluators (ours; the interpolation paper leaves the control open): a clocked
 // FSM on the rising edge of clk that takes an interval from the sample stage and issues its pixels
 // to the three channels' Fig. 4 Horner units, pixel k at t = k << (8 - m) (t = k / 2^m, Q1.8).
 // - Interval hand-over: with samples_ready = 1 and the interval registers free it raises ld_e for

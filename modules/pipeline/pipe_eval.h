@@ -1,4 +1,4 @@
-// The shading pipeline's evaluator: seed 004's Fig. 4 Horner unit, or our forward differences.
+// The shading pipeline's evaluator: the interpolation paper's Fig. 4 Horner unit, or our forward differences.
 #pragma once
 
 namespace shading {

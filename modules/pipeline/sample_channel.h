@@ -1,4 +1,4 @@
-// One colour channel of the shading pipeline's sample stage and coefficient units (seed 004's
+// One colour channel of the shading pipeline's sample stage and coefficient units (the interpolation paper's
 // system; the sample stage's formats are this model's decisions, src/pipeline/pipeline.h):
 //   diffuse  mul_diffuse  k_d*I (8.0) x N.L (Q1.15) -> Q9.8, 7 low wires dropped (floor)
 //   colour   add_ambient  ambient (Q8.8) + diffuse (Q9.8) -> Q10.8 (never overflows)
@@ -8,7 +8,7 @@
 //   rg_e1..rg_e4  the interval registers: the four samples handed to the coefficient units by the
 //                 pixel controller's strobe ld_e, so the next interval's samples can be formed
 //                 while this interval's pixels are evaluated
-//   coef_cubic    seed 004's cubic coefficient unit (A..D; sample set and /3 chosen at construction)
+//   coef_cubic    the interpolation paper's cubic coefficient unit (A..D; sample set and /3 chosen at construction)
 //   coef_quad     the quadratic unit (a, b, c through rg_e1..rg_e3 at t = 0, 1/2, 1)
 // Only instantiates and wires.
 #pragma once

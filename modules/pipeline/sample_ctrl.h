@@ -1,4 +1,4 @@
-// Sample controller of the shading pipeline (ours; seed 004 leaves the control open): a clocked FSM
+// Sample controller of the shading pipeline (ours; the interpolation paper leaves the control open): a clocked FSM
 // on the FALLING edge of clk, so every strobe it drives falls at a falling edge, half a clock away
 // from the rising edges where the geometry side changes the pins and the pixel controller acts.
 //

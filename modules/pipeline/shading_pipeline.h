@@ -1,4 +1,4 @@
-// Seed 004's shading system in hardware: a raster-line shading unit that takes one interval at a
+// The interpolation paper's shading system in hardware: a raster-line shading unit that takes one interval at a
 // time from the geometry side and writes its pixels as an R, G, B stream. A device top: it only
 // instantiates and wires.
 //   job registers  rg_y, rg_x0, rg_len, rg_m, rg_deg2 and the samples' N.H / N.L codes

@@ -1,4 +1,4 @@
-// The fast pin-level abstraction of the shading pipeline (issue 11; interp/abstraction.h): the pins
+// The fast pin-level abstraction of the shading pipeline (interp/abstraction.h): the pins
 // of shading_pipeline<AGen, EVAL> and the same timing at them, one process for the whole unit.
 //   - Same pins, same edges: `ready` changes at the same falling edges, px_valid / px_x / px_y at
 //     the same rising edges, and px_r/g/b hold the pixel's codes at every rising edge where

@@ -1,4 +1,4 @@
-// The fast pin-level abstraction of a specular device (issue 11): the pins of specular_device<AGen>
+// The fast pin-level abstraction of a specular device: the pins of specular_device<AGen>
 // and their timing, none of its blocks. Registers 1-5 are five words latched at the falling edges
 // of their strobes (UA 60553, Fig. 3: "write on the trailing edge"); one method computes the block
 // network's function from the golden model (AGen::a_word, golden_datapath: the format tables of

@@ -1,4 +1,4 @@
-// TLM-2.0 wrapper of seed 004's raster-line interpolator (interp/interp_line_unit.h, cubic: the
+// TLM-2.0 wrapper of the interpolation paper's raster-line interpolator (interp/interp_line_unit.h, cubic: the
 // degree is fixed for this unit): a tlm_utils::simple_target_socket `socket` with b_transport and
 // transport_dbg over the register map below, in one of two timing modes chosen at construction
 // (tlm_timing, tlm_target_base.h):
@@ -17,7 +17,7 @@
 //                      by CONTROL.CLEAR_ERR; bits 31:16 pixels of the last burst.
 //   0x004 CONTROL  RW  read-only fields: bits 3:0 M (intervals of 2^M pixels), bit 4 sample set
 //                      (0 case 1, 1 case 2), bit 5 /3 (0 shift-and-add, 1 exact), bit 6 grouping
-//                      (1 seed 004's partial sum), bit 8 TIMING (0 loosely timed, 1 pin-accurate),
+//                      (1 the interpolation paper's partial sum), bit 8 TIMING (0 loosely timed, 1 pin-accurate),
 //                      bits 13:12 DEGREE (3, cubic); bit 31 CLEAR_ERR, write 1 to clear STATUS
 //                      bits 6:1, reads 0.
 //   0x1000-0x1FFF INTERVAL_BLOCK RW  256 intervals x 16 bytes, interval j at 0x1000 + 16j:
@@ -87,7 +87,7 @@ inline constexpr uint32_t CONTROL_M_MASK = 0xFu, CONTROL_SET = 1u << 4, CONTROL_
                           CONTROL_DEGREE_SHIFT = 12, CONTROL_CLEAR_ERR = 1u << 31;
 }  // namespace line_tlm_map
 
-// The unit's clock as the pin-accurate wrapper drives it (20 ns, 50 %: seed 004's benches).
+// The unit's clock as the pin-accurate wrapper drives it (20 ns, 50 %: the interpolation paper's benches).
 struct line_tlm_clock {
     sc_core::sc_time high{10, sc_core::SC_NS};
     sc_core::sc_time low{10, sc_core::SC_NS};

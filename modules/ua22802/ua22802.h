@@ -1,4 +1,4 @@
-// UA 22802, the prototype UA 60553 names (SPEC section 4): the specular datapath with RG1
+// UA 22802, the prototype UA 60553 names: the specular datapath with RG1
 // addressing a ROM that holds a(n) (a_gen_rom.h). Construct as
 // device_ua22802(name, mode, ROM words = the generated a(n) table, block delays); the ROM's access
 // time is block_delays::rom. Link shading_ua22802 (the generated ROM content).

@@ -1,6 +1,6 @@
 // Divider by a hardwired constant K (modules/blocks/const_div.h): y = floor((x << ALIGN) / K) for a
 // signed WIN-bit x, on a signed WOUT-bit bus (wraps if the quotient does not fit). The comparison
-// option beside seed 004's shift-and-add /3; described by its function, as the SystemC block is,
+// option beside the interpolation paper's shift-and-add /3; described by its function, as the SystemC block is,
 // and left to synthesis to build (a constant divider). ALIGN >= 1 (Verilog-2005 has no empty
 // replication).
 module const_div #(

@@ -1,4 +1,4 @@
-// Division by 3 as seed 004, Fig. 2 (modules/blocks/div3_shift_add.h): x/2 - x/8 - x/32 - x/128
+// Division by 3 as the interpolation paper, Fig. 2 (modules/blocks/div3_shift_add.h): x/2 - x/8 - x/32 - x/128
 // = 43x/128 on a signed WIN-bit bus, onto a signed WOUT-bit bus with ALIGN more fraction bits
 // (ALIGN >= 7: no wire is dropped, the result is exactly 43x/128). One shift-and-add network.
 module div3_shift_add #(

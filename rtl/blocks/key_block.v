@@ -1,4 +1,4 @@
-// Key block BK of seed 004, Fig. 4, as modules/blocks/key_block.h: one AND gate per wire, so
+// Key block BK of the interpolation paper, Fig. 4, as modules/blocks/key_block.h: one AND gate per wire, so
 // the block passes x when `pass` is 1 and forces every wire to 0 when it is 0.
 module key_block #(
     parameter W = 8

@@ -1,5 +1,5 @@
 // Shift-and-add network (modules/blocks/shift_add_network.h): y = sum of +/-(in[k] << s), a
-// multiplication by constants with no multiplier (seed 004: "10I = 8I + 2I"). From a term table:
+// multiplication by constants with no multiplier (the interpolation paper: "10I = 8I + 2I"). From a term table:
 // each term a shifter (wiring) onto the W-bit bus; the positive terms summed by a balanced adder
 // tree (P), the negative ones by another (Q), one inverter bank, and a last adder with carry-in 1:
 // y = P + ~Q + 1 = P - Q. The trees pair neighbours level by level, an odd one passing to the next

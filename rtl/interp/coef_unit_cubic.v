@@ -1,8 +1,8 @@
-// Cubic coefficient unit of seed 004 (modules/interp/coef_unit_cubic.h, SPEC 1.5): A, B, C, D of
+// Cubic coefficient unit of the interpolation paper (modules/interp/coef_unit_cubic.h): A, B, C, D of
 // I(t) = A t^3 + B t^2 + C t + D from four exact intensities, shifts and adds only. rg_i1..rg_i4
 // latch the samples on the falling edge of clk; the networks settle within the low phase, so A..D
 // are valid at the next rising edge. Formats: I Q8.8 unsigned -> sums Q16.8 signed -> A..D Q16.16
-// signed. SET 0 = case 1 (t = 0, 1/4, 1/2, 1), 1 = case 2 (t = 0, 1/2, 3/4, 1); DIV 0 = seed 004's
+// signed. SET 0 = case 1 (t = 0, 1/4, 1/2, 1), 1 = case 2 (t = 0, 1/2, 3/4, 1); DIV 0 = the interpolation paper's
 // shift-and-add /3, 1 = exact constant divider. Widths from shading_formats.vh (src/formats), term
 // tables from interp_terms.vh (coef_terms), both generated. This module only instantiates and wires.
 `include "shading_formats.vh"

@@ -1,4 +1,4 @@
-// Controller of the iterative Horner unit (modules/interp/horner_ctrl.h, seed 004 Fig. 4): the
+// Controller of the iterative Horner unit (modules/interp/horner_ctrl.h, the interpolation paper, Fig. 4): the
 // seed's micro-sequence, one step per clock, a state machine on the rising edge of clk (RG latches
 // on the falling edge, so every step's selects settle for half a period first).
 // Handshake: start is a level "request pending"; a request is accepted at a rising edge where

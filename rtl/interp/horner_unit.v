@@ -1,4 +1,4 @@
-// Iterative Horner unit of seed 004, Fig. 4 (modules/interp/horner_unit.h, SPEC 5):
+// Iterative Horner unit of the interpolation paper, Fig. 4 (modules/interp/horner_unit.h):
 // I(t) = ((A t + B) t + C) t + D with one register RG, multiplexers MX1 and MX2, one multiplier
 // MUL, adder Sm and key block BK: MUL = MX1 * t, MX1 in {A, RG}; Sm = MX2 + BK(RG), MX2 in
 // {0, MUL, B, C, D}; RG <- Sm on the falling edge. The controller ctrl runs one micro-step per

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Seed 004's shading system on the head scan at 512x512 (render_pipeline): the default configuration
+# The interpolation paper's shading system on the head scan at 512x512 (render_pipeline): the default configuration
 # (fixed 16-pixel intervals, cubic, Horner unit, UA 60553 with the patent's constants), adaptive length
 # and degree through the Horner unit and through the forward differences (also at 1024x1024), and seed
 # 004's zone policy, each through the golden model and the SystemC pipeline (which must agree bit for bit), PNGs and
@@ -62,7 +62,7 @@ size=1024 render adaptive_fd_1024 --length adaptive --degree adaptive --eval fd
 # The squared-quadratic device (ours) at n = 20: the image within NMSE 1e-5 of exact Phong at
 # 2x fewer long operations than the counted Phong (modules/squared/README.md).
 render squared_fd --device squared --n 20 --length adaptive --length-tol 0.9 --degree adaptive --degree-tol 0.25 --eval fd
-# Seed 004's own policy: quadratic in its zones 2, 4, 7, cubic elsewhere, one interval length.
+# The interpolation paper's own policy: quadratic in its zones 2, 4, 7, cubic elsewhere, one interval length.
 render zones --degree zones --m 3 --device ua22802
 
 # The small sweep at the same size on the golden model (bit-exact to SystemC by the tests).

@@ -79,7 +79,7 @@ def hand_counts(hw_csv, fmt, terms):
     rows["gen_linear"] = (0, wn * k31.count("1"), wa, 0)
     tk31 = fmt["TUNED_K31"].split("'b")[1]
     rows["gen_tuned_minimax"] = (0, wn * tk31.count("1"), wa, (wn - int(fmt["TUNED_OR_LO"])) + wa)
-    # Seed 004's units: network adders (terms - 1 each, sum width), /3 by shift-and-add (3 adders
+    # The interpolation paper's units: network adders (terms - 1 each, sum width), /3 by shift-and-add (3 adders
     # of the coefficient width), Horner's MUL (WC x WT), Sm and the key block's AND gates.
     ws, wc, wt = int(fmt["INTERP_SUM_W"]), int(fmt["INTERP_COEF_W"]), int(fmt["INTERP_T_W"])
     for name, case, div in (("coef_c1_shift_add", 1, "sa"), ("coef_c1_exact", 1, "ex"), ("coef_c2_shift_add", 2, "sa")):

@@ -1,4 +1,4 @@
-// Number formats of seed 004's interpolation hardware (SPEC sections 1.5 and 5): the coefficient
+// Number formats of the interpolation paper's interpolation hardware: the coefficient
 // units, the iterative Horner unit and the forward-difference evaluator. One table, used by the
 // golden models (src/interp_golden.*), the modules' template widths and the README.
 // Notation: Qi.f = i integer bits (sign included when signed), f fraction bits.
@@ -10,18 +10,18 @@
 
 namespace shading::interp {
 
-// SPEC 1.5: case 1 samples at t = 0, 1/4, 1/2, 1 (the seed's preferred case); case 2 at
+//: case 1 samples at t = 0, 1/4, 1/2, 1 (the paper's preferred case); case 2 at
 // t = 0, 1/2, 3/4, 1.
 enum class sample_set { case1, case2 };
-// x/3 as seed 004's shift-and-add x*(1/2 - 1/8 - 1/32 - 1/128) = x * 43/128 (Fig. 2), or exact
+// x/3 as the interpolation paper's shift-and-add x*(1/2 - 1/8 - 1/32 - 1/128) = x * 43/128 (Fig. 2), or exact
 // (floor onto Q.16) so the two can be compared.
 enum class div3_mode { shift_add, exact };
 // Where the /3 of A and C is applied. whole_sum: on the whole weighted sum, A = (-24I1 + 64I2 -
-// 48I3 + 8I4)/3 (this model's default). partial_sum: as seed 004 prints it, on the part whose
+// 48I3 + 8I4)/3 (this model's default). partial_sum: as the interpolation paper prints it, on the part whose
 // weights are not multiples of 3 only, the rest added as integers: case 1 A = 8(8I2 + I4)/3 -
 // 8(I1 + 2I3), C = (32I2 + I4)/3 - 7I1 - 4I3; case 2 A = 8(2I2 + I4) - 8(I1 + 8I3)/3,
 // C = 3(4I2 + I4) - (13I1 + 32I3)/3 (the seed prints these with I3 and I4 swapped: its subscripts
-// fit the t = 1 sample named I3; here samples are numbered by increasing t, SPEC 1.5).
+// fit the t = 1 sample named I3; here samples are numbered by increasing t).
 enum class div3_grouping { whole_sum, partial_sum };
 
 // I1..I4: exact intensities at the sample points, unsigned Q8.8: the 8-bit colour range 0..255
@@ -40,7 +40,7 @@ inline constexpr qfmt sum_fmt{24, true, 8};
 // the forward-difference set-up read them all alike.
 // Bounds (|I| < 256): case 1 |A| <= 24 Imax, |B| <= 34 Imax, |C| <= 11 Imax; case 2 |A| <= 24 Imax,
 // |B| <= 38 Imax, |C| <= 15 Imax; quadratic |a| <= 4 Imax, |b| <= 4 Imax: all < 9728 < 2^15.
-// 16 fraction bits hold x/3 by the seed's shift-and-add exactly: a Q.8 operand times
+// 16 fraction bits hold x/3 by the paper's shift-and-add exactly: a Q.8 operand times
 // 1/2 - 1/8 - 1/32 - 1/128 has at most 8 + 7 = 15 fraction bits.
 inline constexpr qfmt coef_fmt{32, true, 16};
 inline constexpr unsigned div3_shift = coef_fmt.frac - sum_fmt.frac;  // 8: Q.8 -> Q.16
@@ -57,7 +57,7 @@ inline constexpr unsigned horner_mul_drop = t_fmt.frac;
 // bounded by |A| + |B| + |C| + |D| <= (24 + 38 + 15 + 1) * 256 < 2^15: Sm never wraps.
 inline constexpr qfmt horner_fmt = coef_fmt;
 
-// Control buses (seed 004 leaves the controllers open): each as wide as the codes it carries.
+// Control buses (the interpolation paper leaves the controllers open): each as wide as the codes it carries.
 constexpr unsigned code_width(unsigned codes) {
     unsigned w = 1;
     while ((1u << w) < codes) ++w;

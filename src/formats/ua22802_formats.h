@@ -1,5 +1,5 @@
-// UA 22802 (the prototype named in UA 60553, SPEC section 4): RG1 addresses a ROM that holds
-// a(n) of seed 001 formula 7 (SPEC 1.2); the ROM word drives MUL10 directly.
+// UA 22802 (the prototype named in UA 60553): RG1 addresses a ROM that holds
+// a(n) of the quadratic-BRDF paper formula 7; the ROM word drives MUL10 directly.
 #pragma once
 
 #include "formats/fixed_point.h"

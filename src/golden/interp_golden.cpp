@@ -84,7 +84,7 @@ cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& in, sample_set set
         k.c = golden_div3(c3, mode);
         return k;
     }
-    // Seed 004's grouping: only the part whose weights are not multiples of 3 goes through /3, the
+    // The interpolation paper's grouping: only the part whose weights are not multiples of 3 goes through /3, the
     // integer part is added on the Q.16 bus.
     const int64_t q16 = int64_t{1} << div3_shift;
     if (set == sample_set::case1) {

@@ -1,4 +1,4 @@
-// Bit-accurate golden models of seed 004's interpolation hardware, plain C++ in direct integer
+// Bit-accurate golden models of the interpolation paper's interpolation hardware, plain C++ in direct integer
 // arithmetic from the format table in interp_formats.h (independent of the SystemC blocks, which
 // build the same values from shifters, adders and inverter banks).
 #pragma once
@@ -21,13 +21,13 @@ struct cubic_coefs {
 int64_t golden_div3(int64_t x_q8, div3_mode mode);
 
 // I1..I4 as sample_fmt codes (Q8.8 unsigned). `grouping`: /3 on the whole weighted sum (the
-// default) or on seed 004's partial sum (coef_unit_cubic_seed.h).
+// default) or on the interpolation paper's partial sum (coef_unit_cubic_seed.h).
 cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& i, sample_set set, div3_mode mode,
                                div3_grouping grouping = div3_grouping::whole_sum);
 // Quadratic through t = 0, 1/2, 1: a, b, c returned in the a, b, c fields (d = 0).
 cubic_coefs golden_quad_coefs(const std::array<uint64_t, 3>& i);
 
-// Iterative Horner unit (seed 004, Fig. 4): the RG value after each micro-step, as coef_fmt bus
+// Iterative Horner unit (the interpolation paper, Fig. 4): the RG value after each micro-step, as coef_fmt bus
 // bits. Cubic: 6 steps (RG <- B; A t + B; * t; + C; * t; + D). Degree 2 (a, b, c in the a, b, c
 // fields): 4 steps (RG <- b; a t + b; * t; + c). The last entry is I(t).
 std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code, bool degree2);

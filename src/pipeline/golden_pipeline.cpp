@@ -1,4 +1,4 @@
-// The golden model of seed 004's shading system (pipeline.h): the sample stage, one interval through
+// The golden model of the interpolation paper's shading system (pipeline.h): the sample stage, one interval through
 // the coefficient unit and an evaluator, a whole frame, and the hardware path's operation counts.
 // Direct integer arithmetic on the codes of pipeline.h's format table; the interpolation units come
 // from interp_golden (the SystemC pipeline must match these bit for bit).

@@ -1,4 +1,4 @@
-// Seed 004's shading system as a bit-accurate golden model (plain C++, no SystemC): the geometry side
+// The interpolation paper's shading system as a bit-accurate golden model (plain C++, no SystemC): the geometry side
 // plans each raster line into intervals and delivers N.H and N.L at their sample points; the
 // hardware forms a colour sample per sample point (the specular device, a diffuse multiplier and an
 // adder per channel), the coefficient unit turns the samples into a polynomial, and the Horner unit
@@ -61,7 +61,7 @@ sample_geometry sample_of(const scene::pixel_geometry& g);
 rgb_codes golden_sample(const scene::device_config& dev, const frame_constants& k, sample_geometry g);
 
 // ---- One interval ----
-enum class evaluator { horner, fd };  // the seed's Fig. 4 Horner unit, or our forward differences
+enum class evaluator { horner, fd };  // the paper's Fig. 4 Horner unit, or our forward differences
 const char* evaluator_name(evaluator e);  // "horner", "fd"
 
 // An interval of a raster line as it enters the hardware: pixels x0 .. x0 + len - 1 of line y, pixel
@@ -175,9 +175,9 @@ struct plan {
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c);
 
-// ---- Zones of the head (seed 004, Fig. 5, reconstructed: the figure is not in the text) ----
+// ---- Zones of the head (the interpolation paper, Fig. 5, reconstructed: the figure is not in the text) ----
 // 0 other (ears, skull, neck), 1 brows, 2 forehead, 3 eyes, 4 cheeks, 5 nose, 6 mouth, 7 chin:
-// numbered so that seed 004's quadratic zones 2, 4, 7 are the flat ones (zones.cpp, zone_is_quadratic).
+// numbered so that the interpolation paper's quadratic zones 2, 4, 7 are the flat ones (zones.cpp, zone_is_quadratic).
 inline constexpr unsigned zone_count = 8;
 const char* zone_name(unsigned zone);
 bool zone_is_quadratic(unsigned zone);

@@ -1,4 +1,4 @@
-// The geometry side of seed 004's shading system (pipeline.h): each raster line is cut into segments
+// The geometry side of the interpolation paper's shading system (pipeline.h): each raster line is cut into segments
 // at its discontinuities, each segment is tiled into intervals of 2^m pixels by a length policy, each
 // interval gets its degree by a degree policy, and the geometry (N.H, N.L) is computed once per
 // distinct pixel that any sample or decision needs, every operation counted.

@@ -1,4 +1,4 @@
-// The zone map of the head (seed 004, Fig. 5). The figure is not in the seed's text, and the text
+// The zone map of the head (the interpolation paper, Fig. 5). The figure is not in the paper's text, and the text
 // names no zone: it says only that the face is cut into characteristic zones and that zones 2, 4 and
 // 7 are interpolated by a quadratic, the others by a cubic. The names and boxes below are OUR reading:
 // we number the zones so that 2, 4 and 7 are the flat ones (forehead, cheeks, chin), which is what a
@@ -62,7 +62,7 @@ const char* zone_name(unsigned zone) {
     }
 }
 
-// Seed 004: zones 2, 4 and 7 quadratic. With our numbering these are forehead, cheeks and chin,
+// The interpolation paper: zones 2, 4 and 7 quadratic. With our numbering these are forehead, cheeks and chin,
 // the zones where the adaptive degree policy accepts the quadratic most often (test_pipeline_plan
 // prints the acceptance per zone).
 bool zone_is_quadratic(unsigned zone) { return zone == 2 || zone == 4 || zone == 7; }

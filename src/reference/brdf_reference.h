@@ -1,6 +1,6 @@
-// Real-valued references for the specular term (SPEC section 1): the exact BRDF, the quadratic
-// model with the exact a(n) (seed 001 formula 7), the patent's linear a (UA 60553 formula 10),
-// and the prior approximations of seed 001 (Schlick, (cos k*gamma)^(n/k)).
+// Real-valued references for the specular term: the exact BRDF, the quadratic
+// model with the exact a(n) (the quadratic-BRDF paper formula 7), the patent's linear a (UA 60553 formula 10),
+// and the prior approximations of the quadratic-BRDF paper (Schlick, (cos k*gamma)^(n/k)).
 #pragma once
 
 namespace shading::ref {

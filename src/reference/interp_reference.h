@@ -1,4 +1,4 @@
-// Real-valued references for seed 004's interpolation (SPEC 1.5): the coefficient formulas in
+// Real-valued references for the interpolation paper's interpolation: the coefficient formulas in
 // real numbers, a general polynomial fit through sample points (to re-derive those formulas),
 // and the "exact intensity" along a raster line that the benches interpolate.
 #pragma once
@@ -15,7 +15,7 @@ struct real_poly {
     double a = 0, b = 0, c = 0, d = 0;  // a t^3 + b t^2 + c t + d (a = 0 for a quadratic)
 };
 
-// SPEC 1.5's formulas, real arithmetic (division by 3 exact).
+//'s formulas, real arithmetic (division by 3 exact).
 real_poly cubic_coefs(const std::array<double, 4>& i, interp::sample_set set);
 // Quadratic through t = 0, 1/2, 1: a t^2 + b t + c returned as b t^2 + c t + d (a = 0).
 real_poly quad_coefs(const std::array<double, 3>& i);

@@ -15,7 +15,7 @@ struct op_counts {
     uint64_t sqrt = 0;  // square roots
     uint64_t add = 0;   // additions and subtractions
     uint64_t cmp = 0;   // comparisons (max/clamp), reported apart, not "long" operations
-    // The long operations the seed's speed claim is about.
+    // The long operations the paper's speed claim is about.
     uint64_t long_ops() const { return mul + div + sqrt; }
     op_counts& operator+=(const op_counts& o) {
         mul += o.mul;

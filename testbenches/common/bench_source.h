@@ -68,7 +68,7 @@ private:
 };
 
 // Cuts `total` items into runs of 1..max_len, each length drawn from (seed, run index): the
-// random surfaces of the specular benches and the random intervals of seed 004's units. The last
+// random surfaces of the specular benches and the random intervals of the interpolation paper's units. The last
 // run is cut short so the runs add up to `total` exactly.
 class random_runs {
 public:

@@ -1,4 +1,4 @@
-// What the benches of seed 004's units share (interp_coef_bench.h, interp_horner_bench.h,
+// What the benches of the interpolation paper's units share (interp_coef_bench.h, interp_horner_bench.h,
 // interp_fd_bench.h, interp_line_bench.h). Each bench comes in three pieces reused by the
 // testbench programs and the GoogleTest suites:
 //   *_stimulus - drives the unit's pins synchronously (writes just after rising edges), from a

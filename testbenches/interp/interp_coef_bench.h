@@ -1,4 +1,4 @@
-// Testbench parts for seed 004's coefficient units: all five (case 1 / case 2 x shift-and-add /
+// Testbench parts for the interpolation paper's coefficient units: all five (case 1 / case 2 x shift-and-add /
 // exact /3, and the quadratic) side by side on the same clock, one sample set per clock
 // (stimulus, monitor, checker: interp_bench_common.h).
 #pragma once

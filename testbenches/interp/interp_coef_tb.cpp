@@ -20,7 +20,7 @@ using namespace shading;
 using namespace shading::tb;
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("interp_coef", "Seed 004 coefficient units: raster-line samples against the golden models",
+    bench_runner run("interp_coef", "The interpolation paper's coefficient units: raster-line samples against the golden models",
                      "traces/interp_coef");
     std::string csv_path;
     unsigned width = 200, m = 5, n_extra = 200;

@@ -1,4 +1,4 @@
-// Testbench parts for seed 004's iterative Horner unit (Fig. 4): requests accepted back to back
+// Testbench parts for the interpolation paper's iterative Horner unit (Fig. 4): requests accepted back to back
 // (or with a gap), every micro-step of RG checked (stimulus, monitor, checker:
 // interp_bench_common.h).
 #pragma once

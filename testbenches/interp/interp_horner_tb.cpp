@@ -1,6 +1,6 @@
 // Horner-unit testbench program: evaluates one raster line, interval by interval and pixel by
 // pixel, with the coefficients of every variant (case 1 / case 2 cubic with shift-and-add or
-// exact /3, quadratic), back to back through the iterative Horner unit of seed 004, Fig. 4.
+// exact /3, quadratic), back to back through the iterative Horner unit of the interpolation paper, Fig. 4.
 // Checks every micro-step against the golden model, measures clocks per pixel and the error
 // against the exact intensity; writes a per-pixel CSV. Options common to every bench:
 // bench_runner.h.
@@ -29,7 +29,7 @@ int run_bench(bench_runner& run, const std::string& csv_path, unsigned width, un
 
 int sc_main(int argc, char* argv[]) {
     bench_runner run("interp_horner",
-                     "Seed 004 iterative Horner unit: one raster line, every variant, against the golden model",
+                     "The interpolation paper's iterative Horner unit: one raster line, every variant, against the golden model",
                      "traces/interp_horner");
     std::string csv_path;
     unsigned width = 200, m = 5, gap = 0;

@@ -1,4 +1,4 @@
-// Raster-line interpolator testbench program (modules/interp_line_unit.h, seed 004): streams the
+// Raster-line interpolator testbench program (modules/interp_line_unit.h, the interpolation paper): streams the
 // 200-pixel raster line's samples I1..I4 interval by interval into the joined coefficient unit and
 // forward-difference evaluator, checks every pixel and `last` against the golden chain
 // (golden_cubic_coefs + golden_fd), measures max |I - exact| against the line's exact intensity and
@@ -90,7 +90,7 @@ int sc_main(int argc, char* argv[]) {
     run.app.add_option("--m", o.m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, interp::m_max));
     run.app.add_option("--case", o.sample_case, "sample set: 1 (t = 0, 1/4, 1/2, 1) or 2 (t = 0, 1/2, 3/4, 1)")
         ->check(CLI::Range(1u, 2u));
-    run.app.add_option("--div3", o.div3, "division by 3: shift-add (seed 004 Fig. 2) or exact")
+    run.app.add_option("--div3", o.div3, "division by 3: shift-add (the interpolation paper, Fig. 2) or exact")
         ->transform(CLI::CheckedTransformer(div3_names, CLI::ignore_case));
     if (auto rc = run.parse(argc, argv)) return *rc;
     switch (o.m) {

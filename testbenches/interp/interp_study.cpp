@@ -1,12 +1,12 @@
-// Seed 004's accuracy claim measured: NMSE of the interpolated raster line against the exact
+// The interpolation paper's accuracy claim measured: NMSE of the interpolated raster line against the exact
 // intensity, per unit variant and interval length N = 2^m (m = 2..6), through the bit-accurate
 // golden models (the benches prove them bit-exact to the SystemC units). Plus the adaptive degree
 // the seed proposes: per interval, the quadratic where the cubic term is small (|A| <= tau
-// intensity levels, a stand-in for the seed's curvature zones, whose figure is not available),
+// intensity levels, a stand-in for the paper's curvature zones, whose figure is not available),
 // the cubic elsewhere; with its mean Horner cycles per pixel (4 quadratic, 6 cubic).
 // NMSE = sum (I_hw - I_exact)^2 / sum I_exact^2 over the line's pixels.
 // The /3 grouping (interp_div3_grouping.csv, beside --csv): today's /3 on the whole weighted sum
-// against seed 004's /3 on a partial sum, with either divider: the error of A and C against the
+// against the interpolation paper's /3 on a partial sum, with either divider: the error of A and C against the
 // real coefficients of the same Q8.8 samples (the line's intervals, and uniform random samples)
 // and the line's NMSE.
 #include <CLI/CLI.hpp>
@@ -119,7 +119,7 @@ struct coef_error {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    CLI::App app{"NMSE of seed 004's interpolation against the exact intensity, per interval length"};
+    CLI::App app{"NMSE of the interpolation paper's interpolation against the exact intensity, per interval length"};
     std::string csv_path = "out/interp_nmse.csv";
     unsigned width = 200;
     app.add_option("--csv", csv_path, "output CSV");
@@ -149,11 +149,11 @@ int main(int argc, char* argv[]) {
                 name.find("_seedgroup") == std::string::npos)
                 summary << "interp_nmse\t" << name << (name == "adaptive" ? "_tau2" : "") << "_N" << line.n() << '\t'
                         << width << "\t-\t" << std::scientific << std::setprecision(2) << e.nmse << std::defaultfloat
-                        << "\t" << e.cycles_per_pixel << "\tNMSE vs exact intensity (Horner golden); seed 004: <= 1e-4 "
+                        << "\t" << e.cycles_per_pixel << "\tNMSE vs exact intensity (Horner golden); the interpolation paper: <= 1e-4 "
                         << (e.nmse <= 1e-4 ? "holds" : "fails") << "\n";
         };
         for (auto v : all_variants) emit(variant_name(v), 0, interpolate(line, [v](const line_interval&) { return v; }));
-        for (const auto& u : all_cubic_units())  // seed 004's /3 grouping beside them
+        for (const auto& u : all_cubic_units())  // the interpolation paper's /3 grouping beside them
             if (u.grouping == interp::div3_grouping::partial_sum)
                 emit(u.name(), 0, interpolate_with(line, [&u](const line_interval& iv, bool& quad) {
                          quad = false;
@@ -170,7 +170,7 @@ int main(int argc, char* argv[]) {
         }
     }
 
-    // The /3 grouping: whole weighted sum vs seed 004's partial sum, both dividers, both sets.
+    // The /3 grouping: whole weighted sum vs the interpolation paper's partial sum, both dividers, both sets.
     std::ofstream gcsv(grouping_path);
     gcsv << "samples,m,N,unit,set,divider,grouping,coef_sets,a_max_err,a_rms_err,c_max_err,c_rms_err,nmse\n";
     std::printf("\n/3 grouping: error of A and C against the real coefficients (levels), NMSE of the line\n");

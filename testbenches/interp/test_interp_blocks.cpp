@@ -1,5 +1,5 @@
 // The new block kinds alone against hand-worked values: multiplexer (with an unused select code),
-// key block, shifter (sign extension and floor), shift-and-add network and the seed's /3.
+// key block, shifter (sign extension and floor), shift-and-add network and the paper's /3.
 // Each TEST elaborates its own blocks (one process per test).
 #include <gtest/gtest.h>
 
@@ -69,7 +69,7 @@ TEST(InterpBlocks, ShiftAddNetworkAndSeedDivisionBy3) {
     sc_core::sc_vector<bus<16>> in("in", 2);
     bus<24> y("y"), x("x");
     bus<32> q("q");
-    // 10 I0 - 3 I1 = 8 I0 + 2 I0 - 2 I1 - I1 (seed 004: "10I = 8I + 2I").
+    // 10 I0 - 3 I1 = 8 I0 + 2 I0 - 2 I1 - I1 (the interpolation paper: "10I = 8I + 2I").
     shift_add_network<16, 24> net("net", 2, {{0, 3, false}, {0, 1, false}, {1, 1, true}, {1, 0, true}});
     net.in[0](in[0]); net.in[1](in[1]); net.y(y);
     div3_shift_add<24, 32, 8> div3("div3");  // Q.8 -> Q.16

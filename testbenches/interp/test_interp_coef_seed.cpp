@@ -1,4 +1,4 @@
-// The coefficient unit with seed 004's grouping of the /3 (coef_unit_cubic_seed.h) against its
+// The coefficient unit with the interpolation paper's grouping of the /3 (coef_unit_cubic_seed.h) against its
 // golden model, bit for bit, per sample set and divider (value-parameterised), plus hand-worked
 // values and its clock-phase requirement. A small bench of its own: a driver writes one sample
 // set just after each rising edge; at the next rising edge the coefficients are compared.

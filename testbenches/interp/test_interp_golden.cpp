@@ -22,7 +22,7 @@ std::array<uint64_t, 4> random_samples(std::mt19937& rng) {
 }
 }  // namespace
 
-// SPEC 1.5's formulas re-derived: the cubic through the samples, found by solving the Vandermonde
+//'s formulas re-derived: the cubic through the samples, found by solving the Vandermonde
 // system, has the formulas' coefficients, and it reproduces the samples.
 TEST(InterpFormulas, CubicThroughTheSamplesBothSets) {
     std::mt19937 rng(4);
@@ -60,7 +60,7 @@ TEST(InterpFormulas, QuadraticThroughTheSamples) {
 
 // A linear ramp I(t) = 128 t, case 1: samples 0, 32, 64, 128 -> A = B = D = 0, C = 128.
 // N_C = 32*32 - 12*64 + 128 = 384 (Q.8 code 98304): exact C = 128 (8388608); the shift-and-add
-// gives 98304 * 86 = 8454144 = 129.0, the seed's 43/128 instead of 1/3.
+// gives 98304 * 86 = 8454144 = 129.0, the paper's 43/128 instead of 1/3.
 TEST(InterpCoefGolden, HandWorkedRamp) {
     const std::array<uint64_t, 4> s{0, 32 * 256, 64 * 256, 128 * 256};
     const auto ex = golden_cubic_coefs(s, sample_set::case1, div3_mode::exact);
@@ -73,7 +73,7 @@ TEST(InterpCoefGolden, HandWorkedRamp) {
 
 // Exact division: A and C are the real-valued coefficients floored to Q16.16; B and D exact.
 // Shift-and-add: A and C are exactly 129/128 of the real ones (no wire is dropped), a relative
-// error of 0.78125 %, within the seed's "<= 0.79 %".
+// error of 0.78125 %, within the paper's "<= 0.79 %".
 TEST(InterpCoefGolden, WithinDocumentedBoundOfTheRealSolution) {
     std::mt19937 rng(6);
     double worst_rel = 0.0;
@@ -98,10 +98,10 @@ TEST(InterpCoefGolden, WithinDocumentedBoundOfTheRealSolution) {
         }
     }
     EXPECT_NEAR(worst_rel, 1.0 / 128.0, 1e-9);
-    EXPECT_LE(worst_rel, 0.0079);  // seed 004's claim
+    EXPECT_LE(worst_rel, 0.0079);  // the interpolation paper's claim
 }
 
-// Seed 004's grouping of the /3 (div3_grouping::partial_sum) against the real solution. With the
+// The interpolation paper's grouping of the /3 (div3_grouping::partial_sum) against the real solution. With the
 // shift-and-add, x * 43/128 = x/3 + x/384, so each coefficient is off by exactly its divided part
 // over 384 (in Q.8 levels): case 1 A by (64I2 + 8I4)/384, C by (32I2 + I4)/384; case 2, where
 // the quotient is subtracted, A by -(8I1 + 64I3)/384, C by -(13I1 + 32I3)/384. The whole-sum
@@ -129,7 +129,7 @@ TEST(InterpCoefGolden, SeedGroupingShiftAddOffByTheDividedPartOver384) {
 }
 
 // A flat line, every sample 1.0: the real cubic is 0 t^3 + 0 t^2 + 0 t + 1, and so is the whole-sum
-// shift-and-add (its sum is 0). The seed's grouping divides 72 (A) and 33 (C) levels and subtracts
+// shift-and-add (its sum is 0). The paper's grouping divides 72 (A) and 33 (C) levels and subtracts
 // 24 and 11: case 1 A = 72 * 43/128 - 24 = 0.1875 (12288 LSB), C = 33 * 43/128 - 11 = 0.0859375
 // (5632); case 2 A = 24 - 72 * 43/128 = -0.1875, C = 15 - 45 * 43/128 = -0.1171875 (-7680).
 TEST(InterpCoefGolden, SeedGroupingHandWorkedFlatLine) {

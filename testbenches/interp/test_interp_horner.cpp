@@ -1,4 +1,4 @@
-// The iterative Horner unit (seed 004, Fig. 4) against its golden model, micro-step by
+// The iterative Horner unit (the interpolation paper, Fig. 4) against its golden model, micro-step by
 // micro-step, and its latency and throughput in clocks. Each TEST elaborates its own bench.
 #include <gtest/gtest.h>
 

@@ -41,7 +41,7 @@ std::vector<interp::interval_samples> alternating_intervals(std::size_t n, unsig
 
 // The golden chain by hand: the ramp I(t) = 64 + 128 t sampled for case 1 (I1..I4 = 64, 96, 128, 192
 // at t = 0, 1/4, 1/2, 1) gives A = B = 0, D = 64 and C = 128 with the exact /3, but C = 384 * 43/128
-// = 129 with the shift-and-add /3 (the seed's 0.78 % in C): pixels D + C k/4 on Q16.16. A len of 3
+// = 129 with the shift-and-add /3 (the paper's 0.78 % in C): pixels D + C k/4 on Q16.16. A len of 3
 // outputs 3 pixels, a len of 0 (out of range) a full interval of 4, as fd_ctrl does.
 TEST(InterpLineGolden, HandWorkedRamp) {
     const std::array<uint64_t, 4> ramp{64 * 256, 96 * 256, 128 * 256, 192 * 256};  // Q8.8
@@ -89,7 +89,7 @@ void expect_raster_line(Bench& bench, const line_scenario& line, sample_set set,
 }  // namespace
 
 // The four coefficient variants differ only in the sample set, the divider and the measured
-// maximum error: case 1 (t = 0, 1/4, 1/2, 1, seed 004's preferred) and case 2 (t = 0, 1/2, 3/4, 1,
+// maximum error: case 1 (t = 0, 1/4, 1/2, 1, the interpolation paper's preferred) and case 2 (t = 0, 1/2, 3/4, 1,
 // with the exact /3 the variant with the smallest error), /3 by the Fig. 2 shift-and-add or exact.
 struct line_case {
     sample_set set;

@@ -1,4 +1,4 @@
-// Clock-phase requirements of seed 004's units, derived from the elaborated blocks
+// Clock-phase requirements of the interpolation paper's units, derived from the elaborated blocks
 // (monitors/phase_checker.h: derive(), core/timing_graph.h), against hand sums of the default
 // delays (core/comb_delay.h: register clock-to-output 0.2 ns, inverter and key block 0.1 ns,
 // adder 1 ns, multiplier and constant divider 3 ns, multiplexer 0.3 ns; a shift-and-add network
@@ -130,7 +130,7 @@ TEST(InterpTiming, CoefUnitsWholeSumAreTheHandSums) {
         EXPECT_EQ(t, sc_core::SC_ZERO_TIME);
 }
 
-// Seed 004's grouping: per coefficient a network for the divided part -> /3 and one for the
+// The interpolation paper's grouping: per coefficient a network for the divided part -> /3 and one for the
 // integer part, then the subtractor (inverter on the subtrahend + adder). Case 1, A: net (2 terms,
 // 1 ns) + /3 against net + inverter (1.1 ns), then 1 ns: 1 + 3.1 + 1 = 5.1 ns (C: the same; B 3.1).
 // Case 2, C: the 4-term net (2 ns) + /3 + the inverter (the quotient is subtracted) + 1 ns = 6.2 ns.

@@ -1,4 +1,4 @@
-// perf_models' floor rows (issue 11): what a harness costs with nothing inside, so the table shows
+// perf_models' floor rows: what a harness costs with nothing inside, so the table shows
 // which targets no model can reach in SystemC on this machine. Every floor counts clocks (or
 // strobes) per CPU second; a device in the same harness can only be slower.
 //   floor/sc_clock            one sc_clock (20 ns, the specular harness's duty) and nothing else

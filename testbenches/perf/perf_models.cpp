@@ -1,6 +1,6 @@
-// Simulation speed of every model in one run (issue 11), on Google Benchmark: results per second
+// Simulation speed of every model in one run, on Google Benchmark: results per second
 // of each golden model, of each signal-level device (block delays on and off, tracing on and off),
-// of seed 004's units, of the whole shading pipeline on the head and of the TLM-2.0 wrappers in
+// of the interpolation paper's units, of the whole shading pipeline on the head and of the TLM-2.0 wrappers in
 // both timing modes, each with its ratio to its golden model (counter vs_golden = rate / golden's
 // rate) and its mismatches against that golden model (a mismatch fails the run).
 //
@@ -59,7 +59,7 @@
 
 extern char** environ;
 
-// The fast pin-level abstractions of seed 004's units and of the pipeline (modules/interp/*_fast.h,
+// The fast pin-level abstractions of the interpolation paper's units and of the pipeline (modules/interp/*_fast.h,
 // modules/pipeline/shading_pipeline_fast.h), when the tree has them.
 #if __has_include("interp/horner_unit_fast.h") && __has_include("pipeline/shading_pipeline_fast.h")
 #define SHADING_PERF_INTERP_FAST 1
@@ -327,7 +327,7 @@ void register_cases() {
     perf::register_floor_cases();
     perf::register_specular_cases();
 
-    // Seed 004's units in the project's own benches (stimulus, DUT, monitor, golden checker).
+    // The interpolation paper's units in the project's own benches (stimulus, DUT, monitor, golden checker).
     const std::size_t big = 50'000'000;  // more than any run streams; generated on demand
     add_sc("sc/interp_coef", "golden/interp_coef", "sample sets", [=] {
         return std::unique_ptr<harness>(new bench_harness<tb::coef_bench>(tb::random_coef_inputs(big, 1)));

@@ -1,4 +1,4 @@
-// Seed 004's shading system end to end: a scene is rasterised, the geometry side plans every raster
+// The interpolation paper's shading system end to end: a scene is rasterised, the geometry side plans every raster
 // line into intervals (src/pipeline/plan.cpp), the bit-accurate golden pipeline shades the frame
 // (golden_frame), and with --sim the SystemC pipeline shades it again and must agree bit for bit.
 // The hardware image is measured against per-pixel shading through the same device (the
@@ -89,7 +89,7 @@ int sc_main(int, char*[]) {
 
 int main(int argc, char* argv[]) {
     options& o = g_options;
-    CLI::App app{"Seed 004's shading system: a scene through the planned, interpolating pipeline (golden model and "
+    CLI::App app{"The interpolation paper's shading system: a scene through the planned, interpolating pipeline (golden model and "
                  "SystemC), against per-pixel and Phong references; PNGs and a report. --sweep: a grid of "
                  "configurations in parallel processes, one CSV."};
     app.add_option("--scene", o.scene, "built-in scene (sphere, torus, head) or a path to an OBJ file");

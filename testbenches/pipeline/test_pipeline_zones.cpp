@@ -12,7 +12,7 @@ TEST(PipelineZones, Names) {
     const char* names[] = {"other", "brows", "forehead", "eyes", "cheeks", "nose", "mouth", "chin"};
     for (unsigned z = 0; z < zone_count; ++z) EXPECT_STREQ(zone_name(z), names[z]);
     EXPECT_STREQ(zone_name(zone_count), "?");
-    // Seed 004: zones 2, 4 and 7 quadratic; with our numbering forehead, cheeks and chin.
+    // The interpolation paper: zones 2, 4 and 7 quadratic; with our numbering forehead, cheeks and chin.
     for (unsigned z = 0; z < zone_count; ++z) EXPECT_EQ(zone_is_quadratic(z), z == 2 || z == 4 || z == 7) << z;
 }
 

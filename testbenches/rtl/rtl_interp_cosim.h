@@ -1,4 +1,4 @@
-// Co-simulation of seed 004's units: the RTL (rtl/interp, Verilated with --sc --pins-sc-uint, so
+// Co-simulation of the interpolation paper's units: the RTL (rtl/interp, Verilated with --sc --pins-sc-uint, so
 // its ports are the same sc_uint buses as ours) in the same SystemC simulation as our block-level
 // units, on the same clock and the same stimulus (testbenches/interp's stimulus parts). At every
 // edge where a result is valid, the RTL's outputs are compared with our unit's and with the golden

@@ -1,4 +1,4 @@
-// Seed 004's RTL (rtl/interp: the cubic coefficient unit in its four variants, the Fig. 4 Horner
+// The interpolation paper's RTL (rtl/interp: the cubic coefficient unit in its four variants, the Fig. 4 Horner
 // unit with its controller), Verilated with --sc, against our SystemC units and the golden model in
 // one simulation: bit-exact at every result edge over 10^5 random intervals (random requests for
 // the Horner unit) plus the corners and edge cases the interp suites use. Each TEST elaborates its

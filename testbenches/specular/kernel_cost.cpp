@@ -1,4 +1,4 @@
-// The SystemC kernel's own cost per event on this machine (issue 11): what one process wakeup, one
+// The SystemC kernel's own cost per event on this machine: what one process wakeup, one
 // timed or delta notification, one signal write with a reader costs, in CPU nanoseconds, with
 // nothing computed. A model's speed is bounded by how many of these it needs per pixel.
 //

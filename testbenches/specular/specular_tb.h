@@ -268,7 +268,7 @@ private:
 // Per-n statistics of one run.
 struct specular_stats {
     std::size_t samples = 0, mismatches = 0;
-    double max_rel_err_056 = 0.0;  // |q_device - cos^n| / cos^n where cos^n >= 0.56 (seed 001)
+    double max_rel_err_056 = 0.0;  // |q_device - cos^n| / cos^n where cos^n >= 0.56 (the quadratic-BRDF paper)
     std::size_t rel_err_points = 0;
 };
 

@@ -29,7 +29,7 @@ using sc_core::sc_time;
 
 namespace {
 
-// What differs between the devices in the shared tests: the golden model, a(n), the seed 001
+// What differs between the devices in the shared tests: the golden model, a(n), the quadratic-BRDF paper
 // bound the device must meet (seed_bound < 0: not claimed, e.g. the patent's constants are 56.7 %
 // off at n = 1), a golden model of another device that must be caught, and checks of the
 // generator's own nets.
@@ -58,7 +58,7 @@ struct ua22802_traits {
         return golden_ua22802(n, c, k, m);
     }
     static uint64_t a(unsigned n) { return golden_a_rom(n); }
-    // Seed 001: <= 4 % above 0.56. n = 1 and n = 2 are exact in the model: only the output's
+    // The quadratic-BRDF paper: <= 4 % above 0.56. n = 1 and n = 2 are exact in the model: only the output's
     // Q9.8 floor remains (1/256 of 255*0.56 is 2.7e-5 relative).
     static double seed_bound(unsigned n) { return n <= 2 ? 1e-4 : 0.04; }
     // the patent's a = 0.789 n + 0.5: 1.29 at n = 1, where the ROM's a is 0

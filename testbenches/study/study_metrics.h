@@ -1,6 +1,6 @@
-// Accuracy measures of seed 001 for the study and the generator search (plain C++, no SystemC):
+// Accuracy measures of the quadratic-BRDF paper for the study and the generator search (plain C++, no SystemC):
 //  - max_rel_err_056: the largest |approx - cos^n| / cos^n over the Q1.15 cos codes where
-//    cos^n >= 0.56 (seed 001, Fig. 3);
+//    cos^n >= 0.56 (the quadratic-BRDF paper, Fig. 3);
 //  - nmse: sum (approx - cos^n)^2 / sum (cos^n)^2 over the whole grid of the 32769 Q1.15 codes
 //    c = k / 32768, k = 0..32768 (a uniform grid of cos in [0, 1], step 2^-15).
 // Every method is evaluated on the same codes, the bit-accurate devices through their golden
@@ -38,7 +38,7 @@ private:
 // BRDF (ADD11, saturate mode) of the shared datapath for an `a` bus word, in real units.
 double datapath_brdf(uint64_t a_bits, int a_frac, uint64_t cos_code);
 
-// Seed 001's (cos k gamma)^(n/k): k by n's range (README): k = 2^floor(log2(n) / 2), i.e.
+// The quadratic-BRDF paper's (cos k gamma)^(n/k): k by n's range (README): k = 2^floor(log2(n) / 2), i.e.
 // 1 for n < 4, 2 for 4..15, 4 for 16..63, 8 for 64..255, 16 for 256..1023.
 double cosk_k_for(unsigned n);
 

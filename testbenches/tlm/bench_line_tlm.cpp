@@ -1,6 +1,6 @@
 // Throughput of the raster-line unit's TLM-2.0 wrapper (modules/tlm/line_tlm.h, m = 5, case 1,
 // shift-and-add /3: the README's default line), one core, untraced: evaluated pixels per second of
-// the loosely-timed burst path (issue 9's target: >= 5e7) and of the pin-accurate path, each
+// the loosely-timed burst path (the speed target: >= 5e7) and of the pin-accurate path, each
 // shading whole windows (a 256-interval INTERVAL_BLOCK write of 32-pixel intervals, 8192 pixels,
 // then a read of PIXEL_BLOCK) from an initiator thread. Samples vary per burst. Every 61st interval
 // of each burst is checked against the golden chain (golden_interp_line on that interval alone,

@@ -59,7 +59,7 @@ TEST(UA60553TunedGolden, WorstCaseBeatsTheRomAndTheSeedBound) {
             worst_tuned = std::max(worst_tuned, std::fabs(to_real(t, spec::brdf_fmt) - p) / p);
             worst_rom = std::max(worst_rom, std::fabs(to_real(r, spec::brdf_fmt) - p) / p);
         }
-    EXPECT_LT(worst_tuned, 0.04) << "seed 001's bound";
+    EXPECT_LT(worst_tuned, 0.04) << "the quadratic-BRDF paper's bound";
     EXPECT_LT(worst_tuned, worst_rom) << "no worse than the ROM prototype in the worst case";
     EXPECT_NEAR(worst_tuned, 0.0309, 0.0005);
     EXPECT_NEAR(worst_rom, 0.0316, 0.0005);

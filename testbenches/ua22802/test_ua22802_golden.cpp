@@ -85,7 +85,7 @@ TEST(UA22802Golden, WithinTheRoundingBoundOfTheRealQuadratic) {
 }
 
 TEST(UA22802Golden, SeedAccuracyClaimHoldsBitAccurately) {
-    // Seed 001: relative error <= 4 % where cos^n >= 0.56, n in [1, 512]. Measured: 3.16 %.
+    // The quadratic-BRDF paper: relative error <= 4 % where cos^n >= 0.56, n in [1, 512]. Measured: 3.16 %.
     double worst = 0;
     for (unsigned n = 1; n <= 1000; ++n)
         for (uint64_t c = spec::cos_one; c > 0; --c) {

@@ -22,7 +22,7 @@ using namespace shading::tb;
 
 namespace {
 
-// Per n: half the pixels over cos in [0, 1], half where cos^n >= 0.56 (the seed's error bound).
+// Per n: half the pixels over cos in [0, 1], half where cos^n >= 0.56 (the paper's error bound).
 std::vector<surface> surfaces_for(const std::vector<unsigned>& ns, unsigned pixels) {
     std::vector<surface> surfaces;
     for (unsigned n : ns) {
