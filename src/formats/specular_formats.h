@@ -1,4 +1,4 @@
-// Number formats of the specular-colour datapath shared by UA 60553 and its prototype UA 22802
+// Number formats of the specular-colour datapath shared by UA 60553 and its prototype UA 22802.
 // One table, used by the golden models, the modules' template widths and the
 // README. Notation in comments: Qi.f = i integer bits (sign included when signed), f fraction bits.
 #pragma once
