@@ -12,15 +12,8 @@
 #include "common/report_log.h"
 #include "common/sim_guard.h"
 #include "core/report_ids.h"
-#include "golden/specular_golden.h"
-#include "golden/squared_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "specular/device_traits.h"
 #include "specular/specular_tb.h"
-#include "squared/squared_device.h"
-#include "tuned/ua60553_tuned.h"
-#include "ua22802/ua22802.h"
-#include "ua60553/ua60553.h"
 
 using namespace shading;
 using namespace shading::tb;
@@ -29,17 +22,12 @@ using sc_core::sc_time;
 
 namespace {
 
-// What differs between the devices in the shared tests: the golden model, a(n), the quadratic-BRDF paper
+// What differs between the devices in the shared tests beyond device_traits.h: the quadratic-BRDF paper
 // bound the device must meet (seed_bound < 0: not claimed, e.g. the patent's constants are 56.7 %
 // off at n = 1), a golden model of another device that must be caught, and checks of the
 // generator's own nets.
-struct ua60553_traits {
-    using device = device_ua60553;
+struct ua60553_traits : ua60553_device {
     static strobe_timing timing() { return {}; }
-    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
-        return golden_ua60553(n, c, k, m);
-    }
-    static uint64_t a(unsigned n) { return golden_a_linear(n, ua60553::patent); }
     static double seed_bound(unsigned) { return -1.0; }
     // the ROM's a(1) = 0, the patent's 1.29
     static datapath_nets other(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
@@ -51,13 +39,8 @@ struct ua60553_traits {
     }
 };
 
-struct ua22802_traits {
-    using device = device_ua22802;
+struct ua22802_traits : ua22802_device {
     static strobe_timing timing() { return {}; }
-    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
-        return golden_ua22802(n, c, k, m);
-    }
-    static uint64_t a(unsigned n) { return golden_a_rom(n); }
     // The quadratic-BRDF paper: <= 4 % above 0.56. n = 1 and n = 2 are exact in the model: only the output's
     // Q9.8 floor remains (1/256 of 255*0.56 is 2.7e-5 relative).
     static double seed_bound(unsigned n) { return n <= 2 ? 1e-4 : 0.04; }
@@ -68,13 +51,8 @@ struct ua22802_traits {
     static void device_checks(const device& d) { EXPECT_EQ(d.a_gen.rom.bits, ua22802::rom_bits); }
 };
 
-struct tuned_traits {
-    using device = device_ua60553_tuned;
+struct tuned_traits : tuned_device {
     static strobe_timing timing() { return {}; }
-    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
-        return golden_ua60553_tuned(n, c, k, m);
-    }
-    static uint64_t a(unsigned n) { return golden_a_tuned(n, ua60553::minimax); }
     static double seed_bound(unsigned n) { return n == 1 ? 1e-4 : 0.04; }
     // n = 1: the patent's a = 1.29, here a = 0
     static datapath_nets other(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
@@ -85,16 +63,9 @@ struct tuned_traits {
     }
 };
 
-struct squared_traits {
-    using device = squared_device;
+struct squared_traits : squared_device_traits {
     // 13 clocks per pixel: the result of k = 9 is valid before the next strobe.
     static strobe_timing timing() { return squared_timing(); }
-    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
-        datapath_nets r{};
-        r.out = golden_squared(n, c, k, m).out;
-        return r;
-    }
-    static uint64_t a(unsigned n) { return golden_squared_a(n).a; }
     // Ours: <= 1 % above 0.56 for every n (0.39 % at worst); n = 1, 2: only the output's floor.
     static double seed_bound(unsigned n) { return n <= 2 ? 1e-4 : 0.01; }
     // the patent's a = 0.789 n + 0.5 at n = 1, where this device computes cos itself
@@ -122,21 +93,11 @@ protected:
     }
 };
 
-struct names {
-    template <typename T>
-    static std::string GetName(int) {
-        if (std::is_same_v<T, ua60553_traits>) return "UA60553";
-        if (std::is_same_v<T, ua22802_traits>) return "UA22802";
-        if (std::is_same_v<T, squared_traits>) return "Squared";
-        return "Tuned";
-    }
-};
-
 using devices = ::testing::Types<ua60553_traits, ua22802_traits, tuned_traits, squared_traits>;
 
 }  // namespace
 
-TYPED_TEST_SUITE(SpecularDevice, devices, names);
+TYPED_TEST_SUITE(SpecularDevice, devices, device_names);
 
 TYPED_TEST(SpecularDevice, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
     std::vector<uint32_t> all;

@@ -14,13 +14,8 @@
 #include "common/report_log.h"
 #include "common/sim_guard.h"
 #include "core/report_ids.h"
-#include "golden/specular_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "specular/device_traits.h"
 #include "specular/specular_tb.h"
-#include "tuned/ua60553_tuned.h"
-#include "ua22802/ua22802.h"
-#include "ua60553/ua60553.h"
 
 using namespace shading;
 using namespace shading::tb;
@@ -29,25 +24,6 @@ using sc_core::SC_NS;
 using sc_core::sc_time;
 
 namespace {
-
-struct ua60553_traits {
-    using gen = a_gen_linear;
-    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
-        return golden_ua60553(n, c, k, m);
-    }
-};
-struct ua22802_traits {
-    using gen = a_gen_rom;
-    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
-        return golden_ua22802(n, c, k, m);
-    }
-};
-struct tuned_traits {
-    using gen = a_gen_tuned;
-    static datapath_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
-        return golden_ua60553_tuned(n, c, k, m);
-    }
-};
 
 // Records the instants at which a model's outputs 25-27 change (one entry per time step).
 class change_recorder : public sc_core::sc_module {
@@ -166,15 +142,7 @@ private:
 template <typename T>
 class SpecularFast : public ::testing::Test {};
 
-struct names {
-    template <typename T>
-    static std::string GetName(int) {
-        if (std::is_same_v<T, ua60553_traits>) return "UA60553";
-        if (std::is_same_v<T, ua22802_traits>) return "UA22802";
-        return "Tuned";
-    }
-};
-using devices = ::testing::Types<ua60553_traits, ua22802_traits, tuned_traits>;
+using devices = ::testing::Types<ua60553_device, ua22802_device, tuned_device>;
 
 // The bench programs' random stream (2000 pixels, random reloads), then small n where cos^n is
 // rarely 0 (random n mostly gives 0 outputs), with cos codes up to 0xffff in wrap mode.
@@ -211,7 +179,7 @@ void random_differential(overflow_mode mode) {
 
 }  // namespace
 
-TYPED_TEST_SUITE(SpecularFast, devices, names);
+TYPED_TEST_SUITE(SpecularFast, devices, device_names);
 
 TYPED_TEST(SpecularFast, RandomSaturateMatchesBlockLevelAndGolden) { random_differential<TypeParam>(overflow_mode::saturate); }
 
