@@ -26,16 +26,10 @@
 namespace shading::tb {
 
 template <typename Device, typename Rtl>
-class rtl_cosim_bench : public sc_core::sc_module {
+// The Fig. 1 bundle (specular/fig1_pins.h): the inputs both devices read, the SystemC model's outputs.
+class rtl_cosim_bench : public sc_core::sc_module, public fig1_signals {
 public:
-    // The pins both devices read.
-    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
-    sc_core::sc_signal<n_t> in16_n{"in16_n"};
-    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"};
-    sc_core::sc_signal<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
-    // Each device's outputs: the SystemC model's (dut) and the RTL's (rtl).
-    sc_core::sc_signal<out_t> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
-    sc_core::sc_signal<bool> out29_valid{"out29_valid"};
+    // The RTL's outputs.
     sc_core::sc_signal<out_t> rtl_out25_r{"rtl_out25_r"}, rtl_out26_g{"rtl_out26_g"}, rtl_out27_b{"rtl_out27_b"};
     sc_core::sc_signal<bool> rtl_out29_valid{"rtl_out29_valid"};
 
@@ -72,13 +66,13 @@ public:
           rtl_mon("rtl_mon", [this](const pixel_sample& s) { on_sample(s, theirs_, ours_, true); }) {
         if constexpr (has_clk<Device>::value) dut.clk(*clk);
         if constexpr (has_clk<Rtl>::value) rtl.clk(*clk);
-        bind_inputs(dut);
-        bind_inputs(rtl);
-        bind_inputs(stim);
-        bind_inputs(mon);
-        bind_inputs(rtl_mon);
-        dut.out25_r(out25_r); dut.out26_g(out26_g); dut.out27_b(out27_b); dut.out29_valid(out29_valid);
-        mon.out25_r(out25_r); mon.out26_g(out26_g); mon.out27_b(out27_b); mon.out29_valid(out29_valid);
+        bind_fig1_inputs(dut, *this);
+        bind_fig1_inputs(rtl, *this);
+        bind_fig1_inputs(stim, *this);
+        bind_fig1_inputs(mon, *this);
+        bind_fig1_inputs(rtl_mon, *this);
+        bind_fig1_outputs(dut, *this);
+        bind_fig1_outputs(mon, *this);
         rtl.out25_r(rtl_out25_r); rtl.out26_g(rtl_out26_g); rtl.out27_b(rtl_out27_b);
         rtl.out29_valid(rtl_out29_valid);
         rtl_mon.out25_r(rtl_out25_r); rtl_mon.out26_g(rtl_out26_g); rtl_mon.out27_b(rtl_out27_b);
@@ -91,13 +85,6 @@ public:
     std::size_t unpaired() const { return ours_.size() + theirs_.size(); }  // samples one side lacks
 
 private:
-    template <typename M>
-    void bind_inputs(M& m) {
-        m.ctl15(ctl15); m.ctl17(ctl17); m.ctl20(ctl20); m.ctl22(ctl22); m.ctl24(ctl24);
-        m.in16_n(in16_n); m.in18_cos(in18_cos);
-        m.in19_ksi_r(in19_ksi_r); m.in21_ksi_g(in21_ksi_g); m.in23_ksi_b(in23_ksi_b);
-    }
-
     // Both monitors fire in the same instant, or the model's after the RTL's by its output-29 delay
     // (in either order): a sample waits in its queue until the other side's arrives.
     void on_sample(const pixel_sample& s, std::deque<pixel_sample>& mine, std::deque<pixel_sample>& other,

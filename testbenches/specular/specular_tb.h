@@ -27,6 +27,7 @@
 #include "formats/ua60553_formats.h"
 #include "core/report_ids.h"
 #include "common/bench_source.h"
+#include "specular/fig1_pins.h"
 
 namespace shading::tb {
 
@@ -338,16 +339,10 @@ private:
 // A bench that owns the pins' signals, the device, the stimulus, the monitor and the checker.
 // Device is any specular_device<AGen> (device_ua60553, device_ua22802, device_ua60553_tuned), its
 // fast model, or the squared-quadratic device (with its clock).
+// The pins' signals are the Fig. 1 bundle (specular/fig1_pins.h).
 template <typename Device>
-class specular_bench : public sc_core::sc_module {
+class specular_bench : public sc_core::sc_module, public fig1_signals {
 public:
-    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
-    sc_core::sc_signal<n_t> in16_n{"in16_n"};
-    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"};
-    sc_core::sc_signal<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
-    sc_core::sc_signal<out_t> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
-    sc_core::sc_signal<bool> out29_valid{"out29_valid"};
-
     specular_checker checker;
     std::unique_ptr<sc_core::sc_clock> clk;  // devices with a clk pin only
     Device dut;
@@ -364,22 +359,14 @@ public:
           stim("stim", std::move(surfaces), t),
           mon("mon", [this](const pixel_sample& s) { checker.check(s); }) {
         if constexpr (has_clk<Device>::value) dut.clk(*clk);
-        bind(dut);
-        bind(stim);
-        bind(mon);
-        dut.out25_r(out25_r); dut.out26_g(out26_g); dut.out27_b(out27_b); dut.out29_valid(out29_valid);
-        mon.out25_r(out25_r); mon.out26_g(out26_g); mon.out27_b(out27_b); mon.out29_valid(out29_valid);
+        bind_fig1_inputs(dut, *this);
+        bind_fig1_inputs(stim, *this);
+        bind_fig1_inputs(mon, *this);
+        bind_fig1_outputs(dut, *this);
+        bind_fig1_outputs(mon, *this);
     }
 
     bool finished() const { return stim.finished(); }
-
-private:
-    template <typename M>
-    void bind(M& m) {
-        m.ctl15(ctl15); m.ctl17(ctl17); m.ctl20(ctl20); m.ctl22(ctl22); m.ctl24(ctl24);
-        m.in16_n(in16_n); m.in18_cos(in18_cos);
-        m.in19_ksi_r(in19_ksi_r); m.in21_ksi_g(in21_ksi_g); m.in23_ksi_b(in23_ksi_b);
-    }
 };
 
 }  // namespace shading::tb

@@ -47,13 +47,9 @@ private:
 
 // One stimulus, the block-level and the fast model of AGen's device on the same inputs.
 template <class Traits>
-class dual_bench : public sc_core::sc_module {
+class dual_bench : public sc_core::sc_module, public fig1_inputs {
 public:
     using gen = typename Traits::gen;
-    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
-    sc_core::sc_signal<n_t> in16_n{"in16_n"};
-    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"};
-    sc_core::sc_signal<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
     sc_core::sc_signal<out_t> blk25{"blk25"}, blk26{"blk26"}, blk27{"blk27"};
     sc_core::sc_signal<out_t> fst25{"fst25"}, fst26{"fst26"}, fst27{"fst27"};
     sc_core::sc_signal<bool> blk29{"blk29"}, fst29{"fst29"};
@@ -74,7 +70,10 @@ public:
           blk_mon("blk_mon", [this](const pixel_sample& p) { blk_checker.check(p); }),
           fst_mon("fst_mon", [this](const pixel_sample& p) { fst_checker.check(p); }),
           blk_rec("blk_rec"), fst_rec("fst_rec") {
-        bind(stim); bind(blk); bind(fst); bind(blk_mon); bind(fst_mon);
+        for (auto* m : {&blk_mon, &fst_mon}) bind_fig1_inputs(*m, *this);
+        bind_fig1_inputs(stim, *this);
+        bind_fig1_inputs(blk, *this);
+        bind_fig1_inputs(fst, *this);
         blk.out25_r(blk25); blk.out26_g(blk26); blk.out27_b(blk27); blk.out29_valid(blk29);
         fst.out25_r(fst25); fst.out26_g(fst26); fst.out27_b(fst27); fst.out29_valid(fst29);
         blk_mon.out25_r(blk25); blk_mon.out26_g(blk26); blk_mon.out27_b(blk27); blk_mon.out29_valid(blk29);
@@ -99,13 +98,6 @@ public:
 private:
     static specular_checker::golden_fn golden(overflow_mode mode) {
         return [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) { return Traits::golden(n, c, k, mode); };
-    }
-
-    template <typename M>
-    void bind(M& m) {
-        m.ctl15(ctl15); m.ctl17(ctl17); m.ctl20(ctl20); m.ctl22(ctl22); m.ctl24(ctl24);
-        m.in16_n(in16_n); m.in18_cos(in18_cos);
-        m.in19_ksi_r(in19_ksi_r); m.in21_ksi_g(in21_ksi_g); m.in23_ksi_b(in23_ksi_b);
     }
 
     void on_edge() {

@@ -58,13 +58,9 @@ private:
     }
 };
 
-class dual_bench : public sc_core::sc_module {
+class dual_bench : public sc_core::sc_module, public fig1_inputs {
 public:
     sc_core::sc_clock clk;
-    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
-    sc_core::sc_signal<n_t> in16_n{"in16_n"};
-    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"};
-    sc_core::sc_signal<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
     sc_core::sc_signal<out_t> blk25{"blk25"}, blk26{"blk26"}, blk27{"blk27"};
     sc_core::sc_signal<out_t> fst25{"fst25"}, fst26{"fst26"}, fst27{"fst27"};
     sc_core::sc_signal<bool> blk29{"blk29"}, fst29{"fst29"};
@@ -88,7 +84,10 @@ public:
           blk_rec("blk_rec"), fst_rec("fst_rec") {
         blk.clk(clk);
         fst.clk(clk);
-        bind(stim); bind(blk); bind(fst); bind(blk_mon); bind(fst_mon);
+        for (auto* m : {&blk_mon, &fst_mon}) bind_fig1_inputs(*m, *this);
+        bind_fig1_inputs(stim, *this);
+        bind_fig1_inputs(blk, *this);
+        bind_fig1_inputs(fst, *this);
         blk.out25_r(blk25); blk.out26_g(blk26); blk.out27_b(blk27); blk.out29_valid(blk29);
         fst.out25_r(fst25); fst.out26_g(fst26); fst.out27_b(fst27); fst.out29_valid(fst29);
         blk_mon.out25_r(blk25); blk_mon.out26_g(blk26); blk_mon.out27_b(blk27); blk_mon.out29_valid(blk29);
@@ -98,14 +97,6 @@ public:
     }
 
     bool finished() const { return stim.finished(); }
-
-private:
-    template <typename M>
-    void bind(M& m) {
-        m.ctl15(ctl15); m.ctl17(ctl17); m.ctl20(ctl20); m.ctl22(ctl22); m.ctl24(ctl24);
-        m.in16_n(in16_n); m.in18_cos(in18_cos);
-        m.in19_ksi_r(in19_ksi_r); m.in21_ksi_g(in21_ksi_g); m.in23_ksi_b(in23_ksi_b);
-    }
 };
 
 // Both models against golden, and against each other, pin change by pin change (`pixels`: the
