@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "common/pin_compare.h"
 #include "common/report_log.h"
 #include "common/sim_guard.h"
 #include "interp/interp_horner_bench.h"
@@ -17,37 +18,6 @@ using namespace shading::tb;
 namespace {
 
 const sc_core::sc_time limit(1, sc_core::SC_SEC);
-
-// Compares the two units' outputs (and their RG nets) at every rising edge.
-class horner_pair_comparator : public sc_core::sc_module {
-public:
-    sc_core::sc_in<bool> clk{"clk"}, done_b{"done_b"}, done_f{"done_f"}, busy_b{"busy_b"}, busy_f{"busy_f"};
-    sc_core::sc_in<coef_t> i_b{"i_b"}, i_f{"i_f"}, rg_b{"rg_b"}, rg_f{"rg_f"};
-
-    SC_HAS_PROCESS(horner_pair_comparator);
-    explicit horner_pair_comparator(const sc_core::sc_module_name& name) : sc_module(name) {
-        SC_METHOD(on_edge);
-        sensitive << clk.pos();
-        dont_initialize();
-    }
-    std::size_t differences() const { return diffs_; }
-    std::size_t edges() const { return edges_; }
-    std::size_t dones() const { return dones_; }
-
-private:
-    void on_edge() {
-        ++edges_;
-        dones_ += done_b.read();
-        const bool same = done_b.read() == done_f.read() && busy_b.read() == busy_f.read() &&
-                          i_b.read() == i_f.read() && rg_b.read() == rg_f.read();
-        if (!same && diffs_++ < 5)
-            std::printf("outputs differ at %s: done %d/%d busy %d/%d i_t %x/%x\n",
-                        sc_core::sc_time_stamp().to_string().c_str(), int(done_b.read()), int(done_f.read()),
-                        int(busy_b.read()), int(busy_f.read()), unsigned(i_b.read().to_uint()),
-                        unsigned(i_f.read().to_uint()));
-    }
-    std::size_t diffs_ = 0, edges_ = 0, dones_ = 0;
-};
 
 // One stimulus (driven by the block unit's handshake), both units on its pins, the comparator.
 class horner_pair_bench : public sc_core::sc_module {
@@ -60,7 +30,7 @@ public:
     horner_unit blk{"blk"};
     horner_unit_fast fst{"fst"};
     horner_stimulus stim;
-    horner_pair_comparator cmp{"cmp"};
+    tb::pin_compare cmp{"cmp"};  // done, busy, i_t and RG at every rising edge
 
     horner_pair_bench(const sc_core::sc_module_name& name, item_source<horner_request> reqs, unsigned gap)
         : sc_module(name), stim("stim", std::move(reqs), gap) {
@@ -70,8 +40,12 @@ public:
         fst.i_t(i_f); fst.done(done_f); fst.busy(busy_f);
         stim.clk(clk); stim.busy(busy_b); stim.done(done_b); stim.start(start); stim.deg2(deg2);
         stim.a(a); stim.b(b); stim.c(c); stim.d(d); stim.t(t);
-        cmp.clk(clk); cmp.done_b(done_b); cmp.done_f(done_f); cmp.busy_b(busy_b); cmp.busy_f(busy_f);
-        cmp.i_b(i_b); cmp.i_f(i_f); cmp.rg_b(blk.rg_value); cmp.rg_f(fst.rg_value);
+        cmp.clk(clk);
+        cmp.pair("done", done_b, done_f);
+        cmp.pair("busy", busy_b, busy_f);
+        cmp.pair("i_t", i_b, i_f);
+        cmp.pair("rg", blk.rg_value, fst.rg_value);
+        cmp.count(done_b);
     }
     bool finished() const { return stim.finished(); }
 };
@@ -106,7 +80,7 @@ TEST_P(InterpHornerFastPins, SameAsBlockLevelAtEveryEdge) {
     horner_pair_bench bench("tb", random_horner_requests(3000, 21 + gap), gap);
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
     EXPECT_EQ(bench.cmp.differences(), 0u);
-    EXPECT_EQ(bench.cmp.dones(), 3000u);
+    EXPECT_EQ(bench.cmp.counted(), 3000u);
     EXPECT_GT(bench.cmp.edges(), 3000u * 4u);
 }
 INSTANTIATE_TEST_SUITE_P(Gaps, InterpHornerFastPins, ::testing::Values(0u, 2u));

@@ -6,6 +6,7 @@
 
 #include <cstdio>
 
+#include "common/pin_compare.h"
 #include "common/report_log.h"
 #include "common/sim_guard.h"
 #include "interp/interp_line_bench.h"
@@ -41,8 +42,8 @@ public:
     interp_line_unit<M, SET, DIV> blk{"blk"};
     interp_line_unit_fast<M, SET, DIV> fst{"fst"};
     line_stimulus<M> stim;
+    tb::pin_compare cmp{"cmp"};
 
-    SC_HAS_PROCESS(line_pair_bench);
     line_pair_bench(const sc_core::sc_module_name& name, item_source<interp::interval_samples> ivs, unsigned gap)
         : sc_module(name), stim("stim", std::move(ivs), gap) {
         blk.clk(clk); blk.start(start); blk.len(len); blk.i1(i1); blk.i2(i2); blk.i3(i3); blk.i4(i4);
@@ -51,32 +52,22 @@ public:
         fst.i_px(px_f); fst.valid(valid_f); fst.last(last_f); fst.ready(ready_f);
         stim.clk(clk); stim.ready(ready_b); stim.valid(valid_b); stim.last(last_b);
         stim.start(start); stim.len(len); stim.i1(i1); stim.i2(i2); stim.i3(i3); stim.i4(i4);
-        SC_METHOD(compare);
-        sensitive << clk.posedge_event();
-        dont_initialize();
+        cmp.clk(clk);
+        cmp.pair("valid", valid_b, valid_f);
+        cmp.pair("last", last_b, last_f);
+        cmp.pair("ready", ready_b, ready_f);
+        cmp.pair("i_px", px_b, px_f, &valid_b);
+        cmp.count(valid_b);
     }
     bool finished() const { return stim.finished(); }
-    std::size_t differences = 0, valid_edges = 0;
-
-private:
-    void compare() {
-        valid_edges += valid_b.read();
-        const bool same = valid_b.read() == valid_f.read() && last_b.read() == last_f.read() &&
-                          ready_b.read() == ready_f.read() && (!valid_b.read() || px_b.read() == px_f.read());
-        if (!same && differences++ < 5)
-            std::printf("outputs differ at %s: valid %d/%d last %d/%d ready %d/%d i_px %x/%x\n",
-                        sc_core::sc_time_stamp().to_string().c_str(), int(valid_b.read()), int(valid_f.read()),
-                        int(last_b.read()), int(last_f.read()), int(ready_b.read()), int(ready_f.read()),
-                        unsigned(px_b.read().to_uint()), unsigned(px_f.read().to_uint()));
-    }
 };
 
 template <unsigned M, sample_set SET, div3_mode DIV>
 void run_pair(std::size_t pixels, uint64_t seed, unsigned gap) {
     line_pair_bench<M, SET, DIV> bench("tb", random_line_intervals<M>(pixels, seed), gap);
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
-    EXPECT_EQ(bench.differences, 0u);
-    EXPECT_EQ(bench.valid_edges, pixels);
+    EXPECT_EQ(bench.cmp.differences(), 0u);
+    EXPECT_EQ(bench.cmp.counted(), pixels);
 }
 
 }  // namespace
