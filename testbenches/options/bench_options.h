@@ -1,9 +1,9 @@
 // The command lines of the testbench programs (ua60553_tb, ua22802_tb, squared_tb, interp_*_tb) as
 // plain structs, and one parse function per program: argv in, the struct filled, an exit status out
 // when the program must stop (0 after --help, 2 for bad usage, common/exit_status.h), nothing when
-// it runs. The parse functions live in the options library (bench_options.cpp), the only place that
-// compiles CLI11; they have no side effect beyond printing help or the usage error, so the fuzz
-// target fuzz_options calls them directly.
+// it runs. The parse functions live in the options library (program_options.cpp, one of the two
+// sources that compile CLI11); they have no side effect beyond printing help or the usage error,
+// so the fuzz target fuzz_options calls them directly.
 //
 // The options common to every bench (bench_options, used by bench_runner.h):
 //   --vcd <stem>          write <stem>.vcd (default: the program's traces/<name>; in random mode

@@ -2,7 +2,7 @@
 // render_reference, bench_specular_tlm, accuracy_study, generator_search, head_study) as plain
 // structs, and one parse function per program, as in bench_options.h: the struct filled, an exit
 // status returned when the program must stop (0 after --help, 2 for bad usage), nothing when it
-// runs. No side effect beyond printing help or the usage error (tool_options.cpp, CLI11).
+// runs. No side effect beyond printing help or the usage error (program_options.cpp, CLI11).
 #pragma once
 
 #include <cstddef>
