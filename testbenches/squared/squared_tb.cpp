@@ -1,7 +1,7 @@
 // Squared-quadratic device testbench program: replays Fig. 3 with the squaring stage's clock (load
 // n and k_s*I through their strobes, then stream cos values on strobe 17, 13 clocks per pixel),
 // checks every output validated by output 29 against the golden model and measures the device
-// against cos^n. Options common to every bench: bench_runner.h.
+// against cos^n. Options common to every bench: options/bench_options.h.
 //
 //   squared_tb                       a sphere's raster line at n = 10, 100 and 1000, VCD in traces/squared.vcd
 //   squared_tb --sweep --no-vcd      every cos code 0..1.0 for n = 1, 3, 10, 100, 512, 1000
