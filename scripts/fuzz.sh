@@ -16,9 +16,10 @@ all=(fuzz_obj fuzz_tlm fuzz_vcd fuzz_options)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all[@]}")
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
+scripts/setup.sh fuzz
 cxx=$(command -v clang++-14 || command -v clang++ || true)
 if [ -z "$cxx" ]; then
-  echo "fuzz: needs clang (Debian: clang-14 and libclang-rt-14-dev; scripts/setup.sh installs them)" >&2
+  echo "fuzz: needs clang (Debian: clang-14 and libclang-rt-14-dev; scripts/setup.sh fuzz installs them)" >&2
   exit 2
 fi
 launcher=()

@@ -11,6 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
+scripts/setup.sh plots  # matplotlib for the figures of run.d/30, 40 and 70
 scripts/build.sh
 mkdir -p out traces
 export SHADING_BIN="$PWD/build/bin" SHADING_OUT="$PWD/out" SHADING_SUMMARY="$PWD/out/summary.tsv"

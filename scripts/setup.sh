@@ -1,9 +1,18 @@
 #!/usr/bin/env bash
 # Installs what the project needs on Debian 12 when run as root and something is missing.
+#   scripts/setup.sh [GROUP...]   GROUP: plots (matplotlib for scripts/run.sh's figures), fuzz (clang
+#                                 and libFuzzer for scripts/fuzz.sh); the base list always.
+# The base list is what building and scripts/test.sh need (CI): the optional groups are installed
+# by the scripts that use them, so a CI run does not download a second compiler it never calls.
 set -euo pipefail
-pkgs=(cmake make g++ pkg-config libsystemc-dev googletest libgtest-dev libglm-dev libcli11-dev libtinyobjloader-dev libpng-dev nlohmann-json3-dev bsdextrautils libbenchmark-dev verilator yosys
-      clang-14 libclang-rt-14-dev
-      python3-matplotlib python3-numpy)
+pkgs=(cmake make g++ pkg-config libsystemc-dev googletest libgtest-dev libglm-dev libcli11-dev libtinyobjloader-dev libpng-dev nlohmann-json3-dev bsdextrautils libbenchmark-dev verilator yosys)
+for group in "$@"; do
+  case $group in
+    plots) pkgs+=(python3-matplotlib python3-numpy) ;;
+    fuzz) pkgs+=(clang-14 libclang-rt-14-dev) ;;
+    *) echo "setup: unknown group '$group' (plots, fuzz)" >&2; exit 2 ;;
+  esac
+done
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -21,12 +21,12 @@
 //   6 RG <- RG + D       MX2 = D,   BK pass
 #pragma once
 
-#include <sstream>
 #include <systemc>
 
 #include "core/report_ids.h"
 #include "core/timed_block.h"
 #include "formats/interp_formats.h"
+#include "interp/horner_steps.h"
 
 namespace shading {
 
@@ -65,19 +65,13 @@ public:
 
 private:
     void on_clock() {
-        const bool finishing = state_ != 0 && state_ == last_;
-        unsigned next = 0;
-        if (start.read() && (state_ == 0 || finishing)) next = 1;
-        else if (state_ != 0 && !finishing) next = state_ + 1;
-        if (next == 1) last_ = 6;  // until step 4 says otherwise
-        // deg2 is stable from the first falling edge after acceptance: read it entering step 4.
-        if (next == 4 && deg2.read()) last_ = 4;
-        if (next == 2) check_t();
-        state_ = next;
+        const unsigned s = fsm_.rising(
+            start.read(), [this] { return deg2.read(); },
+            [this] { interp::check_horner_t(name(), t.read().to_uint64()); });
 
         unsigned m1 = mx1_a, m2 = mx2_zero;
         bool pass = true;
-        switch (state_) {
+        switch (s) {
             case 1: m2 = mx2_b; pass = false; break;
             case 2: m1 = mx1_a; m2 = mx2_mul; pass = true; break;
             case 3: m1 = mx1_rg; m2 = mx2_mul; pass = false; break;
@@ -89,22 +83,12 @@ private:
         mx1_sel.write(m1);
         mx2_sel.write(m2);
         bk_pass.write(pass);
-        step.write(state_);
-        done.write(state_ != 0 && state_ == last_);
-        busy.write(state_ != 0);
+        step.write(s);
+        done.write(fsm_.done());
+        busy.write(fsm_.busy());
     }
 
-    // Assertion (not hardware): t above 1.0 is extrapolation; the unit evaluates it as given.
-    void check_t() {
-        const uint64_t v = t.read().to_uint64();
-        if (v <= interp::t_one) return;
-        std::ostringstream os;
-        os << name() << ": t = " << v << "/256 > 1 at " << sc_core::sc_time_stamp()
-           << "; evaluated as given (extrapolation; RG wraps if the value leaves Q16.16)";
-        SC_REPORT_WARNING(msg::input, os.str().c_str());
-    }
-
-    unsigned state_ = 0, last_ = 6;
+    interp::horner_steps fsm_;  // the sequence (horner_steps.h, shared with horner_unit_fast)
 };
 
 }  // namespace shading

@@ -1,7 +1,7 @@
 // The fast pin-level abstraction of the interpolation paper's iterative Horner unit (Fig. 4; interp/abstraction.h):
 // horner_unit's pins, handshake and clocks per result, one process, no internal blocks or delays.
-//   - Rising edges: horner_ctrl.h's micro-sequencer as plain state (accept on start when idle or
-//     done, 6 steps cubic, 4 with deg2 read entering step 4, done high in the last step, busy while
+//   - Rising edges: horner_ctrl's micro-sequencer, the same plain state (horner_steps.h: accept on
+//     start when idle or done, 6 steps cubic, 4 with deg2 read entering step 4, done high in the last step, busy while
 //     stepping; t > 1 reported as horner_ctrl does).
 //   - Falling edges: RG latches the step's value. At step 1 the request's inputs (stable at every
 //     falling edge from acceptance to done, the handshake's rule) give every step's RG at once
@@ -12,12 +12,12 @@
 // rg_value is kept as a signal (the block model's RG net) so the same monitor checks every step.
 #pragma once
 
-#include <sstream>
 #include <systemc>
 
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
 #include "golden/interp_golden.h"
+#include "interp/horner_steps.h"
 
 namespace shading {
 
@@ -71,19 +71,12 @@ private:
         }
     }
 
-    // horner_ctrl's rising edge: state_ is the step that ends at this edge (0 idle).
+    // horner_ctrl's rising edge (horner_steps.h, the same sequencer).
     void rising() {
-        const bool finishing = state_ != 0 && state_ == last_;
-        unsigned next = 0;
-        if (start.read() && (state_ == 0 || finishing)) next = 1;
-        else if (state_ != 0 && !finishing) next = state_ + 1;
-        if (next == 1) last_ = 6;
-        if (next == 4 && deg2.read()) last_ = 4;
-        if (next == 2) check_t();
-        state_ = next;
-        put(done, done_, state_ != 0 && state_ == last_);
-        put(busy, busy_, state_ != 0);
-        if (state_ != 0) {
+        step_edge(start.read());
+        put(done, done_, fsm_.done());
+        put(busy, busy_, fsm_.busy());
+        if (fsm_.busy()) {
             wake_ = wake::fall;  // the static sensitivity: the next falling edge
         } else {  // idle (start was low): nothing happens until start rises
             wake_ = wake::start_rose;
@@ -91,27 +84,36 @@ private:
         }
     }
 
-    // RG latches step state_'s value. At step 1 the request's inputs (stable at every falling edge
+    // RG latches the running step's value. At step 1 the request's inputs (stable at every falling edge
     // from acceptance to done) give every step's RG and the step count (deg2 read here as at step 4:
     // the handshake holds it).
     void falling() {
-        if (state_ == 1) {
+        const unsigned state = fsm_.step();
+        if (state == 1) {
             const interp::cubic_coefs k{code(a), code(b), code(c), code(d)};
             t_code_ = t.read().to_uint64();
             last_ = static_cast<unsigned>(interp::golden_horner_into(k, t_code_, deg2.read(), steps_));
         }
-        const coef_t rg(steps_[state_ - 1]);
+        const coef_t rg(steps_[state - 1]);
         rg_value.write(rg);
         i_t.write(rg);
         // The next rising edge matters when it ends the request (acceptance), enters the last step
         // (done rises) or enters step 2 with t > 1 (report); otherwise pass it and latch again.
-        const unsigned next = state_ + 1;
-        if (state_ == last_ || next == last_ || (next == 2 && t_code_ > interp::t_one)) {
+        const unsigned next = state + 1;
+        if (state == last_ || next == last_ || (next == 2 && t_code_ > interp::t_one)) {
             wake_ = wake::rise;
             next_trigger(clk.posedge_event());
         } else {
-            state_ = next;  // the static sensitivity: the next falling edge
+            // That edge is passed: mid-request start is not read. Next: the static sensitivity (fall).
+            step_edge(false);
         }
+    }
+
+    // One rising edge of the sequencer; t is checked entering step 2 as horner_ctrl does.
+    void step_edge(bool start_now) {
+        fsm_.rising(
+            start_now, [this] { return deg2.read(); },
+            [this] { interp::check_horner_t(name(), t.read().to_uint64()); });
     }
 
     static void put(sc_core::sc_out<bool>& port, bool& now, bool v) {
@@ -124,19 +126,10 @@ private:
         return code_value(p.read().to_uint64(), interp::coef_fmt);
     }
 
-    // horner_ctrl's assertion (not hardware): t above 1.0 is extrapolation.
-    void check_t() {
-        const uint64_t v = t.read().to_uint64();
-        if (v <= interp::t_one) return;
-        std::ostringstream os;
-        os << name() << ": t = " << v << "/256 > 1 at " << sc_core::sc_time_stamp()
-           << "; evaluated as given (extrapolation; RG wraps if the value leaves Q16.16)";
-        SC_REPORT_WARNING(msg::input, os.str().c_str());
-    }
-
     enum class wake { init, rise, fall, start_rose };
     wake wake_ = wake::init;  // what the edge that wakes the process next is
-    unsigned state_ = 0, last_ = 6;
+    interp::horner_steps fsm_;  // horner_ctrl's sequencer (horner_steps.h)
+    unsigned last_ = 6;          // the request's last step, from the golden steps (the look-ahead)
     bool done_ = false, busy_ = false;  // what done and busy were last written
     uint64_t t_code_ = 0;
     uint64_t steps_[6] = {};

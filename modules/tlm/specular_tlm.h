@@ -144,6 +144,8 @@ struct tlm_fig1_variant {
     static std::unique_ptr<device> make(const char* name, overflow_mode m, const config& g, const block_delays& d) {
         return std::make_unique<device>(name, m, g, d);
     }
+    // The generator's own word for n (the fast model reads the same function): one law per device.
+    static uint64_t law(uint64_t n, const config& g) { return AGen::a_word(g, n); }
     static std::array<uint64_t, 3> outputs(uint64_t a, uint64_t cos, const std::array<uint64_t, 3>& ksi,
                                            overflow_mode m) {
         return golden_datapath(a, AGen::a_fmt.frac, cos, ksi, m).out;
@@ -152,19 +154,14 @@ struct tlm_fig1_variant {
 template <>
 struct tlm_variant<a_gen_linear> : tlm_fig1_variant<a_gen_linear> {
     static constexpr uint32_t code = 0;
-    static uint64_t law(uint64_t n, const config& g) { return golden_a_linear(n, g); }
 };
 template <>
 struct tlm_variant<a_gen_rom> : tlm_fig1_variant<a_gen_rom> {
-    static constexpr uint32_t code = 1;
-    // The ROM's own words (default: the content generated from the quadratic-BRDF paper's exact
-    // a(n)), as the device.
-    static uint64_t law(uint64_t n, const config& words) { return n < words.size() ? words[n] : 0; }
+    static constexpr uint32_t code = 1;  // law: the ROM's own words (default: the generated content)
 };
 template <>
 struct tlm_variant<a_gen_tuned> : tlm_fig1_variant<a_gen_tuned> {
     static constexpr uint32_t code = 2;
-    static uint64_t law(uint64_t n, const config& g) { return golden_a_tuned(n, g); }
 };
 // The squared-quadratic device (ours): a from n alone, so nothing to configure; the squaring
 // stage's latency is k + 1 clocks (sq_count.h: LOAD at the taking edge, k SQUAREs, done).

@@ -172,16 +172,25 @@ pixel_geometry geometry_at(const rasterised& r, unsigned x, unsigned y, op_count
     for (const auto& l : s.lights) need_p = need_p || l.type == light::kind::point;
     if (need_p)
         out.p = b[0] * cv(m.positions[t[0]]) + b[1] * cv(m.positions[t[1]]) + b[2] * cv(m.positions[t[2]]);
+    add_view_and_lights(r, out, ops);
+    return out;
+}
+
+void add_view_and_lights(const rasterised& r, pixel_geometry& g, op_counts* ops) {
+    const world& s = *r.src;
+    auto c = [ops](double v) { return cnum(v, ops); };
+    auto cv = [&c](const glm::dvec3& v) { return cvec3{c(v.x), c(v.y), c(v.z)}; };
     // V: towards the eye (perspective), or the constant view direction (orthographic, no work).
-    out.v = s.cam.orthographic() ? cv(r.view_dir) : normalize(cv(r.eye) - out.p);
+    g.v = s.cam.orthographic() ? cv(r.view_dir) : normalize(cv(r.eye) - g.p);
+    g.l.clear();
+    g.h.clear();
     for (const auto& l : s.lights) {
         // L: a directional light's unit vector is a frame constant (normalised here, uncounted).
         const cvec3 lv = l.type == light::kind::directional ? cv(glm::normalize(l.vector))
-                                                             : normalize(cv(l.vector) - out.p);
-        out.l.push_back(lv);
-        out.h.push_back(normalize(lv + out.v));
+                                                             : normalize(cv(l.vector) - g.p);
+        g.l.push_back(lv);
+        g.h.push_back(normalize(lv + g.v));
     }
-    return out;
 }
 
 }  // namespace shading::scene

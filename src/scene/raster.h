@@ -81,5 +81,9 @@ struct pixel_geometry {
 // Precondition: r.covered(x, y). `ops` may be nullptr: the same values, uncounted (e.g. for a
 // pipeline that reads N.L and N.H at its sample points: dot(g.n, g.l[i]), dot(g.n, g.h[i])).
 pixel_geometry geometry_at(const rasterised& r, unsigned x, unsigned y, op_counts* ops);
+// V, then L and H for every light, from g.p (set first when the camera is perspective or a light is
+// a point): the per-pixel geometry and the scan-line stepper (scanline.h) share it, so both
+// baselines derive the shading vectors with the same counted operations.
+void add_view_and_lights(const rasterised& r, pixel_geometry& g, op_counts* ops);
 
 }  // namespace shading::scene

@@ -76,21 +76,13 @@ pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops) {
     y_ = y;
     ++stats_.points;
 
-    const world& s = *r_.src;
-    auto cv = [&c](const glm::dvec3& v) { return cvec3{c(v.x), c(v.y), c(v.z)}; };
     auto rb = [&rebind](const cvec3& v) { return cvec3{rebind(v.x), rebind(v.y), rebind(v.z)}; };
     pixel_geometry out;
     out.object = r_.setups[static_cast<std::size_t>(t)].object;
     // U_N is Q times the perspective-correct normal: normalising removes Q, so no division here.
     out.n = normalize(rb(un_));
     if (need_p_) out.p = perspective_ ? (c(1.0) / rebind(q_)) * rb(up_) : rb(up_);
-    out.v = s.cam.orthographic() ? cv(r_.view_dir) : normalize(cv(r_.eye) - out.p);
-    for (const auto& l : s.lights) {
-        const cvec3 lv = l.type == light::kind::directional ? cv(glm::normalize(l.vector))
-                                                             : normalize(cv(l.vector) - out.p);
-        out.l.push_back(lv);
-        out.h.push_back(normalize(lv + out.v));
-    }
+    add_view_and_lights(r_, out, ops);  // V, L, H as the per-pixel geometry derives them
     return out;
 }
 

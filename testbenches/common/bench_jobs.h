@@ -11,9 +11,6 @@
 // in one process.
 #pragma once
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,7 +28,7 @@
 #include <thread>
 #include <vector>
 
-extern char** environ;
+#include "common/child_processes.h"
 
 namespace shading::tb {
 
@@ -118,14 +115,13 @@ inline int run_split(const split_plan& plan, const std::string& bench, int argc,
     const fs::path dir = tmpl;
     const auto common = detail::child_args(
         argc, argv, {"--jobs", "--random", "--seed", "--summary", "--inject-mismatch", "--inject-count", "--csv"});
-    std::vector<pid_t> pids(plan.jobs, -1);
-    std::vector<int> status(plan.jobs, -1);
     const auto t0 = std::chrono::steady_clock::now();
     std::printf("%s: %llu random stimuli in %u processes (seed %llu, process i: seed + i*2^32)\n", bench.c_str(),
                 static_cast<unsigned long long>(plan.total), plan.jobs, static_cast<unsigned long long>(plan.seed));
     std::fflush(stdout);
-    for (unsigned i = 0; i < plan.jobs; ++i) {
-        std::vector<std::string> args{argv[0]};
+    auto spec = [&](std::size_t i) {
+        child_spec c{"/proc/self/exe", {argv[0]}, (dir / ("out" + std::to_string(i))).string()};
+        auto& args = c.args;
         args.insert(args.end(), common.begin(), common.end());
         args.insert(args.end(), {"--jobs", "1", "--random", std::to_string(plan.share(i)), "--seed",
                                  std::to_string(plan.seed_of(i)), "--summary", (dir / ("rows" + std::to_string(i))).string()});
@@ -134,34 +130,17 @@ inline int run_split(const split_plan& plan, const std::string& bench, int argc,
                                      std::to_string(plan.inject_count)});
         }
         if (!csv.empty()) args.insert(args.end(), {"--csv", csv + ".part" + std::to_string(i)});
-        std::vector<char*> cargv;
-        for (auto& a : args) cargv.push_back(a.data());
-        cargv.push_back(nullptr);
-        const std::string out = (dir / ("out" + std::to_string(i))).string();
-        posix_spawn_file_actions_t fa;
-        posix_spawn_file_actions_init(&fa);
-        posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (posix_spawn(&pids[i], "/proc/self/exe", &fa, nullptr, cargv.data(), environ) != 0) pids[i] = -1;
-        posix_spawn_file_actions_destroy(&fa);
-    }
+        return c;
+    };
     // Progress: one line, rewritten on a terminal, as processes finish.
     const bool tty = isatty(STDERR_FILENO) != 0;
     unsigned done = 0;
-    for (unsigned i = 0; i < plan.jobs; ++i)
-        if (pids[i] < 0) ++done;
-    while (done < plan.jobs) {
-        int st = 0;
-        const pid_t p = waitpid(-1, &st, 0);
-        if (p < 0) break;
-        for (unsigned i = 0; i < plan.jobs; ++i)
-            if (pids[i] == p) {
-                status[i] = WIFEXITED(st) ? WEXITSTATUS(st) : 128;
-                ++done;
-                const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                std::fprintf(stderr, "%s%s: %u/%u processes done, %.1f s%s", tty ? "\r" : "", bench.c_str(), done,
-                             plan.jobs, s, tty && done < plan.jobs ? "" : "\n");
-            }
-    }
+    const std::vector<int> status = run_children(plan.jobs, plan.jobs, spec, [&](std::size_t, int) {
+        ++done;
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::fprintf(stderr, "%s%s: %u/%u processes done, %.1f s%s", tty ? "\r" : "", bench.c_str(), done, plan.jobs, s,
+                     tty && done < plan.jobs ? "" : "\n");
+    });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     // Merge the rows of the same bench and case, in first-seen order.

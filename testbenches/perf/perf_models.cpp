@@ -19,9 +19,6 @@
 // (perf_harness.h; the specular devices' rows are in perf_specular.cpp), or add_golden(...) for a
 // plain C++ model.
 #include <benchmark/benchmark.h>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -39,6 +36,7 @@
 #include <systemc>
 #include <vector>
 
+#include "common/child_processes.h"
 #include "common/report_log.h"
 #include "core/trace.h"
 #include "golden/interp_golden.h"
@@ -56,8 +54,6 @@
 #include "scene/world.h"
 #include "tlm/line_tlm.h"
 #include "tlm/tlm_initiator.h"
-
-extern char** environ;
 
 // The fast pin-level abstractions of the interpolation paper's units and of the pipeline (modules/interp/*_fast.h,
 // modules/pipeline/shading_pipeline_fast.h), when the tree has them.
@@ -460,17 +456,10 @@ child_result run_child(const sc_case& c) {
                                   "--benchmark_out_format=json"};
     if (g_quick) args.push_back("--quick");
     if (!g_min_time.empty()) args.push_back("--benchmark_min_time=" + g_min_time);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    pid_t pid = 0;
-    const int e = posix_spawn(&pid, "/proc/self/exe", &fa, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
-    int status = 0;
-    if (e != 0 || waitpid(pid, &status, 0) != pid) {
+    // Its standard output (the benchmark's console table) is discarded: the JSON file is read.
+    const auto spec = [&](std::size_t) { return tb::child_spec{"/proc/self/exe", args, "/dev/null"}; };
+    const int status = tb::run_children(1, 1, spec)[0];
+    if (status < 0) {
         r.error = "cannot run the child process";
     } else {
         try {
@@ -492,9 +481,9 @@ child_result run_child(const sc_case& c) {
         } catch (const std::exception& ex) {
             r.error = std::string("no result from the child: ") + ex.what();
         }
-        if (r.ok && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
+        if (r.ok && status != 0) {
             r.ok = false;
-            r.error = "child exited with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+            r.error = "child exited with status " + std::to_string(status) +
                       " (unexpected SystemC report?)";
         }
     }

@@ -24,6 +24,9 @@ struct sim_options {
     // For the tests of the verdict: the golden codes of the k-th pixel written are corrupted (one
     // LSB of R), so the checker must count exactly one mismatch.
     std::size_t inject_mismatch = SIZE_MAX;
+    // sim_result::write_order is filled (8 bytes per write); off for long runs (soak_pipeline),
+    // whose memory would otherwise grow with the log.
+    bool keep_write_order = true;
 };
 
 struct sim_result {
@@ -33,7 +36,7 @@ struct sim_result {
     double cpu_seconds = 0.0;    // the process's CPU time over the same span (the speed on a shared machine)
     std::size_t mismatches = 0;  // pixels that differ from golden_interval, or missing, or unexpected
     // For the tests.
-    std::vector<std::size_t> write_order;  // frame index of every frame-buffer write, in order
+    std::vector<std::size_t> write_order;  // frame index of every frame-buffer write, in order (keep_write_order)
     std::size_t jobs_dropped = 0;          // jobs the hardware refused (bad input, reported)
     uint64_t frame_load_clocks = 0;        // clocks until the frame constants were latched
     double period_ns = 0.0;                // the clock period

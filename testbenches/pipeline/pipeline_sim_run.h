@@ -57,6 +57,7 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
     res.f = empty_frame(p);
     auto bench = std::make_unique<pipeline_bench<AGen, EVAL, FAST>>("tb", p, k, dev, c, gen, o.progress);
     bench->checker.inject_mismatch(o.inject_mismatch);
+    bench->checker.keep_order(o.keep_write_order);
     std::unique_ptr<vcd_file> vcd;
     if (!o.vcd_path.empty()) {
         std::string path = o.vcd_path;

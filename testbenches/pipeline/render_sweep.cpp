@@ -1,9 +1,6 @@
 // render_pipeline --sweep (render_program.h): a grid of configurations on the golden model, one child
 // process of this program per configuration (--jobs in parallel), merged into one CSV
 // (scripts/plot_pipeline.py draws it).
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,9 +12,8 @@
 #include <sstream>
 #include <thread>
 
+#include "common/child_processes.h"
 #include "render_program.h"
-
-extern char** environ;
 
 namespace shading::render_program {
 
@@ -204,32 +200,19 @@ int run_sweep(const options& o) {
         if (!o.ambient.empty()) a.insert(a.end(), {"--ambient", o.ambient});
         return a;
     };
-    auto spawn = [&](std::size_t i) -> pid_t {
-        const std::vector<std::string> a = args_of(i);
-        std::vector<char*> argv;
-        for (const auto& s : a) argv.push_back(const_cast<char*>(s.c_str()));
-        argv.push_back(nullptr);
-        const std::string log = (tmp / (std::to_string(i) + ".log")).string();
-        posix_spawn_file_actions_t fa;
-        posix_spawn_file_actions_init(&fa);
-        posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_adddup2(&fa, 1, 2);
-        pid_t pid = -1;
-        const int rc = posix_spawn(&pid, self.c_str(), &fa, nullptr, argv.data(), environ);
-        posix_spawn_file_actions_destroy(&fa);
-        if (rc != 0) throw std::runtime_error("posix_spawn failed: " + std::string(std::strerror(rc)));
-        return pid;
-    };
-
-    std::map<pid_t, std::size_t> running;
     std::vector<std::size_t> failed;
-    std::size_t next = 0, done = 0;
+    std::size_t started = 0, done = 0;
+    // Each child's standard output and error go to <i>.log in the temporary folder.
+    auto spec = [&](std::size_t i) {
+        ++started;
+        return tb::child_spec{self, args_of(i), (tmp / (std::to_string(i) + ".log")).string(), true};
+    };
     const bool tty = ::isatty(2);
     auto progress = [&](bool final) {
         progress_open = tty && !final;
         if (tty)
             std::fprintf(stderr, "\rsweep: %zu/%zu configurations done, %zu running, %zu failed, %.0f s%s", done,
-                         grid.size(), running.size(), failed.size(), seconds_since(t0), final ? "\n" : "");
+                         grid.size(), started - done, failed.size(), seconds_since(t0), final ? "\n" : "");
         else if (final || (done < grid.size() && done % std::max<std::size_t>(1, grid.size() / 10) == 0))
             std::fprintf(stderr, "sweep: %zu/%zu configurations done, %zu failed, %.0f s\n", done, grid.size(),
                          failed.size(), seconds_since(t0));
@@ -239,21 +222,11 @@ int run_sweep(const options& o) {
     else
         std::fprintf(stderr, "sweep: %zu configurations of %s %ux%u in %u processes\n", grid.size(), o.scene.c_str(),
                      o.size, o.size, jobs);
-    while (done < grid.size()) {
-        while (running.size() < jobs && next < grid.size()) {
-            running[spawn(next)] = next;
-            ++next;
-        }
-        int status = 0;
-        const pid_t pid = ::waitpid(-1, &status, 0);
-        if (pid < 0) throw std::runtime_error("waitpid failed");
-        auto it = running.find(pid);
-        if (it == running.end()) continue;
-        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) failed.push_back(it->second);
-        running.erase(it);
+    tb::run_children(grid.size(), jobs, spec, [&](std::size_t i, int status) {
+        if (status != 0) failed.push_back(i);  // not started (-1), failed, or killed
         ++done;
         progress(false);
-    }
+    });
     progress(true);
     if (!failed.empty()) {
         std::fprintf(stderr, "render_pipeline: %zu sweep configurations failed; logs kept in %s:\n", failed.size(),

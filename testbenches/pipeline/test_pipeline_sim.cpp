@@ -238,6 +238,20 @@ TEST(PipelineSimHand, CheckerCatchesOneWrongPixel) {
     EXPECT_EQ(tb::report_log::get().count(msg::mismatch), 1u);
 }
 
+// Without the write log (soak_pipeline's long runs) the verdict is the same: the corrupted pixel is
+// still the sixth written and still one mismatch; only the log is empty.
+TEST(PipelineSimHand, CheckerWithoutWriteLogStillCatchesIt) {
+    tb::report_log::get().expect(msg::mismatch);
+    const plan p = make_hand_plan(16, 1, {job(0, 0, 4, 16, false)});
+    sim_options o = traced();
+    o.inject_mismatch = 5;
+    o.keep_write_order = false;
+    const sim_result r = simulate_frame(p, hand_constants(), patent, config(evaluator::horner), o);
+    EXPECT_EQ(r.mismatches, 1u);
+    EXPECT_EQ(tb::report_log::get().count(msg::mismatch), 1u);
+    EXPECT_TRUE(r.write_order.empty());
+}
+
 // ---- Clocks per pixel, as designed ----
 
 // Fill latency, from the rising edge where the geometry side sees the frame load taken to the edge
