@@ -4,7 +4,7 @@
 # run in name order; each appends rows to out/summary.tsv:
 #   bench <TAB> case <TAB> samples <TAB> mismatches <TAB> max_error <TAB> cycles_per_pixel <TAB> note
 # VCDs go to traces/, CSV and PNG results to out/. Every testbench program takes the same options
-# (testbenches/common/bench_runner.h: --vcd, --no-vcd, --summary, --mode, --seed, --random N) and
+# (testbenches/options/bench_options.h: --vcd, --no-vcd, --summary, --mode, --seed, --random N) and
 # exits non-zero on any mismatch or unexpected SystemC report, which fails its step here.
 # run.d/50-random.sh is a short random differential run per model; the long one (>= 10^7 per
 # model) is scripts/random_long.sh.

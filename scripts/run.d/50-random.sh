@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A short random differential run per model (a few seconds each): random stimuli streamed through
-# the device against its golden model (testbenches/common/bench_runner.h, --random). The specular
+# the device against its golden model (testbenches/options/bench_options.h, --random). The specular
 # devices get random reloads of n and k_s*I between pixels in both overflow modes; the interpolation paper's units
 # random samples, interval lengths and degrees, back to back. Rows go to $SHADING_SUMMARY; the
 # long run (>= 10^7 per model) is scripts/random_long.sh.

@@ -1,5 +1,5 @@
 // A long random run split into independent processes, for every bench program through
-// bench_runner::parse: `--random N --jobs J` re-executes the program J times with --jobs 1, child i
+// bench_runner::start: `--random N --jobs J` re-executes the program J times with --jobs 1, child i
 // streaming its share of the N stimuli (N / J, the first N % J children one more) with seed
 // S + i * 2^32 (child 0 keeps S; no child's seed is another run's small seed), its summary rows
 // into a temporary file and its CSV (if the program has --csv and it was given) into <csv>.part<i>.

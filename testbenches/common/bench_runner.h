@@ -1,22 +1,14 @@
-// The command line, run and verdict shared by every testbench program (the sc_main of
-// ua60553_tb, ua22802_tb, interp_*_tb): the same options everywhere, one writer of the summary
-// rows (out/summary.tsv, scripts/run.sh), and one exit status: 0 only when every sample matched
-// the golden model and SystemC reported nothing the bench did not announce.
+// The run and verdict shared by every testbench program (the sc_main of ua60553_tb, ua22802_tb,
+// squared_tb, interp_*_tb): one writer of the summary rows (out/summary.tsv, scripts/run.sh), and
+// one exit status: 0 only when every sample matched the golden model and SystemC reported nothing
+// the bench did not announce. The command line is parsed before, by the program's parse function
+// (options/bench_options.h, which lists the options common to every bench); the runner takes the
+// common part of it:
 //
-//   --vcd <stem>          write <stem>.vcd (default: the program's traces/<name>; in random mode
-//                         only when given)
-//   --no-vcd              write no VCD
-//   --summary <file>      append summary rows (default: $SHADING_SUMMARY; none if empty)
-//   --mode saturate|wrap  ADD11 overflow (specular devices only)
-//   --seed S              seed of every random draw (default 1)
-//   --random N            random differential mode: N random stimuli against the golden model
-//   --inject-mismatch K   (hidden, for the tests) corrupt the golden value of sample K
-//   --inject-count C      (hidden) ... and of the C - 1 samples after it (default 1)
-//   --jobs J              split a random run into J independent processes (default: one per core
-//                         for runs of 100 000 stimuli or more); bench_jobs.h
+//   bench_options o = ...;                        // from parse_<program>(argc, argv, ...)
+//   bench_runner run("ua60553", o);
+//   if (auto rc = run.start(argc, argv)) return *rc;   // a split random run (bench_jobs.h) ends here
 #pragma once
-
-#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cstdint>
@@ -36,13 +28,12 @@
 
 #include "common/bench_jobs.h"
 #include "common/exit_status.h"
+#include "options/bench_options.h"
 #include "common/report_log.h"
 #include "core/trace.h"
 #include "formats/fixed_point.h"
 
 namespace shading::tb {
-
-inline constexpr std::size_t no_injection = std::numeric_limits<std::size_t>::max();
 
 // One row of out/summary.tsv: bench, case, samples, mismatches, max_error, cycles_per_pixel, note.
 struct summary_row {
@@ -78,74 +69,46 @@ inline void append_summary(const std::string& path, const summary_row& r) {
 
 class bench_runner {
 public:
-    // `bench` names the program in messages and summary rows; `default_vcd` is the stem written
-    // when neither --vcd nor --no-vcd is given; `with_mode` adds --mode (the specular devices).
-    bench_runner(std::string bench, const std::string& description, std::string default_vcd, bool with_mode = false)
-        : app(description), bench_(std::move(bench)), vcd_(std::move(default_vcd)) {
-        if (const char* s = std::getenv("SHADING_SUMMARY")) summary_ = s;
-        app.add_option("--vcd", vcd_, "write <stem>.vcd (default " + vcd_ + "; random mode: only when given)");
-        app.add_flag("--no-vcd", no_vcd_, "write no VCD");
-        app.add_option("--summary", summary_, "append TSV summary rows here (default: $SHADING_SUMMARY)");
-        if (with_mode)
-            app.add_option("--mode", mode_name_, "ADD11 overflow: saturate (default) or wrap (patent-faithful)")
-                ->check(CLI::IsMember({"saturate", "wrap"}));
-        app.add_option("--seed", seed_, "seed of the random stimuli (default 1)");
-        app.add_option("--random", random_, "random differential mode: N random stimuli against the golden model")
-            ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 40));
-        // Hidden (empty group): the CI proves with it that a mismatch makes the program fail.
-        app.add_option("--inject-mismatch", inject_, "corrupt the golden value of sample K (0-based)")->group("");
-        app.add_option("--inject-count", inject_count_, "corrupt C samples from K on (256 must not exit 0)")->group("");
-        app.add_option("--jobs", jobs_, "random mode: J independent processes (default: one per core from 100000 stimuli)")
-            ->check(CLI::Range(1u, 1024u));
-    }
+    // `bench` names the program in messages and summary rows; `options` is the parsed command line.
+    bench_runner(std::string bench, bench_options options) : bench_(std::move(bench)), o_(std::move(options)) {}
 
-    CLI::App app;
-
-    // Parses the command line and installs the report handler. Returns an exit status when the
-    // program must stop here (--help, a bad option), nothing when it runs.
-    std::optional<int> parse(int argc, char* argv[]) {
-        try {
-            app.parse(argc, argv);
-        } catch (const CLI::ParseError& e) {
-            return cli_exit(app, e);
-        }
-        if (random_ > 0 && app.count("--vcd") == 0) no_vcd_ = true;  // 10^7 stimuli make a huge VCD
-        if (random_ > 0) {
-            std::string csv;
-            if (const auto* o = app.get_option_no_throw("--csv"); o != nullptr && o->count() > 0) csv = o->as<std::string>();
-            const split_plan plan = plan_split(random_, app.count("--jobs") > 0 ? jobs_ : 0, seed_, inject_,
-                                               inject_count_, app.count("--vcd") > 0);
-            if (plan.jobs > 1) return run_split(plan, bench_, argc, argv, summary_, csv);
+    // Starts the run: a random run split into processes (bench_jobs.h) re-runs this program's own
+    // argv and returns the exit status here; otherwise the report handler is installed and the
+    // program simulates (nothing returned).
+    std::optional<int> start(int argc, char* argv[]) {
+        if (o_.random > 0) {
+            const split_plan plan = plan_split(o_.random, o_.jobs, o_.seed, o_.inject, o_.inject_count, o_.vcd_given);
+            if (plan.jobs > 1) return run_split(plan, bench_, argc, argv, o_.summary, o_.csv);
         }
         report_log::install();
         return std::nullopt;
     }
 
     const std::string& bench() const { return bench_; }
-    bool random() const { return random_ > 0; }
-    uint64_t random_count() const { return random_; }
-    uint64_t seed() const { return seed_; }
-    std::size_t inject() const { return inject_; }
-    std::size_t inject_count() const { return inject_count_; }
-    const std::string& summary_path() const { return summary_; }
-    const std::string& mode_name() const { return mode_name_; }
-    overflow_mode mode() const { return mode_name_ == "wrap" ? overflow_mode::wrap : overflow_mode::saturate; }
-    bool vcd() const { return !no_vcd_; }
+    bool random() const { return o_.random > 0; }
+    uint64_t random_count() const { return o_.random; }
+    uint64_t seed() const { return o_.seed; }
+    std::size_t inject() const { return o_.inject; }
+    std::size_t inject_count() const { return o_.inject_count; }
+    const std::string& summary_path() const { return o_.summary; }
+    const std::string& mode_name() const { return o_.mode; }
+    overflow_mode mode() const { return o_.mode == "wrap" ? overflow_mode::wrap : overflow_mode::saturate; }
+    bool vcd() const { return !o_.no_vcd; }
     // A default stem chosen after parsing (e.g. by a device choice); --vcd still wins.
     void default_vcd(const std::string& stem) {
-        if (app.count("--vcd") == 0) vcd_ = stem;
+        if (!o_.vcd_given) o_.vcd = stem;
     }
-    const std::string& vcd_stem() const { return vcd_; }
+    const std::string& vcd_stem() const { return o_.vcd; }
 
     // Traces the whole bench into the VCD (unless --no-vcd), runs the simulation up to `limit`
     // (or until the stimulus calls sc_stop) and returns whether the stimulus finished.
     template <typename Bench>
     bool simulate(Bench& bench, const sc_core::sc_time& limit = sc_core::sc_time(1, sc_core::SC_SEC)) {
         std::unique_ptr<vcd_file> vcd;
-        if (!no_vcd_) {
-            const auto dir = std::filesystem::path(vcd_).parent_path();
+        if (!o_.no_vcd) {
+            const auto dir = std::filesystem::path(o_.vcd).parent_path();
             if (!dir.empty()) std::filesystem::create_directories(dir);  // traces/ in a fresh tree
-            vcd = std::make_unique<vcd_file>(vcd_);
+            vcd = std::make_unique<vcd_file>(o_.vcd);
             vcd->trace(bench);
         }
         const auto t0 = std::chrono::steady_clock::now();
@@ -159,7 +122,7 @@ public:
     }
     double wall_seconds() const { return wall_; }
 
-    void summary(const summary_row& r) const { append_summary(summary_, r); }
+    void summary(const summary_row& r) const { append_summary(o_.summary, r); }
 
     // The random run's figures: printed, and one summary row.
     void report_random(const std::string& case_name, std::size_t samples, std::size_t mismatches,
@@ -167,9 +130,9 @@ public:
         const double rate = wall_ > 0 ? static_cast<double>(samples) / wall_ : 0.0;
         std::printf("%s random (%s): %zu samples, %zu mismatches, %.0f %s/s (%.2f s simulated, seed %llu)\n",
                     bench_.c_str(), case_name.c_str(), samples, mismatches, rate, unit.c_str(), wall_,
-                    static_cast<unsigned long long>(seed_));
+                    static_cast<unsigned long long>(o_.seed));
         summary({bench_, case_name, samples, mismatches, "-", "-",
-                 "random differential vs golden, seed " + std::to_string(seed_) + ", " + fmt_number(rate, 3) +
+                 "random differential vs golden, seed " + std::to_string(o_.seed) + ", " + fmt_number(rate, 3) +
                      " " + unit + "/s"});
     }
 
@@ -181,16 +144,14 @@ public:
         const bool ok = mismatches == 0 && unexpected == 0 && finished_ && other_failures == 0 && samples > 0;
         std::printf("%s: %zu samples, %zu mismatches, %u unexpected reports%s -> %s\n", bench_.c_str(), samples,
                     mismatches, unexpected, other_failures ? ", failed checks" : "", ok ? "PASS" : "FAIL");
-        if (!no_vcd_) std::printf("VCD: %s.vcd\n", vcd_.c_str());
+        if (!o_.no_vcd) std::printf("VCD: %s.vcd\n", o_.vcd.c_str());
         return ok ? 0 : 1;
     }
 
 private:
-    std::string bench_, vcd_, summary_, mode_name_ = "saturate";
-    bool no_vcd_ = false, finished_ = false;
-    uint64_t seed_ = 1, random_ = 0;
-    unsigned jobs_ = 1;
-    std::size_t inject_ = no_injection, inject_count_ = 1;
+    std::string bench_;
+    bench_options o_;
+    bool finished_ = false;
     double wall_ = 0.0;
 };
 

@@ -2,7 +2,7 @@
 // sample sets) through the five coefficient units (case 1 / case 2 x shift-and-add / exact
 // division by 3, quadratic), one interval per clock, checks each against its golden model, and
 // writes the relative error that the shift-and-add /3 causes in A and C (CSV).
-// Options common to every bench: bench_runner.h.
+// Options common to every bench: options/bench_options.h.
 //
 //   interp_coef_tb                      VCD traces/interp_coef.vcd, view traces/interp_coef.gtkw
 //   interp_coef_tb --csv out/interp_div3.csv --extra-sets 2000 --no-vcd
@@ -20,16 +20,12 @@ using namespace shading;
 using namespace shading::tb;
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("interp_coef", "The interpolation paper's coefficient units: raster-line samples against the golden models",
-                     "traces/interp_coef");
-    std::string csv_path;
-    unsigned width = 200, m = 5, n_extra = 200;
-    run.app.add_option("--csv", csv_path, "write per-interval A and C (real, shift-and-add, exact) here");
-    run.app.add_option("--width", width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
-    run.app.add_option("--m", m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, 8u));
-    run.app.add_option("--extra-sets", n_extra, "random sample sets streamed after the line (fixed seed 2024)")
-        ->check(CLI::Range(0u, 1000000u));
-    if (auto rc = run.parse(argc, argv)) return *rc;
+    interp_coef_options o;
+    if (auto rc = parse_interp_coef(argc, argv, o)) return *rc;
+    bench_runner run("interp_coef", o.bench);
+    if (auto rc = run.start(argc, argv)) return *rc;
+    const std::string& csv_path = o.csv_path;
+    const unsigned width = o.width, m = o.m, n_extra = o.n_extra;
 
     if (run.random()) {
         coef_bench bench("tb", random_coef_inputs(run.random_count(), run.seed()));

@@ -3,7 +3,7 @@
 // against the golden model and against the Horner unit's golden result at the same t (documented
 // bound 0..2 LSB of Q16.16), measures the error against the exact intensity; writes a CSV.
 // Fails on a mismatch, a pixel outside the bound, or an unexpected report. Options common to every
-// bench: bench_runner.h.
+// bench: options/bench_options.h.
 //
 //   interp_fd_tb                        VCD traces/interp_fd.vcd, view traces/interp_fd.gtkw
 //   interp_fd_tb --m 6 --csv out/interp_fd.csv
@@ -21,10 +21,7 @@ using namespace shading::tb;
 
 namespace {
 
-struct options {
-    std::string csv_path;
-    unsigned width = 200, m = 5;
-};
+using options = interp_fd_options;
 
 template <unsigned M>
 int run_m(bench_runner& run, const options& o) {
@@ -93,13 +90,10 @@ int run_m(bench_runner& run, const options& o) {
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("interp_fd", "Forward-difference evaluator: one raster line, every variant, against the golden models",
-                     "traces/interp_fd");
     options o;
-    run.app.add_option("--csv", o.csv_path, "per-pixel CSV: unit,variant,pixel,t,exact,value,error");
-    run.app.add_option("--width", o.width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
-    run.app.add_option("--m", o.m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, interp::m_max));
-    if (auto rc = run.parse(argc, argv)) return *rc;
+    if (auto rc = parse_interp_fd(argc, argv, o)) return *rc;
+    bench_runner run("interp_fd", o.bench);
+    if (auto rc = run.start(argc, argv)) return *rc;
     switch (o.m) {
         case 2: return run_m<2>(run, o);
         case 3: return run_m<3>(run, o);

@@ -3,7 +3,7 @@
 // exact /3, quadratic), back to back through the iterative Horner unit of the interpolation paper, Fig. 4.
 // Checks every micro-step against the golden model, measures clocks per pixel and the error
 // against the exact intensity; writes a per-pixel CSV. Options common to every bench:
-// bench_runner.h.
+// options/bench_options.h.
 //
 //   interp_horner_tb                    VCD traces/interp_horner.vcd, view traces/interp_horner.gtkw
 //   interp_horner_tb --csv out/interp_horner.csv
@@ -28,20 +28,13 @@ int run_bench(bench_runner& run, const std::string& csv_path, unsigned width, un
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("interp_horner",
-                     "The interpolation paper's iterative Horner unit: one raster line, every variant, against the golden model",
-                     "traces/interp_horner");
-    std::string csv_path;
-    unsigned width = 200, m = 5, gap = 0;
-    run.app.add_option("--csv", csv_path, "per-pixel CSV: unit,variant,pixel,t,exact,value,error");
-    run.app.add_option("--width", width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
-    run.app.add_option("--m", m, "interval of 2^m pixels, t = k/2^m")->check(CLI::Range(interp::m_min, 8u));
-    run.app.add_option("--gap", gap, "idle clocks after each result (default 0: back to back)")
-        ->check(CLI::Range(0u, 100u));
-    std::string level = "block";
-    run.app.add_option("--abstraction", level, "block (Fig. 4's blocks, default) or fast (the same pins, one process)")
-        ->check(CLI::IsMember({"block", "fast"}));
-    if (auto rc = run.parse(argc, argv)) return *rc;
+    interp_horner_options o;
+    if (auto rc = parse_interp_horner(argc, argv, o)) return *rc;
+    bench_runner run("interp_horner", o.bench);
+    if (auto rc = run.start(argc, argv)) return *rc;
+    const std::string& csv_path = o.csv_path;
+    const unsigned width = o.width, m = o.m, gap = o.gap;
+    const std::string& level = o.abstraction;
     std::cout << "interp_horner: abstraction " << level << '\n';
     return level == "fast" ? run_bench<horner_bench_fast>(run, csv_path, width, m, gap)
                            : run_bench<horner_bench>(run, csv_path, width, m, gap);

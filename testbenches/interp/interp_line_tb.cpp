@@ -3,14 +3,13 @@
 // forward-difference evaluator, checks every pixel and `last` against the golden chain
 // (golden_cubic_coefs + golden_fd), measures max |I - exact| against the line's exact intensity and
 // the clocks from the first samples to the last pixel. Appends one summary row to $SHADING_SUMMARY.
-// Options common to every bench: bench_runner.h.
+// Options common to every bench: options/bench_options.h.
 //
 //   interp_line_tb                           VCD traces/interp_line.vcd, view traces/interp_line.gtkw
 //   interp_line_tb --case 2 --div3 exact --m 4 --no-vcd
 //   interp_line_tb --random 1000000 --seed 7  random samples, intervals of 1..2^m pixels back to back
 #include <cmath>
 #include <iostream>
-#include <map>
 
 #include "common/bench_runner.h"
 #include "interp/interp_line.h"
@@ -21,10 +20,7 @@ using namespace shading::tb;
 
 namespace {
 
-struct options {
-    unsigned width = 200, m = 5, sample_case = 1;
-    interp::div3_mode div3 = interp::div3_mode::shift_add;
-};
+using options = interp_line_options;
 
 template <unsigned M, interp::sample_set SET, interp::div3_mode DIV>
 int run_variant(bench_runner& run, const options& o) {
@@ -80,19 +76,10 @@ int run_m(bench_runner& run, const options& o) {
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("interp_line",
-                     "Raster-line interpolator (coefficient unit + forward differences) against the golden chain",
-                     "traces/interp_line");
     options o;
-    const std::map<std::string, interp::div3_mode> div3_names{{"shift-add", interp::div3_mode::shift_add},
-                                                              {"exact", interp::div3_mode::exact}};
-    run.app.add_option("--width", o.width, "pixels of the raster line")->check(CLI::Range(1u, 100000u));
-    run.app.add_option("--m", o.m, "interval of 2^m pixels")->check(CLI::Range(interp::m_min, interp::m_max));
-    run.app.add_option("--case", o.sample_case, "sample set: 1 (t = 0, 1/4, 1/2, 1) or 2 (t = 0, 1/2, 3/4, 1)")
-        ->check(CLI::Range(1u, 2u));
-    run.app.add_option("--div3", o.div3, "division by 3: shift-add (the interpolation paper, Fig. 2) or exact")
-        ->transform(CLI::CheckedTransformer(div3_names, CLI::ignore_case));
-    if (auto rc = run.parse(argc, argv)) return *rc;
+    if (auto rc = parse_interp_line(argc, argv, o)) return *rc;
+    bench_runner run("interp_line", o.bench);
+    if (auto rc = run.start(argc, argv)) return *rc;
     switch (o.m) {
         case 2: return run_m<2>(run, o);
         case 3: return run_m<3>(run, o);

@@ -9,8 +9,6 @@
 // against the interpolation paper's /3 on a partial sum, with either divider: the error of A and C against the
 // real coefficients of the same Q8.8 samples (the line's intervals, and uniform random samples)
 // and the line's NMSE.
-#include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "common/exit_status.h"
+#include "options/tool_options.h"
 #include "formats/fixed_point.h"
 #include "interp/interp_line.h"
 
@@ -119,17 +117,11 @@ struct coef_error {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    CLI::App app{"NMSE of the interpolation paper's interpolation against the exact intensity, per interval length"};
-    std::string csv_path = "out/interp_nmse.csv";
-    unsigned width = 200;
-    app.add_option("--csv", csv_path, "output CSV");
-    app.add_option("--width", width, "pixels of the raster line")->check(CLI::Range(8u, 100000u));
-    std::string grouping_path;
-    app.add_option("--grouping-csv", grouping_path,
-                   "CSV of the /3 grouping study (default: interp_div3_grouping.csv beside --csv)");
-    SHADING_CLI_PARSE(app, argc, argv);
-    if (grouping_path.empty())
-        grouping_path = (std::filesystem::path(csv_path).parent_path() / "interp_div3_grouping.csv").string();
+    interp_study_options o;
+    if (auto rc = parse_interp_study(argc, argv, o)) return *rc;
+    const std::string& csv_path = o.csv;
+    const std::string& grouping_path = o.grouping_csv;
+    const unsigned width = o.width;
 
     std::ofstream csv(csv_path);
     csv << "m,N,variant,tau,nmse,max_abs_err,quad_intervals,intervals,horner_cycles_per_pixel\n";

@@ -9,7 +9,7 @@ if(TARGET shading_pipeline)
   add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_setup.cpp
                  ${CMAKE_CURRENT_SOURCE_DIR}/render_run.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_report.cpp
                  ${CMAKE_CURRENT_SOURCE_DIR}/render_images.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_sweep.cpp)
-  target_link_libraries(render_pipeline PRIVATE shading_pipeline shading_tb_common CLI11::CLI11 nlohmann_json::nlohmann_json)
+  target_link_libraries(render_pipeline PRIVATE shading_pipeline shading_tb_common shading_render_options nlohmann_json::nlohmann_json)
   # The default --data-dir: this source tree (the head scan lives in data/head/).
   target_compile_definitions(render_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(render_pipeline PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "options/render_options.h"
 #include "pipeline/pipeline.h"
 #include "scene/image.h"
 #include "scene/raster.h"
@@ -26,42 +27,8 @@ namespace shading::render_program {
 using json = nlohmann::json;
 using namespace shading::pipeline;
 
-// The largest --size: a frame costs about 250 bytes per pixel here (depth and triangle buffers, the
-// reference and hardware images as doubles, the frames' codes, the maps), so 4096 x 4096 needs
-// about 4 GB; beyond that the program refuses rather than failing half-way through.
-constexpr unsigned max_size = 4096;
-
 // True while a progress line on a terminal has no newline yet (an error message then starts a new line).
 extern bool progress_open;
-
-struct options {
-    std::string scene = "head", data_dir = SHADING_SOURCE_DIR, out = "out/pipeline";
-    unsigned size = 256;
-    std::string light;                  // "azimuth,elevation" in degrees; empty: the scene's own
-    int n = -1;                         // -1: the scene's material
-    std::string kd, ks, ambient;        // "v" or "r,g,b" in [0, 1]; empty: the scene's material
-    std::string length = "fixed", degree = "cubic", eval = "horner", set = "case1", div3 = "shift_add";
-    std::string unit = "stepped";       // the geometry side's unit: stepped or scratch
-    plan_config pc;                     // the numeric and boolean settings, defaults from pipeline.h
-    std::string device = "patent", mode = "saturate";
-    bool device_given = false;          // --sweep: without --device, the grid's devices
-    bool sim = true, images = true;
-    std::string abstraction = "block";  // the SystemC pipeline's level: block or fast (interp/abstraction.h)
-    std::string vcd, json_name = "report.json", md_name = "report.md";
-    double error_scale = 2.0, error_scale_total = 16.0;
-    bool inject_mismatch = false;       // (hidden, for the tests) corrupt one golden pixel before the comparison
-    // --sweep
-    bool sweep = false;
-    unsigned jobs = 0;
-    std::string grid = "small", csv;
-    std::string shard;                  // "I/N": only the configurations i with i % N == I - 1
-    bool emit_jobs = false;             // print one command line per configuration instead of running
-    // --grid claims: the lists (a light is "azimuth,elevation")
-    std::vector<std::string> claims_scenes{"head", "sphere", "torus"}, claims_lights{"-40,25", "35,20", "10,60"};
-    std::vector<int> claims_ns{5, 20, 100, 500};
-    std::vector<unsigned> claims_sizes{512, 1024};
-    std::vector<std::string> argv;      // the command line, for --emit-jobs
-};
 
 double seconds_since(std::chrono::steady_clock::time_point t0);
 plan_config plan_config_of(const options& o);

@@ -16,7 +16,7 @@ endif()
 # The soak of the fast pipeline (scripts/soak.sh; opt-in, no ctest entry: 1000 renders take minutes).
 if(TARGET shading_pipeline_sim)
   add_executable(soak_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/soak_pipeline.cpp)
-  target_link_libraries(soak_pipeline PRIVATE shading_pipeline_sim shading_pipeline CLI11::CLI11)
+  target_link_libraries(soak_pipeline PRIVATE shading_pipeline_sim shading_pipeline shading_options)
   target_compile_definitions(soak_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   set_target_properties(soak_pipeline PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
 endif()

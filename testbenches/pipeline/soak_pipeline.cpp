@@ -6,13 +6,12 @@
 // the tests read it): that vector's growth is the harness's, printed and taken off.
 //   soak_pipeline [--renders R] [--size S]     exit 0: no mismatch and the resident memory net of
 //                                                 the write log within 5 % of the first render's
-#include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <fstream>
 #include <string>
 #include <systemc>  // declares sc_main extern "C", as libsystemc needs it
 
+#include "options/tool_options.h"
 #include "pipeline/pipeline.h"
 #include "pipeline_sim.h"
 #include "scene/raster.h"
@@ -31,11 +30,9 @@ int sc_main(int, char*[]) { return 2; }  // not used: main() below drives simula
 
 int main(int argc, char* argv[]) {
     using namespace shading;
-    CLI::App app{"The head rendered R times in one process by the fast SystemC pipeline; resident memory"};
-    unsigned renders = 1000, size = 128;
-    app.add_option("--renders", renders, "renders of the head")->check(CLI::Range(2u, 100000u));
-    app.add_option("--size", size, "image width and height")->check(CLI::Range(8u, 1024u));
-    CLI11_PARSE(app, argc, argv);
+    tb::soak_options opt;
+    if (auto rc = tb::parse_soak(argc, argv, opt)) return *rc;  // help 0, bad usage 2
+    const unsigned renders = opt.renders, size = opt.size;
 
     const scene::world s = scene::builtin_scene("head", SHADING_SOURCE_DIR, size, size);
     const pipeline::plan_config cfg;

@@ -4,8 +4,6 @@
 // several devices' images above their error maps, all at one --error-scale.
 //   build/bin/render_reference --scene head --size 256 --device minimax --out out/scene
 //   build/bin/render_reference --scene head --size 512 --n 20 --compare patent,squared --out out/scene/compare
-#include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +14,7 @@
 #include <vector>
 
 #include "common/exit_status.h"
+#include "options/tool_options.h"
 #include "scene/image.h"
 #include "scene/raster.h"
 #include "scene/shade.h"
@@ -39,32 +38,13 @@ void print_counts(const char* what, const render_stats& st) {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    CLI::App app{"Per-pixel reference renders (Phong, and shading through a specular device's golden model) to PNG"};
-    std::string scene_arg = "head", out_dir = "out/scene", device_arg = "minimax", mode_arg = "saturate";
-    std::string data_dir = SHADING_SOURCE_DIR;
-    unsigned size = 256;
-    unsigned n_override = 0;  // 0: the material's own
-    double err_scale = 8.0, depth_step_arg = 0.02;
-    app.add_option("--scene", scene_arg, "built-in scene (sphere, torus, head) or a path to an OBJ file");
-    app.add_option("--size", size, "image width and height in pixels")->check(CLI::Range(1u, 8192u));
-    std::vector<std::string> compare_arg;
-    // Names, ranges and numbers are checked by the parser: any bad one is bad usage (exit 2).
-    const auto devices = CLI::IsMember({"patent", "minimax", "rom_matched", "ua22802", "squared"});
-    app.add_option("--device", device_arg, "specular device: patent, minimax, rom_matched, ua22802, squared")
-        ->check(devices);
-    app.add_option("--compare", compare_arg,
-                   "devices (comma-separated) for compare.png: Phong and their images above their error maps")
-        ->delimiter(',')
-        ->check(devices);
-    app.add_option("--mode", mode_arg, "overflow mode of the device's ADD11: saturate or wrap")
-        ->check(CLI::IsMember({"saturate", "wrap"}));
-    app.add_option("--n", n_override, "override the material's exponent n (1..1000)")->check(CLI::Range(1u, 1000u));
-    app.add_option("--error-scale", err_scale, "8-bit error shown as white in the heat map")->check(CLI::PositiveNumber);
-    app.add_option("--depth-step", depth_step_arg, "depth jump (world units) that splits a raster line")
-        ->check(CLI::PositiveNumber);
-    app.add_option("--out", out_dir, "output folder");
-    app.add_option("--data-dir", data_dir, "repository root holding data/head/ (for the built-in head)");
-    SHADING_CLI_PARSE(app, argc, argv);
+    tb::render_reference_options o;
+    if (auto rc = tb::parse_render_reference(argc, argv, o)) return *rc;  // names, ranges, numbers: exit 2
+    const std::string &scene_arg = o.scene, &out_dir = o.out, &device_arg = o.device, &mode_arg = o.mode;
+    const std::string& data_dir = o.data_dir;
+    const unsigned size = o.size, n_override = o.n;
+    const double err_scale = o.error_scale, depth_step_arg = o.depth_step;
+    const std::vector<std::string>& compare_arg = o.compare;
 
     // A name that is no file and does not end in .obj is taken as a built-in scene's name: an unknown
     // one is bad usage, reported with the list of names. A missing or malformed OBJ file is a failure.

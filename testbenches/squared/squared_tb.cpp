@@ -1,7 +1,7 @@
 // Squared-quadratic device testbench program: replays Fig. 3 with the squaring stage's clock (load
 // n and k_s*I through their strobes, then stream cos values on strobe 17, 13 clocks per pixel),
 // checks every output validated by output 29 against the golden model and measures the device
-// against cos^n. Options common to every bench: bench_runner.h.
+// against cos^n. Options common to every bench: options/bench_options.h.
 //
 //   squared_tb                       a sphere's raster line at n = 10, 100 and 1000, VCD in traces/squared.vcd
 //   squared_tb --sweep --no-vcd      every cos code 0..1.0 for n = 1, 3, 10, 100, 512, 1000
@@ -22,13 +22,7 @@ using namespace shading::tb;
 
 namespace {
 
-struct options {
-    bool sweep = false;
-    std::vector<unsigned> ns;
-    unsigned scene_pixels = 48;
-    double clk_ns = 20;
-    std::string abstraction = "block";
-};
+using options = squared_options;
 
 // One surface per n, white light (k_s*I = 255) on R so the relative error is read at full scale;
 // G and B at other levels to exercise all three multipliers. Or the random stream.
@@ -92,21 +86,10 @@ int run_device(bench_runner& run, options& o) {
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("squared", "Squared-quadratic specular device: Fig. 3 with its clock, against the golden model",
-                     "traces/squared", true);
     options o;
-    run.app.add_flag("--sweep", o.sweep, "stream every cos code 0..0x8000 instead of a scene line");
-    run.app.add_option("--n", o.ns, "specular exponents (default: 10 100 1000 for the scene, 1 3 10 100 512 1000 "
-                                    "for --sweep)")
-        ->check(CLI::Range(0u, 1023u));
-    run.app.add_option("--scene-pixels", o.scene_pixels, "pixels of the sphere's raster line")->check(CLI::Range(2u, 100000u));
-    run.app.add_option("--clk-ns", o.clk_ns, "the squaring stage's clock period (strobe 17: 12 clocks low, 1 high)")
-        ->check(CLI::Range(1.0, 1000.0));
-    run.app.add_option("--abstraction", o.abstraction,
-                       "device model: block (every block, per-block waveform) or fast (one process at the pins, "
-                       "the same pin timing; squared/squared_fast.h)")
-        ->check(CLI::IsMember({"block", "fast"}));
-    if (auto rc = run.parse(argc, argv)) return *rc;
+    if (auto rc = parse_squared(argc, argv, o)) return *rc;
+    bench_runner run("squared", o.bench);
+    if (auto rc = run.start(argc, argv)) return *rc;
     if (o.abstraction != "block") run.default_vcd("traces/squared_" + o.abstraction);
     report_log::get().expect(msg::input);  // n = 0 or n > 1000 on the command line: documented
 

@@ -9,8 +9,6 @@
 //   rom_fraction_sweep.csv  the measurement that fixed the ROM word's fraction bits
 //   hw_cost.csv             ROM bits, multiplier cells and adder bits per design
 // and appends one summary row per method to $SHADING_SUMMARY.
-#include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "common/exit_status.h"
+#include "options/tool_options.h"
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
@@ -120,16 +118,10 @@ std::vector<cost> costs() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    CLI::App app{"accuracy study of the quadratic BRDF, the UA 22802 / UA 60553 devices and the squared-quadratic law"};
-    std::string out_dir = "out", data_dir = SHADING_SOURCE_DIR;
-    unsigned fig2_n = 10, size = 512, n_max = 1000;
-    app.add_option("--out", out_dir, "output directory");
-    app.add_option("--fig2-n", fig2_n, "n of the Fig. 2 curve")->check(CLI::Range(1u, 1000u));
-    app.add_option("--n-max", n_max, "study n in [1, n-max] (a short run for the tests)")->check(CLI::Range(1u, 1000u));
-    app.add_option("--size", size, "the head's image size for the cos distribution")->check(CLI::Range(16u, 4096u));
-    app.add_option("--data-dir", data_dir, "repository root holding data/head/");
-    SHADING_CLI_PARSE(app, argc, argv);
-    fig2_n = std::min(fig2_n, n_max);
+    shading::tb::accuracy_study_options o;
+    if (auto rc = shading::tb::parse_accuracy_study(argc, argv, o)) return *rc;  // fig2_n already at most n_max
+    const std::string &out_dir = o.out, &data_dir = o.data_dir;
+    const unsigned fig2_n = o.fig2_n, size = o.size, n_max = o.n_max;
 
     // The distribution of N.H on the head, and the trial law's a fitted on it for every n.
     // Timing: CPU seconds of this process (the machine is shared) and wall-clock seconds.

@@ -2,22 +2,18 @@
 // whose worst error is below --keep as CSV (best first) and prints the winner; the winner is fixed
 // in src/ua60553_formats.h as ua60553::minimax; the candidate closest to the ROM prototype n by n
 // as ua60553::rom_matched (tests re-check both).
-#include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 
-#include "common/exit_status.h"
+#include "options/tool_options.h"
 #include "generator_search.h"
 
 int main(int argc, char* argv[]) {
-    CLI::App app{"search for the ROM-free a(n) generator with the smallest worst-case error"};
-    std::string csv = "out/generator_search.csv";
-    double keep = 0.06;
-    app.add_option("--csv", csv, "output CSV");
-    app.add_option("--keep", keep, "keep candidates whose worst max rel error is below this");
-    SHADING_CLI_PARSE(app, argc, argv);
+    shading::tb::generator_search_options o;
+    if (auto rc = shading::tb::parse_generator_search(argc, argv, o)) return *rc;
+    const std::string& csv = o.csv;
+    const double keep = o.keep;
 
     using namespace shading::study;
     const grid g;

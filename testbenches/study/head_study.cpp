@@ -15,8 +15,6 @@
 // and prints whether the devices meet the image targets (NMSE <= 1e-6 at n = 20, <= 1e-5 for every
 // n of the exponents sweep 2..500).
 //   build/bin/head_study --out out
-#include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,6 +26,7 @@
 #include <vector>
 
 #include "common/exit_status.h"
+#include "options/tool_options.h"
 #include "head_surface.h"
 #include "scene/image.h"
 #include "scene/shade.h"
@@ -77,19 +76,11 @@ double worst_over(const std::vector<unsigned>& ns, const std::vector<scene::imag
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    CLI::App app{"the head per device and n, and the squared-quadratic device's fit"};
-    std::string out_dir = "out", data_dir = SHADING_SOURCE_DIR;
-    unsigned size = 512, scan_max = 1000;
-    std::vector<unsigned> ns{2, 5, 10, 20, 50, 100, 200, 500, 1000};
-    app.add_option("--out", out_dir, "output directory");
-    app.add_option("--size", size, "the head's image size")->check(CLI::Range(16u, 4096u));
-    app.add_option("--n", ns, "exponents to render (comma-separated, 1..1000)")->delimiter(',')->check(CLI::Range(1u, 1000u));
-    app.add_option("--data-dir", data_dir, "repository root holding data/head/");
-    app.add_option("--scan-max", scan_max,
-                   "the baseline and every bend variant (the device is s2) against Phong for every n in [1, scan-max] "
-                   "(0: none)")
-        ->check(CLI::Range(0u, 1000u));
-    SHADING_CLI_PARSE(app, argc, argv);  // an n outside 1..1000 is bad usage (exit 2)
+    shading::tb::head_study_options o;
+    if (auto rc = shading::tb::parse_head_study(argc, argv, o)) return *rc;  // an n outside 1..1000 is bad usage (exit 2)
+    const std::string &out_dir = o.out, &data_dir = o.data_dir;
+    const unsigned size = o.size, scan_max = o.scan_max;
+    const std::vector<unsigned>& ns = o.ns;
 
     try {
         const auto t0 = std::chrono::steady_clock::now();

@@ -6,13 +6,11 @@
 // the loop (under 2 % of the work); a mismatch exits 1. The timed loop and the report are
 // tlm_initiator.h's, shared with bench_line_tlm. --device takes render_pipeline's names.
 //   bench_specular_tlm [--device patent|minimax|rom_matched|ua22802|squared] [--lt-pixels N] [--pin-pixels N]
-#include <CLI/CLI.hpp>
-
 #include <array>
 #include <string>
 #include <vector>
 
-#include "common/exit_status.h"
+#include "options/tool_options.h"
 #include "golden/specular_golden.h"
 #include "golden/squared_golden.h"
 #include "golden/ua22802_golden.h"
@@ -75,15 +73,10 @@ constexpr auto sat = overflow_mode::saturate;
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    CLI::App app{"Throughput of the specular TLM-2.0 wrapper, loosely timed and pin-accurate"};
-    std::string device = "patent";
-    std::size_t lt_px = 100'000'000, pin_px = 200'000;
-    app.add_option("--device", device, "specular device: patent, minimax, rom_matched, ua22802, squared")
-        ->check(CLI::IsMember({"patent", "minimax", "rom_matched", "ua22802", "squared"}));
-    const auto pixels = CLI::Range(std::size_t{1}, std::size_t{1'000'000'000'000});
-    app.add_option("--lt-pixels", lt_px, "pixels shaded loosely timed (whole lines)")->check(pixels);
-    app.add_option("--pin-pixels", pin_px, "pixels shaded pin-accurate (whole lines)")->check(pixels);
-    SHADING_CLI_PARSE(app, argc, argv);
+    tb::bench_specular_tlm_options o;
+    if (auto rc = tb::parse_bench_specular_tlm(argc, argv, o)) return *rc;
+    const std::string& device = o.device;
+    const std::size_t lt_px = o.lt_pixels, pin_px = o.pin_pixels;
     if (device == "patent")
         return bench<specular_tlm_ua60553>("UA 60553", lt_px, pin_px, [](uint64_t c, const std::array<uint64_t, 3>& k) {
             return golden_ua60553(bench_n, c, k, sat).out;

@@ -1,7 +1,7 @@
 // UA 22802 testbench program: streams surfaces (n, k_s*I) and pixels (cos) through the ROM
 // prototype as in UA 60553, Fig. 3, compares every output with the golden model and with cos^n,
 // writes a VCD (open with traces/ua22802.gtkw) and appends one summary row per n to the summary.
-// Options common to every bench: bench_runner.h.
+// Options common to every bench: options/bench_options.h.
 //
 //   ua22802_tb                         8 exponents x 48 pixels, VCD in traces/ua22802.vcd
 //   ua22802_tb --random 100000 --seed 7 --mode wrap
@@ -80,19 +80,13 @@ int run_device(bench_runner& run, const std::vector<unsigned>& ns, unsigned pixe
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("ua22802", "UA 22802 (ROM prototype): Fig. 3 replay against the golden model", "traces/ua22802",
-                     true);
-    unsigned pixels = 48;
-    std::vector<unsigned> ns{1, 2, 3, 8, 32, 128, 512, 1000};
-    run.app.add_option("--pixels", pixels, "pixels per surface (half over [0,1], half where cos^n >= 0.56)")
-        ->check(CLI::Range(2u, 100000u));
-    run.app.add_option("--n", ns, "specular exponents, one surface each")->check(CLI::Range(0u, 1023u));
-    std::string abstraction = "block";
-    run.app.add_option("--abstraction", abstraction,
-                       "device model: block (every block of Fig. 1) or fast (one process at the pins; "
-                       "specular/specular_fast.h)")
-        ->check(CLI::IsMember({"block", "fast"}));
-    if (auto rc = run.parse(argc, argv)) return *rc;
+    ua22802_options o;
+    if (auto rc = parse_ua22802(argc, argv, o)) return *rc;
+    bench_runner run("ua22802", o.bench);
+    if (auto rc = run.start(argc, argv)) return *rc;
+    const auto& ns = o.ns;
+    const unsigned pixels = o.pixels;
+    const std::string& abstraction = o.abstraction;
     if (abstraction == "fast") run.default_vcd("traces/ua22802_fast");
     report_log::get().expect(msg::input);  // n = 0 or n > 1000 on the command line: documented
 

@@ -1,7 +1,7 @@
 // UA 60553 testbench program: replays Fig. 3 (load n and k_s*I for R, G, B through their strobes,
 // then stream cos values on ctl17), checks every validated output against the golden model and
 // measures the device against cos^n. The generator of a is the patent's (device_ua60553) or a
-// tuned one (device_ua60553_tuned). Options common to every bench: bench_runner.h.
+// tuned one (device_ua60553_tuned). Options common to every bench: options/bench_options.h.
 //
 //   ua60553_tb                       scene line for n = 10 and 100, VCD in traces/ua60553.vcd
 //   ua60553_tb --sweep --no-vcd      every cos code 0..1.0 for n = 1, 10, 100, 512, 1000
@@ -24,15 +24,7 @@ using namespace shading::tb;
 
 namespace {
 
-struct options {
-    std::string generator = "patent";
-    bool sweep = false;
-    std::vector<unsigned> ns;
-    unsigned scene_pixels = 96;
-    double t_low_ns = 15, t_high_ns = 5;
-    std::string abstraction = "block";
-    bool zero_delays = false;
-};
+using options = ua60553_options;
 
 const std::map<std::string, const ua60553::tuned_generator*> tuned{{"minimax", &ua60553::minimax},
                                                                   {"rom_matched", &ua60553::rom_matched}};
@@ -95,24 +87,10 @@ int run_device(bench_runner& run, options& o, const std::string& name, specular_
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    bench_runner run("ua60553", "UA 60553 specular-colour device: Fig. 3 replay against the golden model",
-                     "traces/ua60553", true);
     options o;
-    run.app.add_option("--generator", o.generator,
-                       "generator of a: patent (MUL6 + ADD15 with the patent's constants), minimax or rom_matched "
-                       "(the tuned device)")
-        ->check(CLI::IsMember({"patent", "minimax", "rom_matched"}));
-    run.app.add_flag("--sweep", o.sweep, "stream every cos code 0..0x8000 instead of a scene line");
-    run.app.add_option("--n", o.ns, "specular exponents (default: 10 100 for the scene, 1 10 100 512 1000 for --sweep)");
-    run.app.add_option("--scene-pixels", o.scene_pixels, "pixels of the sphere's raster line")->check(CLI::Range(2u, 100000u));
-    run.app.add_option("--t-low-ns", o.t_low_ns, "ctl17 low phase = settling time T (Fig. 3)")->check(CLI::PositiveNumber);
-    run.app.add_option("--t-high-ns", o.t_high_ns, "ctl17 high phase")->check(CLI::PositiveNumber);
-    run.app.add_option("--abstraction", o.abstraction,
-                       "device model: block (every block of Fig. 1, per-block waveform) or fast (one process at the "
-                       "pins, the same pin timing; specular/specular_fast.h)")
-        ->check(CLI::IsMember({"block", "fast"}));
-    run.app.add_flag("--zero-delays", o.zero_delays, "every block delay 0: the network settles in delta time");
-    if (auto rc = run.parse(argc, argv)) return *rc;
+    if (auto rc = parse_ua60553(argc, argv, o)) return *rc;
+    bench_runner run("ua60553", o.bench);
+    if (auto rc = run.start(argc, argv)) return *rc;
     if (o.generator != "patent" || o.abstraction != "block")
         run.default_vcd("traces/ua60553" + (o.generator != "patent" ? "_" + o.generator : std::string()) +
                         (o.abstraction != "block" ? "_" + o.abstraction : std::string()));

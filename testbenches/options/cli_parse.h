@@ -1,0 +1,44 @@
+// CLI11's parse with the project's exit statuses (common/exit_status.h). Included only by the
+// options library's own sources: CLI11 2.1 is header-only and costs every translation unit that
+// includes it about 100 KB of code and many seconds of compile time, so it is compiled here once.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "common/exit_status.h"
+
+namespace shading::tb {
+
+// --help exits 0 (the help printed), every parse or validation error 2 (CLI11's message printed).
+inline int cli_exit(const CLI::App& app, const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? exit_success : exit_usage;
+}
+
+// CLI11's numeric checks (Range, PositiveNumber) compare, and every comparison with NaN is false, so
+// "nan" passed them (found by fuzz_options); a value that is not a number is bad usage. Added after
+// the range check of every floating-point option.
+inline CLI::Validator not_nan() {
+    return CLI::Validator(
+        [](std::string& s) -> std::string {
+            double v = 0;
+            if (CLI::detail::lexical_cast(s, v) && std::isnan(v)) return "not a number: " + s;
+            return {};
+        },
+        "", "NOT_NAN");
+}
+
+}  // namespace shading::tb
+
+// As CLI11_PARSE (which returns CLI11's own statuses), in a function returning the exit status
+// (an int, or a std::optional<int> holding it).
+#define SHADING_CLI_PARSE(app, argc, argv)                          \
+    do {                                                            \
+        try {                                                       \
+            (app).parse((argc), (argv));                            \
+        } catch (const CLI::ParseError& shading_parse_error_) {     \
+            return ::shading::tb::cli_exit((app), shading_parse_error_); \
+        }                                                           \
+    } while (0)

@@ -1,0 +1,77 @@
+// The command lines of the studies and tools that are not testbenches (interp_study, soak_pipeline,
+// render_reference, bench_specular_tlm, accuracy_study, generator_search, head_study) as plain
+// structs, and one parse function per program, as in bench_options.h: the struct filled, an exit
+// status returned when the program must stop (0 after --help, 2 for bad usage), nothing when it
+// runs. No side effect beyond printing help or the usage error (program_options.cpp, CLI11).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shading::tb {
+
+// The source tree (for data/head/): the default --data-dir, fixed when the options library is built.
+const char* default_data_dir();
+
+// The names --device takes (render_reference, bench_specular_tlm, render_pipeline).
+inline const std::vector<std::string>& device_names() {
+    static const std::vector<std::string> names{"patent", "minimax", "rom_matched", "ua22802", "squared"};
+    return names;
+}
+
+struct interp_study_options {
+    std::string csv = "out/interp_nmse.csv";
+    unsigned width = 200;       // 8..100000
+    std::string grouping_csv;   // empty on the command line: interp_div3_grouping.csv beside --csv
+};
+
+struct soak_options {
+    unsigned renders = 1000;  // 2..100000
+    unsigned size = 128;      // 8..1024
+};
+
+struct render_reference_options {
+    std::string scene = "head", out = "out/scene", device = "minimax", mode = "saturate";
+    std::string data_dir = default_data_dir();
+    unsigned size = 256;             // 1..8192
+    unsigned n = 0;                  // 0: the material's own; else 1..1000
+    double error_scale = 8.0;        // > 0
+    double depth_step = 0.02;        // > 0
+    std::vector<std::string> compare;  // device names
+};
+
+struct bench_specular_tlm_options {
+    std::string device = "patent";
+    std::size_t lt_pixels = 100'000'000, pin_pixels = 200'000;  // each 1..10^12
+};
+
+struct accuracy_study_options {
+    std::string out = "out", data_dir = default_data_dir();
+    unsigned fig2_n = 10;   // 1..1000, then at most n_max
+    unsigned size = 512;    // 16..4096
+    unsigned n_max = 1000;  // 1..1000
+};
+
+struct generator_search_options {
+    std::string csv = "out/generator_search.csv";
+    double keep = 0.06;
+};
+
+struct head_study_options {
+    std::string out = "out", data_dir = default_data_dir();
+    unsigned size = 512;       // 16..4096
+    std::vector<unsigned> ns{2, 5, 10, 20, 50, 100, 200, 500, 1000};  // each 1..1000
+    unsigned scan_max = 1000;  // 0..1000
+};
+
+std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);
+std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
+std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
+std::optional<int> parse_bench_specular_tlm(int argc, char** argv, bench_specular_tlm_options& o);
+std::optional<int> parse_accuracy_study(int argc, char** argv, accuracy_study_options& o);
+std::optional<int> parse_generator_search(int argc, char** argv, generator_search_options& o);
+std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o);
+
+}  // namespace shading::tb
