@@ -150,7 +150,7 @@ endif()
 # ---- Included from CMakeLists.txt ----
 shading_check_layers("${PROJECT_SOURCE_DIR}")
 # At build time too, whenever a checked file (or this script) changes: a bad include added after
-# configuring stops the build before anything that links the floor is compiled.
+# configuring stops the build (shading_floor, which every model links, waits for this target).
 _shading_layer_files("${PROJECT_SOURCE_DIR}" _shading_layer_inputs)
 file(GLOB_RECURSE _shading_layer_glob CONFIGURE_DEPENDS LIST_DIRECTORIES false
      ${PROJECT_SOURCE_DIR}/modules/* ${PROJECT_SOURCE_DIR}/src/floor/*
