@@ -20,10 +20,10 @@ function(_write_good_tree root)
   file(WRITE "${root}/src/scene/s.h" "#pragma once\n#include \"golden/g.h\"\n")
   file(WRITE "${root}/src/pipeline/pipeline.h" "#pragma once\n#include \"scene/s.h\"\n")
   file(WRITE "${root}/modules/pipeline/pipe.h" "#pragma once\n")
-  file(WRITE "${root}/modules/m/helper.h" "#pragma once\n")
+  file(WRITE "${root}/modules/m/beside.h" "#pragma once\n")
   file(WRITE "${root}/modules/m/unit.h"
        "#pragma once\n#include <systemc>\n#include \"arith/a.h\"\n#include \"formats/f.h\"\n"
-       "#include \"helper.h\"\n#include \"pipeline/pipe.h\"\n#include \"ua22802_a_rom.h\"\n"
+       "#include \"beside.h\"\n#include \"pipeline/pipe.h\"\n#include \"ua22802_a_rom.h\"\n"
        "// #include \"golden/g.h\"  (a comment, not an include)\n")
 endfunction()
 
