@@ -1,9 +1,14 @@
 # The installed package: `cmake --install <build> --prefix <p>` gives
-#   <p>/include/shading/...          the include root, as modules/ and src/ are in the tree
+#   <p>/include/shading/...          the include root, as modules/, src/floor and src/ are in the tree
 #                                    ("ua60553/ua60553.h", "squared/squared_device.h", "formats/x.h",
-#                                    "golden/x.h"): every device, block, monitor and TLM wrapper
-#   <p>/lib/libshading_golden.a      the golden models (no SystemC): UA 60553, its tuned generators,
-#                                    UA 22802, the squared-quadratic device, square-and-multiply
+#                                    "arith/x.h", "golden/x.h"): every device, block, monitor and TLM
+#                                    wrapper
+#   <p>/lib/libshading_floor.a       the floor's shared arithmetic (no SystemC): each device's bit-exact
+#                                    function (UA 60553, its tuned generators, UA 22802, the
+#                                    squared-quadratic device, the interpolation units, the sample
+#                                    stage), which the fast models and the TLM wrappers call
+#   <p>/lib/libshading_golden.a      the references and the golden models' checks and studies
+#                                    (square-and-multiply; the rest of each golden model is the floor)
 #   <p>/lib/cmake/shading/           find_package(shading CONFIG): shading::modules, ::golden, ...
 #   <p>/lib/pkgconfig/shading.pc     pkg-config: Requires: systemc
 #   <p>/lib/libshading_scene.a, libshading_pipeline.a, shading-scene.pc   when built (tinyobjloader,
@@ -21,14 +26,16 @@ set(SHADING_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/shading)
 # The data root scene::builtin_scene() takes (it reads <root>/data/head/...): share/shading.
 set(SHADING_INSTALL_DATAROOT ${CMAKE_INSTALL_DATADIR}/shading)
 
-# Exported names: shading::formats, shading::golden, shading::modules, shading::ua22802 (the same
-# as shading::modules now that the ROM header sits in the include root), shading::tlm. The same
+# Exported names: shading::formats, shading::floor (the formats and the shared arithmetic),
+# shading::golden, shading::modules (links shading::floor), shading::ua22802 (the same as
+# shading::modules now that the ROM header sits in the include root), shading::tlm. The same
 # names as aliases in the build tree, so add_subdirectory() users can write them too.
 set_target_properties(shading_formats PROPERTIES EXPORT_NAME formats)
+set_target_properties(shading_floor PROPERTIES EXPORT_NAME floor POSITION_INDEPENDENT_CODE ON)
 set_target_properties(shading_golden PROPERTIES EXPORT_NAME golden POSITION_INDEPENDENT_CODE ON)
 set_target_properties(shading_modules PROPERTIES EXPORT_NAME modules)
 set_target_properties(shading_ua22802 PROPERTIES EXPORT_NAME ua22802)
-set(SHADING_EXPORTED shading_formats shading_golden shading_modules shading_ua22802)
+set(SHADING_EXPORTED shading_formats shading_floor shading_golden shading_modules shading_ua22802)
 # --- TLM-2.0 wrappers (modules/tlm): exported as shading::tlm once the target exists.
 # Its headers are under modules/ and installed below with the rest; its include directories must be
 # wrapped in $<BUILD_INTERFACE:...> (or come from shading_modules) for the export to succeed.
@@ -66,14 +73,15 @@ install(TARGETS ${SHADING_EXPORTED} EXPORT shadingTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${SHADING_INSTALL_INCLUDEDIR})
 
-# Public headers: modules/** (every block, monitor, device and wrapper), the number formats, the
-# golden models and references, scene.h (compiled into shading_golden) and the generated ROM. By
-# directory, so a new device's headers (modules/squared, formats/squared_formats.h, ...) come along;
-# scripts/check_package.sh checks a list of them.
+# Public headers: modules/** (every block, monitor, device and wrapper), the floor (the number
+# formats and the shared arithmetic), the golden models and references, scene.h (compiled into
+# shading_golden) and the generated ROM, all in one include root. By directory, so a new device's
+# headers (modules/squared, formats/squared_formats.h, ...) come along; scripts/check_package.sh
+# checks a list of them.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${SHADING_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.h")
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/formats DESTINATION ${SHADING_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/floor/formats ${PROJECT_SOURCE_DIR}/src/floor/arith
+        DESTINATION ${SHADING_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/golden ${PROJECT_SOURCE_DIR}/src/reference
         DESTINATION ${SHADING_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
 install(FILES ${PROJECT_SOURCE_DIR}/src/scene/scene.h DESTINATION ${SHADING_INSTALL_INCLUDEDIR}/scene)

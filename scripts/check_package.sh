@@ -25,7 +25,7 @@ echo "== install $build -> $stage"
 cmake --install "$build" --prefix "$stage" >"$tmp/install.log"
 for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVersion.cmake \
          lib/cmake/shading/shadingTargets.cmake lib/cmake/shading/shadingSceneTargets.cmake \
-         lib/pkgconfig/shading.pc lib/pkgconfig/shading-scene.pc lib/libshading_golden.a \
+         lib/pkgconfig/shading.pc lib/pkgconfig/shading-scene.pc lib/libshading_golden.a lib/libshading_floor.a \
          lib/libshading_scene.a lib/libshading_pipeline.a \
          include/shading/ua60553/ua60553.h include/shading/golden/specular_golden.h \
          include/shading/formats/fixed_point.h include/shading/ua22802_a_rom.h \
@@ -36,15 +36,18 @@ for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVe
          include/shading/monitors/load_checker.h include/shading/monitors/phase_checker.h \
          include/shading/formats/squared_formats.h include/shading/formats/sqmul_formats.h \
          include/shading/golden/squared_golden.h include/shading/golden/sqmul_golden.h \
+         include/shading/arith/specular_arith.h include/shading/arith/pipeline_arith.h \
          include/shading/scene/world.h include/shading/pipeline/pipeline.h \
          share/shading/data/head/lee_perry_smith_head.obj share/shading/data/head/README.md; do
   [ -e "$stage/$f" ] || { echo "check_package: $f not installed" >&2; exit 1; }
 done
-# Every golden model is in libshading_golden (its sources are globbed at configure time).
-golden_symbols="$(nm -C "$stage/lib/libshading_golden.a")"
-for sym in golden_ua60553 golden_ua22802 golden_ua60553_tuned golden_squared golden_sqmul; do
-  grep -qF " T shading::$sym(" <<<"$golden_symbols" \
-    || { echo "check_package: libshading_golden.a does not define shading::$sym" >&2; exit 1; }
+# Every device's bit-exact function is in libshading_floor, the checks' extras in libshading_golden
+# (their sources are globbed at configure time).
+for lib_sym in floor:golden_ua60553 floor:golden_ua22802 floor:golden_ua60553_tuned floor:golden_squared \
+               golden:golden_sqmul; do
+  lib="${lib_sym%%:*}" sym="${lib_sym#*:}"
+  grep -qF " T shading::$sym(" <<<"$(nm -C "$stage/lib/libshading_$lib.a")" \
+    || { echo "check_package: libshading_$lib.a does not define shading::$sym" >&2; exit 1; }
 done
 # The head scan's licence (CC BY 3.0) travels with it.
 grep -q "Lee Perry-Smith" "$stage/share/shading/data/head/README.md" \

@@ -1,7 +1,7 @@
 // Saturating output stage: y = min(max(floor(x / 2^DROP), 0), 2^WOUT - 1). DROP low wires are left
 // unconnected (floor, as in mul.h), then a comparator forces all wires to 0 for a negative value
 // and all to 1 above the range. Used for the shading pipeline's pixel clamp (Q16.16 signed ->
-// Q8.8 unsigned, src/pipeline/pipeline.h, golden_output_clamp).
+// Q8.8 unsigned, src/floor/arith/pipeline_arith.h, golden_output_clamp).
 #pragma once
 
 #include <cstdint>

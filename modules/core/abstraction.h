@@ -3,7 +3,7 @@
 //           combinational blocks with their propagation delays, a waveform per block);
 //   fast  - the same pins and the same timing at the pins (the same handshake, the same clocks per
 //           result, every protocol-defined output at the same edges), one process computing the
-//           unit's function from the shared format definitions (src/formats, src/golden), no
+//           unit's function from the floor (src/floor: the formats and the shared arithmetic), no
 //           internal nets and no internal delays. Bit-exact with block, checked in the tests.
 #pragma once
 

@@ -2,7 +2,7 @@
 // timing at them of coef_unit_cubic<SET, DIV> and coef_unit_quad, one process each, no internal
 // blocks or delays. At each falling edge of clk the samples on the pins are latched (as rg_i1..4
 // do) and A..D (a..c) computed by golden_cubic_coefs (the sample set, the /3 mode, the whole-sum
-// grouping coef_unit_cubic wires) or golden_quad_coefs (src/golden/interp_golden.h, the shared
+// grouping coef_unit_cubic wires) or golden_quad_coefs (src/floor/arith/interp_arith.h, the shared
 // Q8.8 / Q16.8 / Q16.16 formats) and driven at once: valid from that falling edge, so at the next
 // rising edge as the block units promise. Unchanged samples recompute nothing.
 #pragma once
@@ -10,8 +10,8 @@
 #include <array>
 #include <systemc>
 
+#include "arith/interp_arith.h"
 #include "formats/interp_formats.h"
-#include "golden/interp_golden.h"
 
 namespace shading {
 

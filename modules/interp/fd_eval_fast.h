@@ -4,7 +4,7 @@
 //     on the last pixel, LOAD, then STEP for len - 1 clocks, then HOLD; valid / last; a len of 0 or
 //     above 2^M reported as fd_ctrl does and evaluated as a full interval).
 //   - Falling edges: at LOAD the inputs A..D (stable from the accepting edge to this edge, the
-//     handshake's rule) give every pixel through golden_fd (src/golden/interp_golden.h: the Q22.34
+//     handshake's rule) give every pixel through golden_fd (src/floor/arith/interp_arith.h: the Q22.34
 //     set-up and recurrence, the floor to Q16.16); each STEP puts the next one on i_px. HOLD keeps it.
 //   - Falling edges in HOLD are skipped, and while idle with start low the process sleeps until
 //     start rises.
@@ -13,8 +13,8 @@
 #include <systemc>
 #include <vector>
 
+#include "arith/interp_arith.h"
 #include "formats/interp_formats.h"
-#include "golden/interp_golden.h"
 #include "interp/fd_count.h"
 
 namespace shading {

@@ -5,7 +5,7 @@
 //     stepping; t > 1 reported as horner_ctrl does).
 //   - Falling edges: RG latches the step's value. At step 1 the request's inputs (stable at every
 //     falling edge from acceptance to done, the handshake's rule) give every step's RG at once
-//     through golden_horner_into (src/golden/interp_golden.h, the shared Q16.16 / Q1.8 formats);
+//     through golden_horner_into (src/floor/arith/interp_arith.h, the shared Q16.16 / Q1.8 formats);
 //     each falling edge then puts its step's RG on i_t and rg_value, with no clock-to-output delay.
 //   - Speed: the process wakes only at edges that switch a pin or sample start; done and
 //     busy are written only when they change. Idle with start low, it sleeps until start rises.
@@ -14,9 +14,9 @@
 
 #include <systemc>
 
+#include "arith/interp_arith.h"
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
-#include "golden/interp_golden.h"
 #include "interp/horner_steps.h"
 
 namespace shading {

@@ -8,15 +8,15 @@
 //   - falling edges: first the evaluator's registers (LOAD: every pixel of the interval through
 //     golden_fd from the A..D the coefficient unit holds; STEP: the next pixel on i_px), then the
 //     coefficient unit's sample registers latch I1..I4 and A..D follow through golden_cubic_coefs
-//     (sample set, /3 mode and grouping G; src/golden/interp_golden.h).
+//     (sample set, /3 mode and grouping G; src/floor/arith/interp_arith.h).
 #pragma once
 
 #include <array>
 #include <systemc>
 #include <vector>
 
+#include "arith/interp_arith.h"
 #include "formats/interp_formats.h"
-#include "golden/interp_golden.h"
 #include "interp/fd_count.h"
 
 namespace shading {

@@ -1,5 +1,5 @@
 // One colour channel of the shading pipeline's sample stage and coefficient units (the interpolation paper's
-// system; the sample stage's formats are this model's decisions, src/pipeline/pipeline.h):
+// system; the sample stage's formats are this model's decisions, src/floor/formats/pipeline_formats.h):
 //   diffuse  mul_diffuse  k_d*I (8.0) x N.L (Q1.15) -> Q9.8, 7 low wires dropped (floor)
 //   colour   add_ambient  ambient (Q8.8) + diffuse (Q9.8) -> Q10.8 (never overflows)
 //            add_colour   + the device's specular out25/26/27 (Q9.8), saturated to Q8.8 (0xFFFF)
@@ -32,7 +32,7 @@
 namespace shading {
 
 namespace pipe {
-// Bus formats of the sample stage: src/formats/pipeline_formats.h (the golden pipeline reads the same).
+// Bus formats of the sample stage: src/floor/formats/pipeline_formats.h (the golden pipeline reads the same).
 using pipeline::kdi_fmt;
 using pipeline::diffuse_fmt;
 using pipeline::diffuse_drop;

@@ -9,10 +9,12 @@
 //     stepped here at each edge, every read seeing the value before the edge as a signal would. With
 //     the squared-quadratic device the sample controller waits for output 29, which that device
 //     raises k + 2 clocks after its strobe (k = its squarings for the frame's n): counted here.
-//   - The datapath is one function call per interval: golden_interval() (src/pipeline/pipeline.h:
-//     the device's specular term, the diffuse and ambient adders, the coefficient units and the
-//     Horner unit or forward differences, the output clamp, from the shared format definitions),
-//     with the frame constants latched at the edge the device's strobes would latch them.
+//   - The datapath is one function call per interval: interval_pixels() (src/floor/arith/
+//     pipeline_arith.h, what the golden pipeline's golden_interval() computes: the device's specular
+//     term, the diffuse and ambient adders, the coefficient units and the Horner unit or forward
+//     differences, the output clamp, from the shared format definitions), with the frame constants
+//     latched at the edge the device's strobes would latch them. The golden pipeline's header
+//     (src/pipeline/pipeline.h) is not included: it pulls in the rasteriser (docs/layers.md).
 // The device is named by scene::device_config (device and ADD11 overflow mode) instead of a
 // generator type. Bit-exact with the block model (test_pipeline_fast: the frame, the write order
 // and the pins at every edge) and with golden_frame (render_pipeline --abstraction fast).
@@ -22,16 +24,16 @@
 #include <systemc>
 #include <vector>
 
+#include "arith/pipeline_arith.h"
+#include "arith/squared_arith.h"
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
 #include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
 #include "pipeline/pipe_eval.h"
-#include "pipeline/pipeline.h"
 #include "pipeline/sample_fsm.h"
 #include "squared/sq_count.h"
-#include "golden/squared_golden.h"
 
 namespace shading {
 
@@ -98,7 +100,7 @@ private:
     struct interval {
         bool active = false, deg2 = false;
         unsigned y = 0, x0 = 0, len = 0, m = 0, issued = 0;
-        std::vector<rgb> px;  // golden_interval's codes of its pixels
+        std::vector<rgb> px;  // interval_pixels' codes of its pixels
     };
 
     // Every edge of clk, but a falling edge where nothing can happen is skipped: the sample
@@ -183,7 +185,7 @@ private:
     }
 
     // sample_ctrl's check (sample_fsm.h's job_problem), then the interval's pixels through the
-    // golden pipeline. Returns the job's samples, 0 for a dropped job.
+    // floor's interval arithmetic (the golden pipeline's). Returns the job's samples, 0 for a dropped job.
     unsigned check_job() {
         const std::string problem = pipe::job_problem(job_.m, job_.len, job_.deg2, fd_m_);
         if (!problem.empty()) {
@@ -198,7 +200,7 @@ private:
         j.m = job_.m;
         j.deg2 = job_.deg2;
         j.s = job_s_;
-        job_.px = pipeline::golden_interval(j, k_, dev_, horner ? pipeline::evaluator::horner : pipeline::evaluator::fd,
+        job_.px = pipeline::interval_pixels(j, k_, dev_, horner ? pipeline::evaluator::horner : pipeline::evaluator::fd,
                                             set_, div_);
         return pipe::job_samples(job_.m, job_.deg2);
     }

@@ -8,7 +8,7 @@
 //   a_gen_tuned  (tuned/)    the tuned line: MUL6 + ADD15 + OR + key -> device_ua60553_tuned
 // AGen provides n_fmt and a_fmt (its bus formats), a `config` with default_config(), and the
 // note the range checker prints for n outside 1..1000. This class only instantiates and wires;
-// every width comes from the format tables (src/formats), every path from the elaborated design
+// every width comes from the format tables (src/floor/formats), every path from the elaborated design
 // (core/timing_graph.h, read by the timing checker).
 #pragma once
 

@@ -2,7 +2,7 @@
 // and their timing, none of its blocks. Registers 1-5 are five words latched at the falling edges
 // of their strobes (UA 60553, Fig. 3: "write on the trailing edge"); one method computes the block
 // network's function from the golden model (AGen::a_word, golden_datapath: the format tables of
-// src/formats) and writes outputs 25-27 once, at the derived path delay after the latch (in delta
+// src/floor/formats) and writes outputs 25-27 once, at the derived path delay after the latch (in delta
 // time when the block delays are zero), where the block-level model settles after its transients;
 // output 29 follows strobe 17. The input range and strobe timing checks of the block-level model
 // are made here at the same edges, with the same message ids and the same counts.
@@ -25,11 +25,11 @@
 #include <systemc>
 #include <type_traits>
 
+#include "arith/specular_arith.h"
 #include "core/abstraction.h"
 #include "core/report_ids.h"
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
-#include "golden/specular_golden.h"
 #include "specular/block_delays.h"
 #include "specular/specular_device.h"
 

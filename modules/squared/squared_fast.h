@@ -23,11 +23,11 @@
 #include <string>
 #include <systemc>
 
+#include "arith/squared_arith.h"
 #include "core/abstraction.h"
 #include "core/report_ids.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/squared_golden.h"
 #include "specular/block_delays.h"
 #include "squared/sq_count.h"
 #include "squared/squared_device.h"

@@ -60,8 +60,8 @@
 #include <systemc>
 #include <vector>
 
+#include "arith/interp_arith.h"
 #include "formats/interp_formats.h"
-#include "golden/interp_golden.h"
 #include "interp/interp_line_unit.h"
 #include "tlm/tlm_target_base.h"
 

@@ -6,7 +6,7 @@
 //   pin_accurate   - the wrapper owns the signal-level devices and drives UA 60553, Fig. 3's
 //                    strobes from the b_transport caller's thread with wait(): an access costs the
 //                    model's real time and the waveform shows it;
-//   loosely_timed  - the golden model (src/golden) computes the result; the access is annotated
+//   loosely_timed  - the golden function (src/floor/arith) computes the result; the access is annotated
 //                    with the same delay (added to b_transport's delay argument, no wait).
 // Both give bit-identical data (testbenches/tlm). One class template, specular_tlm<V>, whose V
 // names the device as tlm_variant<V> describes it (a_gen_linear, a_gen_rom, a_gen_tuned: UA 60553's
@@ -75,17 +75,16 @@
 #include <memory>
 #include <systemc>
 
+#include "arith/specular_arith.h"
+#include "arith/squared_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/specular_golden.h"
-#include "golden/squared_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
 #include "specular/specular_device.h"
 #include "squared/squared_device.h"
+#include "tlm/tlm_target_base.h"
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
-#include "tlm/tlm_target_base.h"
 #include "ua60553/a_gen_linear.h"
 
 namespace shading {

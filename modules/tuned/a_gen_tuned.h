@@ -9,13 +9,13 @@
 #include <cstdint>
 #include <systemc>
 
+#include "arith/ua60553_tuned_arith.h"
 #include "blocks/adder.h"
 #include "blocks/constant.h"
 #include "blocks/key_block.h"
 #include "blocks/mul.h"
 #include "blocks/reduce_or.h"
 #include "formats/ua60553_formats.h"
-#include "golden/ua60553_tuned_golden.h"
 #include "specular/block_delays.h"
 
 namespace shading {

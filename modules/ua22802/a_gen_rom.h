@@ -1,7 +1,7 @@
 // UA 22802's generator of `a` (the prototype UA 60553 names): RG1 addresses a
 // ROM holding a(n) of the quadratic-BRDF paper formula 7, whose word drives MUL10 directly. The
 // content is generated at build time by src/tools/gen_a_rom.cpp (ua22802_a_rom.h in the build
-// tree; link shading_ua22802); format and rounding in src/formats/ua22802_formats.h. A unit with
+// tree; link shading_ua22802); format and rounding in src/floor/formats/ua22802_formats.h. A unit with
 // the n -> a interface every specular device binds (specular/specular_device.h).
 #pragma once
 

@@ -6,11 +6,11 @@
 
 #include <systemc>
 
+#include "arith/specular_arith.h"
 #include "blocks/adder.h"
 #include "blocks/constant.h"
 #include "blocks/mul.h"
 #include "formats/ua60553_formats.h"
-#include "golden/specular_golden.h"
 #include "specular/block_delays.h"
 
 namespace shading {

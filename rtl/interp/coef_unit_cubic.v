@@ -3,7 +3,7 @@
 // latch the samples on the falling edge of clk; the networks settle within the low phase, so A..D
 // are valid at the next rising edge. Formats: I Q8.8 unsigned -> sums Q16.8 signed -> A..D Q16.16
 // signed. SET 0 = case 1 (t = 0, 1/4, 1/2, 1), 1 = case 2 (t = 0, 1/2, 3/4, 1); DIV 0 = the interpolation paper's
-// shift-and-add /3, 1 = exact constant divider. Widths from shading_formats.vh (src/formats), term
+// shift-and-add /3, 1 = exact constant divider. Widths from shading_formats.vh (src/floor/formats), term
 // tables from interp_terms.vh (coef_terms), both generated. This module only instantiates and wires.
 `include "shading_formats.vh"
 `include "interp_terms.vh"

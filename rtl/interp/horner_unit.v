@@ -4,7 +4,7 @@
 // {0, MUL, B, C, D}; RG <- Sm on the falling edge. The controller ctrl runs one micro-step per
 // clock: 6 clocks per cubic pixel, 4 per quadratic one, back to back.
 // Formats: A..D, RG, MX1, MX2, BK, Sm Q16.16 signed; t Q1.8 unsigned; MUL Q16.16 x Q1.8 ->
-// Q17.24, floor to Q16.16. Widths from shading_formats.vh (src/formats), select codes from
+// Q17.24, floor to Q16.16. Widths from shading_formats.vh (src/floor/formats), select codes from
 // interp_terms.vh (horner_ctrl.h), both generated. This module only instantiates and wires.
 `include "shading_formats.vh"
 `include "interp_terms.vh"

@@ -1,60 +1,18 @@
-// Bit-accurate golden models of the interpolation paper's interpolation hardware, plain C++ in direct integer
-// arithmetic from the format table in interp_formats.h (independent of the SystemC blocks, which
-// build the same values from shifters, adders and inverter banks).
+// Golden models of the interpolation paper's interpolation hardware. Their bit-exact functions
+// (coefficient units, Horner unit, forward differences, the raster-line unit) are shared
+// arithmetic, in the floor (arith/interp_arith.h), because the fast models and the line wrapper
+// call them too; what only the checks and studies use is declared here.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
-#include "formats/interp_formats.h"
+#include "arith/interp_arith.h"
 
 namespace shading::interp {
 
-// Coefficient codes (coef_fmt, signed Q16.16, as integers) of I(t) = A t^3 + B t^2 + C t + D.
-struct cubic_coefs {
-    int64_t a = 0, b = 0, c = 0, d = 0;
-    bool operator==(const cubic_coefs& o) const { return a == o.a && b == o.b && c == o.c && d == o.d; }
-};
-
-// x (a sum_fmt code, Q.8) divided by 3 onto coef_fmt (Q.16).
-int64_t golden_div3(int64_t x_q8, div3_mode mode);
-
-// I1..I4 as sample_fmt codes (Q8.8 unsigned). `grouping`: /3 on the whole weighted sum (the
-// default) or on the interpolation paper's partial sum (coef_unit_cubic_seed.h).
-cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& i, sample_set set, div3_mode mode,
-                               div3_grouping grouping = div3_grouping::whole_sum);
-// Quadratic through t = 0, 1/2, 1: a, b, c returned in the a, b, c fields (d = 0).
-cubic_coefs golden_quad_coefs(const std::array<uint64_t, 3>& i);
-
-// Iterative Horner unit (the interpolation paper, Fig. 4): the RG value after each micro-step, as coef_fmt bus
-// bits. Cubic: 6 steps (RG <- B; A t + B; * t; + C; * t; + D). Degree 2 (a, b, c in the a, b, c
-// fields): 4 steps (RG <- b; a t + b; * t; + c). The last entry is I(t).
+// The Horner unit's micro-steps (golden_horner_into) as a vector: RG after each, as coef_fmt bus bits.
 std::vector<uint64_t> golden_horner_steps(const cubic_coefs& k, uint64_t t_code, bool degree2);
-std::size_t golden_horner_into(const cubic_coefs& k, uint64_t t_code, bool degree2, uint64_t* rg6);
-inline uint64_t golden_horner(const cubic_coefs& k, uint64_t t_code, bool degree2) {
-    uint64_t rg[6];
-    return rg[golden_horner_into(k, t_code, degree2, rg) - 1];
-}
-
-// Forward-difference evaluator for N = 2^m pixels, t = k/N: the set-up values on a bus with
-// `frac` fraction bits (fd_fmt.frac in the hardware; fewer to study the error growth), then
-// `len` outputs, each P truncated (floor) to coef_fmt bus bits.
-std::vector<uint64_t> golden_fd(const cubic_coefs& k, unsigned m, unsigned len, int frac = fd_fmt.frac);
-// The same outputs written to out[0 .. len) (coef_fmt is 32 bits wide), no allocation: for the
-// loosely-timed line wrapper's per-interval hot path (modules/tlm/line_tlm.h).
-void golden_fd_to(const cubic_coefs& k, unsigned m, unsigned len, uint32_t* out, int frac = fd_fmt.frac);
-
-// The raster-line interpolator (modules/interp_line_unit.h): per interval, I1..I4 (sample_fmt
-// codes) -> golden_cubic_coefs -> golden_fd over its len pixels (len 0 or > 2^m: a full interval of
-// 2^m, as fd_ctrl evaluates it). Returns the pixels of all intervals in order, coef_fmt bus bits.
-struct interval_samples {
-    std::array<uint64_t, 4> i{};
-    unsigned len = 0;
-};
-std::vector<uint64_t> golden_interp_line(const std::vector<interval_samples>& intervals, unsigned m,
-                                         sample_set set, div3_mode mode,
-                                         div3_grouping grouping = div3_grouping::whole_sum);
 
 // Worst-case accumulated error after k steps of the recurrence when each set-up difference is
 // floored (D1, D2 sums of 3 floored terms, D3 of 2): (3k + 3 C(k,2) + 2 C(k,3)) * 2^-frac,

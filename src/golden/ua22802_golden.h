@@ -1,19 +1,6 @@
-// Bit-accurate golden model of UA 22802 (the ROM prototype), plain C++: the ROM word computed
-// directly from the formula, then the shared datapath model (specular_golden.h).
+// Golden model of UA 22802 (the ROM prototype): its bit-exact function is shared arithmetic, in the
+// floor (arith/ua22802_arith.h), because the pipeline's fast model reaches it through
+// device_specular; this header keeps the golden layer's name for it.
 #pragma once
 
-#include <array>
-#include <cstdint>
-
-#include "golden/specular_golden.h"
-
-namespace shading {
-
-// ROM word for address n (ua22802_formats.h): floor(a(n) * 2^6 + 1/2) on the Q10.6 bus.
-uint64_t golden_a_rom(uint64_t n_bits);
-
-// The whole UA 22802 device.
-datapath_nets golden_ua22802(uint64_t n_bits, uint64_t cos_bits, const std::array<uint64_t, 3>& ksi,
-                             overflow_mode mode);
-
-}  // namespace shading
+#include "arith/ua22802_arith.h"

@@ -6,8 +6,9 @@
 // The SystemC pipeline (modules/pipeline/) is bit-exact against golden_interval() and golden_frame().
 //
 // This header is the contract between the parts:
-//   frame_constants / sample_geometry / golden_sample   the sample stage      (golden_pipeline.cpp)
-//   interval_job / golden_interval                       one interval          (golden_pipeline.cpp)
+//   frame_constants / sample_geometry / golden_sample   the sample stage      (floor: arith/pipeline_arith.*)
+//   interval_job / interval_pixels                       one interval          (floor: arith/pipeline_arith.*)
+//   frame_constants_of / sample_of / golden_interval     from a scene, checked (golden_pipeline.cpp)
 //   plan_config / make_plan                              the geometry side     (plan.cpp)
 //   head_zone / zone names                               the Fig. 5 zone map   (zones.cpp)
 //   golden_frame / hardware_ops / metrics                a whole frame         (golden_pipeline.cpp, metrics.cpp)
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "arith/pipeline_arith.h"
 #include "formats/fixed_point.h"
 #include "formats/interp_formats.h"
 #include "formats/pipeline_formats.h"
@@ -29,61 +31,24 @@
 
 namespace shading::pipeline {
 
-// ---- Formats of the sample stage: src/formats/pipeline_formats.h (shared with the SystemC modules) ----
-
-using rgb_codes = std::array<uint64_t, 3>;
+// ---- Formats of the sample stage: src/floor/formats/pipeline_formats.h; the sample stage's and an
+// interval's arithmetic (rgb_codes, frame_constants, sample_geometry, golden_sample, evaluator,
+// interval_job, golden_output_clamp, interval_pixels): src/floor/arith/pipeline_arith.h. Both are
+// shared with the SystemC modules, which may not include this header (it pulls in the rasteriser).
 
 // ---- Sample stage ----
-// Per-frame registers, loaded once per frame (UA 60553, Fig. 3: RG1 by strobe 15, RG3-5 by 20, 22, 24).
-struct frame_constants {
-    unsigned n = 32;           // the device's in16 (1..1000)
-    rgb_codes ksi{};           // k_s * I_l, 8-bit codes (scene::ksi_code)
-    rgb_codes kdi{};           // 255 k_d I_l, Q8.8 codes (kdi_code)
-    rgb_codes ambient{};       // 255 * ambient, Q8.8 codes
-};
 // The frame constants of a scene. The hardware path shades one material under one light: throws
 // scene::scene_error naming the scene if it has more than one light or its objects' materials differ.
 frame_constants frame_constants_of(const scene::world& s);
 // 255 k_d I as a Q8.8 code (pipeline_formats.h: kdi_fmt): rounded to nearest, k_d I clamped to [0, 1].
 uint64_t kdi_code(double kd_times_i);
 
-// What the geometry side delivers per sample point: in18's Q1.15 codes (scene::cos_code) of N.H and
-// N.L; both 0 where N.L <= 0 (no highlight where the light does not reach, as the references gate it).
-struct sample_geometry {
-    uint32_t cos_nh = 0, cos_nl = 0;
-    bool operator==(const sample_geometry& o) const { return cos_nh == o.cos_nh && cos_nl == o.cos_nl; }
-};
 // Single light (light index 0). Pure format conversion: not counted.
 sample_geometry sample_of(const scene::pixel_geometry& g);
 
-// One colour sample (colour_fmt codes per channel):
-//   sat(ambient + floor(kdi * cos_nl >> 7) + device_specular(n, cos_nh, ksi)).
-rgb_codes golden_sample(const scene::device_config& dev, const frame_constants& k, sample_geometry g);
-
 // ---- One interval ----
-enum class evaluator { horner, fd };  // the paper's Fig. 4 Horner unit, or our forward differences
-const char* evaluator_name(evaluator e);  // "horner", "fd"
-
-// An interval of a raster line as it enters the hardware: pixels x0 .. x0 + len - 1 of line y, pixel
-// k at t = k / 2^m. Cubic: s[0..3] at the sample set's points (case 1: t = 0, 1/4, 1/2, 1; case 2:
-// 0, 1/2, 3/4, 1). Quadratic (deg2): s[0..2] at t = 0, 1/2, 1, s[3] = s[2]. The sample at t = 1 is
-// pixel x0 + 2^m, the next interval's first pixel (shared, not recomputed by the geometry side).
-// An exact pixel is m = 0, len = 1, deg2 = false, all four samples equal: the cubic through four
-// equal samples is that constant (A = B = C = 0, D = I1), so the hardware needs no special case.
-struct interval_job {
-    unsigned y = 0, x0 = 0;
-    unsigned len = 1;        // 1 .. 2^m (shorter only when the plan says so)
-    unsigned m = 0;          // 0 (exact pixel) or interp::m_min .. interp::m_max
-    bool deg2 = false;
-    std::array<sample_geometry, 4> s{};
-    uint8_t zone = 0;        // the zone of the interval's first pixel (head_zone), for maps and reports
-};
-
-// Every pixel of one interval, pixel_fmt codes per channel: golden_sample at each sample point ->
-// golden_cubic_coefs (sample set, /3 mode; whole-sum grouping) or golden_quad_coefs -> per pixel
-// golden_horner (t code k << (8 - m)) or golden_fd (fixed m; quadratic as A = 0, B = a, C = b, D = c)
-// -> golden_output_clamp.
-rgb_codes::value_type golden_output_clamp(uint64_t coef_bits);
+// Every pixel of one interval (interval_pixels, pipeline_arith.h); throws scene::scene_error naming
+// the interval if the hardware cannot take it (interval_problem).
 std::vector<rgb_codes> golden_interval(const interval_job& job, const frame_constants& k,
                                        const scene::device_config& dev, evaluator e, interp::sample_set set,
                                        interp::div3_mode div);

@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arith/ua22802_arith.h"
+
 namespace shading::ref {
 
 double cos_pow(double c, double n) { return std::pow(c, n); }
 
-double a_exact(double n) {
-    if (n <= 1.0) return 0.0;  // n = 1: cos^1 is the line itself
-    const double t = std::sqrt((n - 1.0) / n);
-    return (std::pow(t, n - 1.0) - 1.0) / (t - 1.0);
-}
+// The formula defines UA 22802's ROM content, so its one definition is in the floor with the ROM's
+// format (arith/ua22802_arith.h); a reference may use the floor.
+double a_exact(double n) { return ua22802::a_formula(n); }
 
 double a_patent_formula(double n) { return 0.786 * n + 0.5; }
 

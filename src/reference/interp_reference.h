@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "golden/interp_golden.h"
+#include "formats/interp_formats.h"
 
 namespace shading::ref {
 

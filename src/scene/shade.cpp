@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <chrono>
 
-#include "golden/specular_golden.h"
-#include "golden/squared_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
 #include "scene/scene.h"
 
 namespace shading::scene {
@@ -91,19 +87,6 @@ specular_device parse_device(const std::string& name) {
                    specular_device::ua22802, specular_device::squared})
         if (name == device_name(d)) return d;
     throw scene_error("unknown specular device '" + name + "' (patent, minimax, rom_matched, ua22802, squared)");
-}
-
-std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, uint32_t cos_code,
-                                        const std::array<uint64_t, 3>& ksi) {
-    switch (dev.device) {
-        case specular_device::patent: return golden_ua60553(n, cos_code, ksi, dev.mode, ua60553::patent).out;
-        case specular_device::minimax: return golden_ua60553_tuned(n, cos_code, ksi, dev.mode, ua60553::minimax).out;
-        case specular_device::rom_matched:
-            return golden_ua60553_tuned(n, cos_code, ksi, dev.mode, ua60553::rom_matched).out;
-        case specular_device::ua22802: return golden_ua22802(n, cos_code, ksi, dev.mode).out;
-        case specular_device::squared: return golden_squared(n, cos_code, ksi, dev.mode).out;
-    }
-    return {0, 0, 0};
 }
 
 cnum pow_int(cnum x, unsigned n) {

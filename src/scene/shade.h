@@ -16,26 +16,17 @@
 #include <string>
 #include <vector>
 
+#include "arith/device_specular.h"  // specular_device, device_config, device_specular (the floor)
 #include "formats/fixed_point.h"
 #include "scene/raster.h"
 #include "scene/scanline.h"
 
 namespace shading::scene {
 
-enum class specular_device { patent, minimax, rom_matched, ua22802, squared };
 const char* device_name(specular_device d);
 // "patent", "minimax", "rom_matched", "ua22802", "squared"; throws scene_error otherwise.
 specular_device parse_device(const std::string& name);
 std::vector<std::string> device_names();
-
-struct device_config {
-    specular_device device = specular_device::patent;
-    overflow_mode mode = overflow_mode::saturate;
-};
-
-// The device's out25..27 codes (Q9.8) for exponent n, the Q1.15 cos code and the 8-bit k_s*I codes.
-std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, uint32_t cos_code,
-                                        const std::array<uint64_t, 3>& ksi);
 
 // Any specular unit with the devices' interface: (n, Q1.15 cos code, 8-bit k_s*I codes) -> out25..27
 // codes (Q9.8). For models that are not scene devices (studies' variants, comparison designs); the

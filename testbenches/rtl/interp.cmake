@@ -28,7 +28,7 @@ endif()
 set(_interp_gen_src ${CMAKE_CURRENT_SOURCE_DIR}/gen_interp_rtl.cpp)
 set(_interp_gen_dir ${PROJECT_BINARY_DIR}/CMakeFiles/gen_interp_rtl_configure)
 try_compile(_interp_gen_ok ${_interp_gen_dir} SOURCES ${_interp_gen_src}
-            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src;${PROJECT_SOURCE_DIR}/modules"
+            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src;${PROJECT_SOURCE_DIR}/src/floor;${PROJECT_SOURCE_DIR}/modules"
             LINK_LIBRARIES ${SHADING_SYSTEMC_TARGET}
             CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
             OUTPUT_VARIABLE _interp_gen_log COPY_FILE ${_interp_gen_dir}/gen_interp_rtl)

@@ -1,4 +1,4 @@
-#include "golden/specular_golden.h"
+#include "arith/specular_arith.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/ua60553_tuned_arith.h"
 
 namespace shading {
 

@@ -1,4 +1,4 @@
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 
 #include <algorithm>
 
