@@ -1,6 +1,6 @@
-// The README's number-format table against src/formats: each row's formats, as a reader sees them
+// The README's number-format table against src/floor/formats: each row's formats, as a reader sees them
 // ("Q1.15", "signed Q2.30", "10-bit integer"), parsed from README.md and compared with the qfmt
-// constants the modules and golden models are built from. A width changed in src/formats without
+// constants the modules and golden models are built from. A width changed in src/floor/formats without
 // the table (or the reverse) fails here.
 #include <gtest/gtest.h>
 

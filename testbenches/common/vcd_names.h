@@ -156,7 +156,7 @@ inline std::set<std::string> vcd_declared(const std::string& vcd_path) {
 }
 
 // The number format a view must give each bus it shows: a name (scope path below "SystemC."
-// without the [msb:lsb]) and its format from the tables in src/formats.
+// without the [msb:lsb]) and its format from the tables in src/floor/formats.
 using view_formats = std::map<std::string, qfmt>;
 
 // Everything that would keep a user from reading a view at first sight, one line each (empty:

@@ -111,7 +111,7 @@ TEST(InterpCoefUnits, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
 
     // What a user sees at first sight (vcd_names.h, view_problems): the view names its dump file,
     // opens with the marker inside the window and off every edge, and shows each bus as a number
-    // in its format from src/formats/interp_formats.h (counters and selects: integers).
+    // in its format from src/floor/formats/interp_formats.h (counters and selects: integers).
     using interp::coef_fmt, interp::sample_fmt, interp::sum_fmt;
     view_formats f;
     for (const char* s : {"tb.c1_i", "tb.c2_i", "tb.dut_c1_sa.held_i"})

@@ -138,7 +138,7 @@ TEST(InterpHorner, GtkwaveViewShowsOnlyNetsTheVcdDeclares) {
 
     // What a user sees at first sight (vcd_names.h, view_problems): the view names its dump file,
     // opens with the marker inside the window and off every edge, and shows each bus as a number
-    // in its format from src/formats/interp_formats.h (counters and selects: integers).
+    // in its format from src/floor/formats/interp_formats.h (counters and selects: integers).
     using interp::coef_fmt, interp::sample_fmt, interp::sum_fmt;
     view_formats f;
     for (const char* s : {"tb.a", "tb.b", "tb.c", "tb.d", "tb.i_t", "tb.dut.mx1_operand", "tb.dut.mul_product",

@@ -184,7 +184,7 @@ TEST(RtlCosimCheck, AnRtlThatDiffersFromGoldenIsCaught) {
 namespace {
 
 // The formats the two views must show their buses in (vcd_names.h, view_problems), from
-// src/formats: the SystemC side's nets (specular_view.h) and the RTL's, named as each VCD does.
+// src/floor/formats: the SystemC side's nets (specular_view.h) and the RTL's, named as each VCD does.
 view_formats cosim_view_formats() {
     view_formats f = specular_view_formats();
     f["tb.in16_n"] = f["tb.dut.rg1_n"] = ua60553::n_fmt;

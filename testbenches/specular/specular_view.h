@@ -1,6 +1,6 @@
 // The number formats the GTKWave views of the specular devices (traces/ua60553.gtkw,
 // traces/ua22802.gtkw) must give the datapath nets every device shares, from the format tables in
-// src/formats/specular_formats.h; each device's test adds its n -> a generator's nets.
+// src/floor/formats/specular_formats.h; each device's test adds its n -> a generator's nets.
 #pragma once
 
 #include "common/vcd_names.h"

@@ -348,7 +348,7 @@ TEST(SquaredTrace, VcdDeclaresTheDeviceNetsAndTheViewShowsOnlyThose) {
 
 TEST(SquaredTrace, GtkwaveViewReadsAtFirstSight) {
     // traces/squared.gtkw against the VCD of squared_tb's default run: dump file, marker inside the
-    // window and off every edge, every bus a number in its format from src/formats.
+    // window and off every edge, every bus a number in its format from src/floor/formats.
     const std::string stem = ::testing::TempDir() + "squared_view";
     trace_default_run(stem);
     view_formats f = specular_view_formats();

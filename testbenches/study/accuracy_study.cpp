@@ -82,7 +82,7 @@ std::vector<method> methods(const std::vector<double>& trial_a) {
 // by a hardwired constant keeps only the rows of its non-zero constant bits: WN x nnz); adder bits
 // = output width of each adder; gates = inputs of the special case's OR gate + AND gates of the key
 // block. Registers and the colour path are common to all and listed for completeness. Every width is
-// read from the format tables (src/formats) the device tops take their template widths from.
+// read from the format tables (src/floor/formats) the device tops take their template widths from.
 struct cost {
     std::string design;
     unsigned rom_bits, gen_mult_cells, gen_adder_bits, gen_gates, mul10_cells, shared_mult_cells,

@@ -89,7 +89,7 @@ TEST(UA22802Trace, MissingTraceFolderIsCreatedAndTheTestsVcdWritten) {
 TEST(UA22802, GtkwaveViewReadsAtFirstSight) {
     // traces/ua22802.gtkw against a VCD of the stream ua22802_tb writes up to its marker (n = 1, 2,
     // 3, 8, 48 pixels each, default strobes): dump file, marker inside the window and off every
-    // edge, every bus a number in its format from src/formats (vcd_names.h, view_problems).
+    // edge, every bus a number in its format from src/floor/formats (vcd_names.h, view_problems).
     const std::string base = ::testing::TempDir() + "ua22802_view";
     std::vector<uint32_t> codes;
     for (uint32_t i = 0; i < 48; ++i) codes.push_back(0x0400 + 0x2A0 * i);

@@ -260,7 +260,7 @@ TEST(UA60553Trace, VcdDeclaresTheDatapathSignals) {
 TEST(UA60553Trace, GtkwaveViewReadsAtFirstSight) {
     // traces/ua60553.gtkw against a VCD of the bench ua60553_tb builds (n = 10, default strobes),
     // long enough to pass the marker: dump file, marker inside the window and off every edge, every
-    // bus a number in its format from src/formats (vcd_names.h, view_problems).
+    // bus a number in its format from src/floor/formats (vcd_names.h, view_problems).
     const std::string base = ::testing::TempDir() + "ua60553_view";
     {
         std::vector<surface> s{{10, {255, 180, 60}, codes(0x7000, 0x7040)}};

@@ -1,12 +1,12 @@
 // Built by scripts/check_package.sh with `c++ -std=c++17 pkgconfig_check.cpp $(pkg-config --cflags
 // --libs shading)` against the installed tree: the include root, the generated UA 22802 ROM header,
-// the squared-quadratic device's headers, libshading_golden and (through Requires: systemc)
+// the squared-quadratic device's headers, libshading_golden, libshading_floor and (through Requires: systemc)
 // libsystemc must all be found.
 #include <cstdio>
 #include <systemc>
 
-#include "golden/squared_golden.h"    // libshading_golden
-#include "golden/ua22802_golden.h"    // libshading_golden
+#include "golden/squared_golden.h"    // its functions: libshading_floor (arith/squared_arith.h)
+#include "golden/ua22802_golden.h"    // libshading_floor (arith/ua22802_arith.h)
 #include "squared/squared_device.h"   // formats/squared_formats.h, the new blocks and monitors
 #include "ua22802/ua22802.h"          // includes the generated ua22802_a_rom.h
 
