@@ -173,6 +173,7 @@ std::optional<int> bench_specular_tlm(int argc, char** argv) {
     const std::size_t most = 1'000'000'000'000;
     FUZZ_CHECK(within(o.lt_pixels, std::size_t{1}, most), "--lt-pixels %zu", o.lt_pixels);
     FUZZ_CHECK(within(o.pin_pixels, std::size_t{1}, most), "--pin-pixels %zu", o.pin_pixels);
+    FUZZ_CHECK(within(o.burst, 1u, 1024u), "--burst %u", o.burst);
     return std::nullopt;
 }
 

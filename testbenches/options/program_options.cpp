@@ -203,6 +203,8 @@ std::optional<int> parse_bench_specular_tlm(int argc, char** argv, bench_specula
     const auto pixels = CLI::Range(std::size_t{1}, std::size_t{1'000'000'000'000});
     app.add_option("--lt-pixels", o.lt_pixels, "pixels shaded loosely timed (whole lines)")->check(pixels);
     app.add_option("--pin-pixels", o.pin_pixels, "pixels shaded pin-accurate (whole lines)")->check(pixels);
+    app.add_option("--burst", o.burst, "pixels per access (1: one transaction per write and per read)")
+        ->check(CLI::Range(1u, 1024u));
     SHADING_CLI_PARSE(app, argc, argv);
     return std::nullopt;
 }

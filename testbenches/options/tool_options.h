@@ -45,6 +45,7 @@ struct render_reference_options {
 struct bench_specular_tlm_options {
     std::string device = "patent";
     std::size_t lt_pixels = 100'000'000, pin_pixels = 200'000;  // each 1..10^12
+    unsigned burst = 1024;  // pixels per COS_BLOCK write and RESULT_BLOCK read, 1..1024
 };
 
 struct accuracy_study_options {
