@@ -3,7 +3,8 @@
 # in one process (soak_pipeline: 0 mismatches, resident memory after the first and the last render);
 # then every TLM-2.0 wrapper serves PIXELS loosely-timed
 # pixels (default 10^8) and PIN pin-accurate ones (default 2·10^5) in one process, each checked
-# against the device's golden model (bench_specular_tlm per device, bench_line_tlm); prints the
+# against the device's golden model (bench_specular_tlm per device, bench_line_tlm), and each
+# specular wrapper PIXELS transactions of one pixel (--burst 1); prints the
 # rates and exits 1 on any mismatch. Niced: the machine is shared.
 #   scripts/soak.sh [PIXELS [PIN]]      e.g. scripts/soak.sh 1000000000
 set -euo pipefail
@@ -19,6 +20,9 @@ nice build/bin/soak_pipeline --renders 1000 --size 128 2>&1 | grep -v 'Simulatio
 for d in patent minimax rom_matched ua22802 squared; do
   echo "== bench_specular_tlm --device $d --lt-pixels $lt --pin-pixels $pin"
   nice build/bin/bench_specular_tlm --device "$d" --lt-pixels "$lt" --pin-pixels "$pin" || status=1
+  # One pixel per access: PIXELS / 2 pixels are PIXELS transactions (a write and a read each).
+  echo "== bench_specular_tlm --device $d --lt-pixels $((lt / 2)) --pin-pixels $((pin / 2)) --burst 1"
+  nice build/bin/bench_specular_tlm --device "$d" --lt-pixels "$((lt / 2))" --pin-pixels "$((pin / 2))" --burst 1 || status=1
 done
 echo "== bench_line_tlm --lt-pixels $lt --pin-pixels $pin"
 nice build/bin/bench_line_tlm --lt-pixels "$lt" --pin-pixels "$pin" || status=1
