@@ -43,7 +43,7 @@ if(TARGET shading_tlm)
   set_target_properties(shading_tlm PROPERTIES EXPORT_NAME tlm)
   list(APPEND SHADING_EXPORTED shading_tlm)
 endif()
-# --- The scene library and the interpolation paper's golden pipeline (src/scene, src/pipeline), when their Debian
+# --- The scene library and the interpolation paper's golden pipeline (src/scene, src/golden_pipeline), when their Debian
 # packages were found: shading::scene, shading::pipeline, in their own export set so that a consumer
 # without tinyobjloader or libpng still gets the rest. Their public headers include GLM.
 set(SHADING_SCENE_EXPORTED)
@@ -94,7 +94,7 @@ if(SHADING_SCENE_EXPORTED)
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           INCLUDES DESTINATION ${SHADING_INSTALL_INCLUDEDIR})
   install(EXPORT shadingSceneTargets NAMESPACE shading:: DESTINATION ${SHADING_INSTALL_CMAKEDIR})
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/scene ${PROJECT_SOURCE_DIR}/src/pipeline
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/scene ${PROJECT_SOURCE_DIR}/src/golden_pipeline
           DESTINATION ${SHADING_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
   # The head scan goes with its attribution (data/head/README.md: "Infinite, 3D Head Scan" by Lee
   # Perry-Smith, CC BY 3.0): the licence asks for it wherever the file is redistributed.

@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "fuzz_check.h"
-#include "options/bench_options.h"
-#include "options/tool_options.h"
+#include "testbenches/options/bench_options.h"
+#include "testbenches/options/tool_options.h"
 #if SHADING_FUZZ_RENDER_OPTIONS
-#include "options/render_options.h"
+#include "testbenches/options/render_options.h"
 #endif
 
 namespace {

@@ -37,10 +37,15 @@ for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVe
          include/shading/formats/squared_formats.h include/shading/formats/sqmul_formats.h \
          include/shading/golden/squared_golden.h include/shading/golden/sqmul_golden.h \
          include/shading/arith/specular_arith.h include/shading/arith/pipeline_arith.h \
-         include/shading/scene/world.h include/shading/pipeline/pipeline.h \
+         include/shading/scene/world.h include/shading/golden_pipeline/pipeline.h \
+         include/shading/pipeline/shading_pipeline.h \
          share/shading/data/head/lee_perry_smith_head.obj share/shading/data/head/README.md; do
   [ -e "$stage/$f" ] || { echo "check_package: $f not installed" >&2; exit 1; }
 done
+# Each layer keeps its own folder (docs/layers.md): the golden pipeline's headers are not mixed
+# into the SystemC pipeline's.
+[ ! -e "$stage/include/shading/pipeline/pipeline.h" ] ||
+  { echo "check_package: include/shading/pipeline/ holds the golden pipeline's pipeline.h" >&2; exit 1; }
 # Every device's bit-exact function is in libshading_floor, the checks' extras in libshading_golden
 # (their sources are globbed at configure time).
 for lib_sym in floor:golden_ua60553 floor:golden_ua22802 floor:golden_ua60553_tuned floor:golden_squared \

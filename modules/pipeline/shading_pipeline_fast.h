@@ -14,7 +14,7 @@
 //     term, the diffuse and ambient adders, the coefficient units and the Horner unit or forward
 //     differences, the output clamp, from the shared format definitions), with the frame constants
 //     latched at the edge the device's strobes would latch them. The golden pipeline's header
-//     (src/pipeline/pipeline.h) is not included: it pulls in the rasteriser (docs/layers.md).
+//     (src/golden_pipeline/pipeline.h) is not included: it pulls in the rasteriser (docs/layers.md).
 // The device is named by scene::device_config (device and ADD11 overflow mode) instead of a
 // generator type. Bit-exact with the block model (test_pipeline_fast: the frame, the write order
 // and the pins at every edge) and with golden_frame (render_pipeline --abstraction fast).

@@ -5,7 +5,7 @@
 #include <systemc>
 
 #include "blocks/adder.h"
-#include "common/report_log.h"
+#include "testbenches/common/report_log.h"
 #include "blocks/constant.h"
 #include "blocks/inverter_bank.h"
 #include "blocks/mul.h"

@@ -4,7 +4,7 @@
 
 #include <systemc>
 
-#include "common/report_log.h"
+#include "testbenches/common/report_log.h"
 #include "core/report_ids.h"
 #include "blocks/rom.h"
 

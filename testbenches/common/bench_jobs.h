@@ -28,7 +28,7 @@
 #include <thread>
 #include <vector>
 
-#include "common/child_processes.h"
+#include "testbenches/common/child_processes.h"
 
 namespace shading::tb {
 

@@ -26,10 +26,10 @@
 #include <utility>
 #include <vector>
 
-#include "common/bench_jobs.h"
-#include "common/exit_status.h"
-#include "options/bench_options.h"
-#include "common/report_log.h"
+#include "testbenches/common/bench_jobs.h"
+#include "testbenches/common/exit_status.h"
+#include "testbenches/options/bench_options.h"
+#include "testbenches/common/report_log.h"
 #include "core/trace.h"
 #include "formats/fixed_point.h"
 

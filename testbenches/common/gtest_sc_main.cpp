@@ -4,7 +4,7 @@
 
 #include <systemc>
 
-#include "common/report_log.h"
+#include "testbenches/common/report_log.h"
 
 namespace {
 void fail_test(const sc_core::sc_report& r) {

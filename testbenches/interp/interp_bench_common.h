@@ -17,7 +17,7 @@
 #include <systemc>
 #include <vector>
 
-#include "common/bench_source.h"
+#include "testbenches/common/bench_source.h"
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
 #include "golden/interp_golden.h"

@@ -14,7 +14,7 @@
 
 #include "interp/coef_unit_cubic.h"
 #include "interp/coef_unit_quad.h"
-#include "interp/interp_bench_common.h"
+#include "testbenches/interp/interp_bench_common.h"
 
 namespace shading::tb {
 

@@ -12,9 +12,9 @@
 #include <iostream>
 #include <random>
 
-#include "common/bench_runner.h"
-#include "interp/interp_coef_bench.h"
-#include "interp/interp_line.h"
+#include "testbenches/common/bench_runner.h"
+#include "testbenches/interp/interp_coef_bench.h"
+#include "testbenches/interp/interp_line.h"
 
 using namespace shading;
 using namespace shading::tb;

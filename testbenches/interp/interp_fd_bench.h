@@ -15,8 +15,8 @@
 
 #include "interp/fd_eval.h"
 #include "interp/fd_eval_fast.h"
-#include "interp/interp_bench_common.h"
-#include "interp/interp_line.h"
+#include "testbenches/interp/interp_bench_common.h"
+#include "testbenches/interp/interp_line.h"
 
 namespace shading::tb {
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "interp/fd_eval_var.h"
-#include "interp/interp_bench_common.h"
-#include "interp/interp_fd_bench.h"
+#include "testbenches/interp/interp_bench_common.h"
+#include "testbenches/interp/interp_fd_bench.h"
 
 namespace shading::tb {
 

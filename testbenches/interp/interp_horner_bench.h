@@ -12,8 +12,8 @@
 
 #include "interp/horner_unit.h"
 #include "interp/horner_unit_fast.h"
-#include "interp/interp_bench_common.h"
-#include "interp/interp_line.h"
+#include "testbenches/interp/interp_bench_common.h"
+#include "testbenches/interp/interp_line.h"
 
 namespace shading::tb {
 

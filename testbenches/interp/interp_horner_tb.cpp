@@ -13,9 +13,9 @@
 #include <fstream>
 #include <iostream>
 
-#include "common/bench_runner.h"
-#include "interp/interp_horner_bench.h"
-#include "interp/interp_line.h"
+#include "testbenches/common/bench_runner.h"
+#include "testbenches/interp/interp_horner_bench.h"
+#include "testbenches/interp/interp_line.h"
 
 using namespace shading;
 using namespace shading::tb;

@@ -19,8 +19,8 @@
 
 #include "golden/interp_golden.h"
 #include "interp/fd_ctrl.h"
-#include "interp/interp_bench_common.h"
-#include "interp/interp_line.h"
+#include "testbenches/interp/interp_bench_common.h"
+#include "testbenches/interp/interp_line.h"
 #include "interp/interp_line_unit.h"
 #include "interp/interp_line_unit_fast.h"
 

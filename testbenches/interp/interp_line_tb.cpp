@@ -11,9 +11,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "common/bench_runner.h"
-#include "interp/interp_line.h"
-#include "interp/interp_line_bench.h"
+#include "testbenches/common/bench_runner.h"
+#include "testbenches/interp/interp_line.h"
+#include "testbenches/interp/interp_line_bench.h"
 
 using namespace shading;
 using namespace shading::tb;

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "options/tool_options.h"
+#include "testbenches/options/tool_options.h"
 #include "formats/fixed_point.h"
-#include "interp/interp_line.h"
+#include "testbenches/interp/interp_line.h"
 
 using namespace shading;
 using namespace shading::tb;

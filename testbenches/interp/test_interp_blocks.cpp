@@ -5,7 +5,7 @@
 
 #include <systemc>
 
-#include "common/report_log.h"
+#include "testbenches/common/report_log.h"
 #include "blocks/adder.h"
 #include "blocks/div3_shift_add.h"
 #include "blocks/inverter_bank.h"

@@ -4,11 +4,11 @@
 
 #include <random>
 
-#include "common/report_log.h"
-#include "common/vcd_names.h"
-#include "common/sim_guard.h"
-#include "interp/interp_line.h"
-#include "interp/interp_coef_bench.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/vcd_names.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/interp/interp_line.h"
+#include "testbenches/interp/interp_coef_bench.h"
 #include "core/trace.h"
 
 using namespace shading;

@@ -7,12 +7,12 @@
 
 #include <cstdio>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "interp/coef_unit_cubic.h"
 #include "interp/coef_unit_fast.h"
 #include "interp/coef_unit_quad.h"
-#include "interp/interp_bench_common.h"
+#include "testbenches/interp/interp_bench_common.h"
 
 using namespace shading;
 using namespace shading::tb;

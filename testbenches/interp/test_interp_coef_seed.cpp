@@ -11,8 +11,8 @@
 #include <systemc>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "formats/fixed_point.h"
 #include "golden/interp_golden.h"
 #include "interp/coef_unit_cubic_seed.h"

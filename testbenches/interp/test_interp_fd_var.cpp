@@ -5,11 +5,11 @@
 
 #include <random>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "common/vcd_names.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/common/vcd_names.h"
 #include "core/trace.h"
-#include "interp/interp_fd_var_bench.h"
+#include "testbenches/interp/interp_fd_var_bench.h"
 
 using namespace shading;
 using namespace shading::tb;

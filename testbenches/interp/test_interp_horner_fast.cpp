@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "common/pin_compare.h"
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "interp/interp_horner_bench.h"
+#include "testbenches/common/pin_compare.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/interp/interp_horner_bench.h"
 
 using namespace shading;
 using namespace shading::tb;

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <random>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "common/vcd_names.h"
-#include "interp/interp_line.h"
-#include "interp/interp_line_bench.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/common/vcd_names.h"
+#include "testbenches/interp/interp_line.h"
+#include "testbenches/interp/interp_line_bench.h"
 #include "core/trace.h"
 
 using namespace shading;

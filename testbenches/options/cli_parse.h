@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "common/exit_status.h"
+#include "testbenches/common/exit_status.h"
 
 namespace shading::tb {
 

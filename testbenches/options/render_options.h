@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/pipeline.h"
-#include "options/tool_options.h"
+#include "golden_pipeline/pipeline.h"
+#include "testbenches/options/tool_options.h"
 
 namespace shading::render_program {
 

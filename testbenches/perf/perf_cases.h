@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "perf_harness.h"
-#include "tlm/tlm_initiator.h"
+#include "testbenches/tlm/tlm_initiator.h"
 #include "tlm_utils/tlm_quantumkeeper.h"
 
 namespace shading::perf {

@@ -36,24 +36,24 @@
 #include <systemc>
 #include <vector>
 
-#include "common/child_processes.h"
-#include "common/report_log.h"
+#include "testbenches/common/child_processes.h"
+#include "testbenches/common/report_log.h"
 #include "core/trace.h"
 #include "golden/interp_golden.h"
 #include "golden/specular_golden.h"
 #include "golden/ua22802_golden.h"
 #include "golden/ua60553_tuned_golden.h"
-#include "interp/interp_coef_bench.h"
-#include "interp/interp_fd_bench.h"
-#include "interp/interp_horner_bench.h"
-#include "interp/interp_line_bench.h"
+#include "testbenches/interp/interp_coef_bench.h"
+#include "testbenches/interp/interp_fd_bench.h"
+#include "testbenches/interp/interp_horner_bench.h"
+#include "testbenches/interp/interp_line_bench.h"
 #include "perf_cases.h"
 #include "perf_harness.h"
-#include "pipeline/pipeline.h"
-#include "pipeline_sim.h"
+#include "golden_pipeline/pipeline.h"
+#include "testbenches/pipeline/pipeline_sim.h"
 #include "scene/world.h"
 #include "tlm/line_tlm.h"
-#include "tlm/tlm_initiator.h"
+#include "testbenches/tlm/tlm_initiator.h"
 
 // The fast pin-level abstractions of the interpolation paper's units and of the pipeline (modules/interp/*_fast.h,
 // modules/pipeline/shading_pipeline_fast.h), when the tree has them.

@@ -1,4 +1,4 @@
-# The golden pipeline (src/pipeline/golden_pipeline.cpp, metrics.cpp): the sample stage, one interval,
+# The golden pipeline (src/golden_pipeline/golden_pipeline.cpp, metrics.cpp): the sample stage, one interval,
 # whole frames and the error measures, against hand-worked values, the real-valued interpolation
 # reference and the scene's per-pixel references. Plain C++, no simulation: tests may share a process.
 shading_add_gtest(test_pipeline_golden SOURCES test_pipeline_golden.cpp test_pipeline_frame.cpp LIBS shading_pipeline shading_golden TIMEOUT 120)

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 #include "scene/scene.h"
 
 namespace golden_test {

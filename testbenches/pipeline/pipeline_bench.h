@@ -17,7 +17,7 @@
 
 #include "core/report_ids.h"
 #include "pipeline/frame_buffer.h"
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 #include "pipeline/shading_pipeline.h"
 
 namespace shading {

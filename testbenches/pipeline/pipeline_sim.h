@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "interp/abstraction.h"
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 
 namespace shading::pipeline {
 

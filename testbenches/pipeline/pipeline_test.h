@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 #include "pipeline_sim.h"
 
 namespace shading::pipeline {

@@ -1,4 +1,4 @@
-# The geometry side (src/pipeline/plan.cpp) and the head's zone map (zones.cpp): plans checked against
+# The geometry side (src/golden_pipeline/plan.cpp) and the head's zone map (zones.cpp): plans checked against
 # the rasteriser's spans and discontinuities and the geometry recomputed at the documented pixels.
 # Plain C++, no simulation: tests may share a process. ZoneMapOfTheHead writes out/pipeline/zones_head.png
 # in the build tree (the zone map over the shaded head, to look at).

@@ -12,7 +12,7 @@
 #include <set>
 #include <string>
 
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 #include "scene/image.h"
 
 namespace plan_test {

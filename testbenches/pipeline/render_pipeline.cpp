@@ -1,5 +1,5 @@
 // The interpolation paper's shading system end to end: a scene is rasterised, the geometry side plans every raster
-// line into intervals (src/pipeline/plan.cpp), the bit-accurate golden pipeline shades the frame
+// line into intervals (src/golden_pipeline/plan.cpp), the bit-accurate golden pipeline shades the frame
 // (golden_frame), and with --sim the SystemC pipeline shades it again and must agree bit for bit.
 // The hardware image is measured against per-pixel shading through the same device (the
 // interpolation's error), exact Phong (the total) and the two references against each other (the
@@ -16,7 +16,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "common/exit_status.h"
+#include "testbenches/common/exit_status.h"
 #include "render_program.h"
 
 #ifndef SHADING_PIPELINE_SIM
@@ -25,7 +25,7 @@
 #if SHADING_PIPELINE_SIM
 #include <systemc>
 
-#include "common/report_log.h"
+#include "testbenches/common/report_log.h"
 #endif
 
 using namespace shading;

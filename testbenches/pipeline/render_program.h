@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "options/render_options.h"
-#include "pipeline/pipeline.h"
+#include "testbenches/options/render_options.h"
+#include "golden_pipeline/pipeline.h"
 #include "scene/image.h"
 #include "scene/raster.h"
 #include "scene/shade.h"

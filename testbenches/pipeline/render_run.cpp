@@ -14,7 +14,7 @@
 #if SHADING_PIPELINE_SIM
 #include <systemc>
 
-#include "common/report_log.h"
+#include "testbenches/common/report_log.h"
 #include "pipeline_sim.h"
 #endif
 

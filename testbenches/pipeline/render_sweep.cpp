@@ -12,7 +12,7 @@
 #include <sstream>
 #include <thread>
 
-#include "common/child_processes.h"
+#include "testbenches/common/child_processes.h"
 #include "render_program.h"
 
 namespace shading::render_program {

@@ -4,7 +4,6 @@ if(TARGET shading_pipeline)
   add_library(shading_pipeline_sim STATIC ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim.cpp
               ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_horner.cpp ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_fd.cpp
               ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_fast.cpp)
-  target_include_directories(shading_pipeline_sim PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(shading_pipeline_sim PUBLIC shading_pipeline shading_modules shading_ua22802 shading_tb_common)
 endif()
 if(TARGET shading_pipeline_sim)

@@ -11,8 +11,8 @@
 #include <string>
 #include <systemc>  // declares sc_main extern "C", as libsystemc needs it
 
-#include "options/tool_options.h"
-#include "pipeline/pipeline.h"
+#include "testbenches/options/tool_options.h"
+#include "golden_pipeline/pipeline.h"
 #include "pipeline_sim.h"
 #include "scene/raster.h"
 #include "scene/world.h"

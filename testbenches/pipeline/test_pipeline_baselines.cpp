@@ -1,4 +1,4 @@
-// The geometry side's two units (src/pipeline/plan.cpp): stepped along the line as a scan-line
+// The geometry side's two units (src/golden_pipeline/plan.cpp): stepped along the line as a scan-line
 // renderer does (the default) or from scratch per point, and the geometry-only policy's decisions.
 // Plain C++, no simulation: tests may share a process.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <set>
 #include <utility>
 
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 #include "scene/scanline.h"
 #include "scene/scene.h"
 

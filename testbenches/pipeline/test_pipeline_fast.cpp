@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "common/bench_source.h"
-#include "common/report_log.h"
+#include "testbenches/common/bench_source.h"
+#include "testbenches/common/report_log.h"
 #include "core/report_ids.h"
 #include "pipeline/shading_pipeline_fast.h"
 #include "pipeline_bench.h"

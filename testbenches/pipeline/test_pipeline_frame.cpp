@@ -9,7 +9,7 @@
 #include <string>
 
 #include "golden/interp_golden.h"
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 #include "reference/interp_reference.h"
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-// The SystemC shading pipeline (modules/pipeline/) against the golden model (src/pipeline): hand-made
+// The SystemC shading pipeline (modules/pipeline/) against the golden model (src/golden_pipeline): hand-made
 // intervals (an exact pixel, cubic case 1 and 2, quadratic, every length 4..32, saturating samples),
 // then small renders planned by make_plan for every device and both evaluators; the pixel stream's
 // count and order, the clocks per pixel against the design (hardware_ops), and bad input. Every test
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "common/vcd_names.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/common/vcd_names.h"
 #include "core/report_ids.h"
 #include "pipeline_sim.h"
 #include "pipeline_test.h"

@@ -60,7 +60,6 @@ endfunction()
 
 # The co-simulation suite: the RTL coefficient unit (4 variants) and Horner unit beside ours.
 shading_add_gtest(test_rtl_interp SOURCES test_rtl_interp.cpp TIMEOUT 300)  # 3-6 s each idle; x3-5 under sanitizers
-target_include_directories(test_rtl_interp PRIVATE ${PROJECT_SOURCE_DIR}/testbenches)
 target_link_libraries(test_rtl_interp PRIVATE Threads::Threads)
 shading_verilate_interp(test_rtl_interp Vrtl_coef_c1sa coef_unit_cubic -GSET=0 -GDIV=0)
 shading_verilate_interp(test_rtl_interp Vrtl_coef_c1ex coef_unit_cubic -GSET=0 -GDIV=1)

@@ -20,7 +20,7 @@
 
 #include "core/report_ids.h"
 #include "core/trace.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 #include "verilated_vcd_sc.h"
 
 namespace shading::tb {

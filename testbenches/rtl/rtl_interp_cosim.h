@@ -14,8 +14,8 @@
 
 #include "golden/interp_golden.h"
 #include "interp/coef_unit_cubic.h"
-#include "interp/interp_coef_bench.h"
-#include "interp/interp_horner_bench.h"
+#include "testbenches/interp/interp_coef_bench.h"
+#include "testbenches/interp/interp_horner_bench.h"
 
 namespace shading::tb {
 

@@ -11,7 +11,7 @@
 
 #include "golden/sqmul_golden.h"
 #include "golden/squared_golden.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 
 namespace shading::tb {
 

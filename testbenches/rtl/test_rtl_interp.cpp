@@ -13,10 +13,10 @@
 #include "Vrtl_coef_c2ex.h"
 #include "Vrtl_coef_c2sa.h"
 #include "Vrtl_horner_unit.h"
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "interp/interp_line.h"
-#include "rtl/rtl_interp_cosim.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/interp/interp_line.h"
+#include "testbenches/rtl/rtl_interp_cosim.h"
 
 using namespace shading;
 using namespace shading::tb;

@@ -12,15 +12,15 @@
 #include <string>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "common/vcd_names.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/common/vcd_names.h"
 #include "core/report_ids.h"
 #include "golden/specular_golden.h"
 #include "golden/ua22802_golden.h"
 #include "golden/ua60553_tuned_golden.h"
 #include "rtl_cosim_tb.h"
-#include "specular/specular_view.h"
+#include "testbenches/specular/specular_view.h"
 #include "tuned/ua60553_tuned.h"
 #include "ua22802/ua22802.h"
 #include "ua60553/ua60553.h"

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "golden/squared_golden.h"
 #include "rtl_cosim_tb.h"

@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "formats/squared_formats.h"
 #include "golden/sqmul_golden.h"
 #include "golden/squared_golden.h"
 #include "rtl_squared_tb.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 #include "verilated.h"
 
 #include "Vrtl_sqmul_saturate.h"

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "common/exit_status.h"
-#include "options/tool_options.h"
+#include "testbenches/common/exit_status.h"
+#include "testbenches/options/tool_options.h"
 #include "scene/image.h"
 #include "scene/raster.h"
 #include "scene/shade.h"

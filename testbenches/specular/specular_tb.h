@@ -26,7 +26,7 @@
 #include "golden/specular_golden.h"
 #include "formats/ua60553_formats.h"
 #include "core/report_ids.h"
-#include "common/bench_source.h"
+#include "testbenches/common/bench_source.h"
 #include "specular/fig1_pins.h"
 
 namespace shading::tb {

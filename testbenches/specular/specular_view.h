@@ -3,7 +3,7 @@
 // src/floor/formats/specular_formats.h; each device's test adds its n -> a generator's nets.
 #pragma once
 
-#include "common/vcd_names.h"
+#include "testbenches/common/vcd_names.h"
 #include "formats/specular_formats.h"
 
 namespace shading::tb {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
-#include "specular/device_traits.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/device_traits.h"
+#include "testbenches/specular/specular_tb.h"
 
 using namespace shading;
 using namespace shading::tb;

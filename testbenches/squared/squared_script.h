@@ -8,7 +8,7 @@
 #include <systemc>
 #include <vector>
 
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 
 namespace shading::tb {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "common/bench_runner.h"
+#include "testbenches/common/bench_runner.h"
 #include "golden/squared_golden.h"
 #include "scene/scene.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 #include "squared/squared.h"
 
 using namespace shading;

@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "common/vcd_names.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/common/vcd_names.h"
 #include "core/report_ids.h"
 #include "core/trace.h"
 #include "golden/squared_golden.h"
 #include "scene/scene.h"
-#include "specular/specular_view.h"
+#include "testbenches/specular/specular_view.h"
 #include "squared/squared_device.h"
 #include "squared_script.h"
 

@@ -10,11 +10,11 @@
 #include <tuple>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "golden/squared_golden.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 #include "squared/squared.h"
 
 using namespace shading;

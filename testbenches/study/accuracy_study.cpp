@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "options/tool_options.h"
+#include "testbenches/options/tool_options.h"
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "options/tool_options.h"
+#include "testbenches/options/tool_options.h"
 #include "generator_search.h"
 
 int main(int argc, char* argv[]) {

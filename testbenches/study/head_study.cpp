@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "common/exit_status.h"
-#include "options/tool_options.h"
+#include "testbenches/common/exit_status.h"
+#include "testbenches/options/tool_options.h"
 #include "head_surface.h"
 #include "scene/image.h"
 #include "scene/shade.h"

@@ -13,7 +13,7 @@
 #include "blocks/mul.h"
 #include "blocks/reg.h"
 #include "blocks/wire.h"
-#include "common/report_log.h"
+#include "testbenches/common/report_log.h"
 #include "core/report_ids.h"
 #include "core/timing_graph.h"
 #include "monitors/timing_checker.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "options/tool_options.h"
+#include "testbenches/options/tool_options.h"
 #include "golden/specular_golden.h"
 #include "golden/squared_golden.h"
 #include "golden/ua22802_golden.h"

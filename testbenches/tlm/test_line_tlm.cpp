@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "golden/interp_golden.h"
 #include "tlm/line_tlm.h"

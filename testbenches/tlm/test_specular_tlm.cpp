@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "golden/specular_golden.h"
 #include "golden/squared_golden.h"

@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "core/trace.h"
 #include "core/vcd_writer.h"
-#include "interp/interp_horner_bench.h"
-#include "pipeline_sim.h"
-#include "specular/specular_tb.h"
+#include "testbenches/interp/interp_horner_bench.h"
+#include "testbenches/pipeline/pipeline_sim.h"
+#include "testbenches/specular/specular_tb.h"
 #include "ua60553/ua60553.h"
 
 using namespace shading;

@@ -5,9 +5,9 @@
 
 #include <random>
 
-#include "common/report_log.h"
-#include "common/sim_guard.h"
-#include "specular/specular_tb.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/specular/specular_tb.h"
 #include "ua60553/ua60553.h"
 #include "tuned/ua60553_tuned.h"
 #include "golden/ua60553_tuned_golden.h"

@@ -8,8 +8,8 @@
 #include "formats/specular_formats.h"
 #include "golden/ua22802_golden.h"
 #include "golden/ua60553_tuned_golden.h"
-#include "generator_search.h"
-#include "study_metrics.h"
+#include "testbenches/study/generator_search.h"
+#include "testbenches/study/study_metrics.h"
 
 using namespace shading;
 

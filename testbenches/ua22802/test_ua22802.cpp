@@ -11,11 +11,11 @@
 #include <set>
 #include <string>
 
-#include "common/report_log.h"
-#include "common/vcd_names.h"
-#include "specular/specular_view.h"
-#include "common/sim_guard.h"
-#include "specular/specular_tb.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/vcd_names.h"
+#include "testbenches/specular/specular_view.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/specular/specular_tb.h"
 #include "core/trace.h"
 #include "ua22802/ua22802.h"
 #include "golden/ua22802_golden.h"

@@ -12,9 +12,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "common/bench_runner.h"
+#include "testbenches/common/bench_runner.h"
 #include "golden/ua22802_golden.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 #include "ua22802/ua22802.h"
 
 using namespace shading;

@@ -8,11 +8,11 @@
 #include <sstream>
 #include <string>
 
-#include "common/report_log.h"
-#include "common/vcd_names.h"
-#include "specular/specular_view.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/vcd_names.h"
+#include "testbenches/specular/specular_view.h"
 #include "core/report_ids.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 #include "core/trace.h"
 #include "ua60553/ua60553.h"
 

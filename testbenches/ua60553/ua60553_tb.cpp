@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "common/bench_runner.h"
+#include "testbenches/common/bench_runner.h"
 #include "golden/ua60553_tuned_golden.h"
 #include "scene/scene.h"
-#include "specular/specular_tb.h"
+#include "testbenches/specular/specular_tb.h"
 #include "tuned/ua60553_tuned.h"
 #include "ua60553/ua60553.h"
 

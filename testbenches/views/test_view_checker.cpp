@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "common/vcd_names.h"
+#include "testbenches/common/vcd_names.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // The interpolation paper's shading pipeline, the part after the geometry side, as bit-exact plain
 // C++: the sample stage (a colour sample from the device's specular term, the diffuse multiplier
 // and the adders) and one interval through the coefficient unit and an evaluator to clamped pixels.
-// The golden pipeline (src/pipeline/pipeline.h: golden_interval, golden_frame) and the pipeline's
+// The golden pipeline (src/golden_pipeline/pipeline.h: golden_interval, golden_frame) and the pipeline's
 // fast model (modules/pipeline/shading_pipeline_fast.h) both compute intervals with it, so it is in
 // the floor (docs/layers.md), apart from the rasteriser and the geometry side's plan.
 #pragma once

@@ -1,5 +1,5 @@
 // Number formats of the shading pipeline's sample stage (the interpolation paper leaves them open): one table, read
-// by the golden pipeline (src/pipeline/pipeline.h) and the SystemC sample channel
+// by the golden pipeline (src/golden_pipeline/pipeline.h) and the SystemC sample channel
 // (modules/pipeline/sample_channel.h). Notation: Qi.f = i integer bits, f fraction bits.
 #pragma once
 

@@ -27,7 +27,7 @@
 
 #include "golden/specular_golden.h"  // shading::golden
 #include "golden/squared_golden.h"   // shading::golden
-#include "pipeline/pipeline.h"        // shading::pipeline: frame constants, sample stage, plan, golden_interval
+#include "golden_pipeline/pipeline.h"        // shading::pipeline: frame constants, sample stage, plan, golden_interval
 #include "scene/raster.h"             // shading::scene: the rasteriser
 #include "scene/world.h"              // shading::scene: the head scene
 #include "tlm/line_tlm.h"             // shading::tlm

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 
 namespace shading::pipeline {
 

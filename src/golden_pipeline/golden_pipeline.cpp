@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "arith/squared_arith.h"
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 #include "scene/scene.h"
 
 namespace shading::pipeline {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 
 namespace shading::pipeline {
 

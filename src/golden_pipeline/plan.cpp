@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "pipeline/pipeline.h"
+#include "golden_pipeline/pipeline.h"
 
 namespace shading::pipeline {
 
