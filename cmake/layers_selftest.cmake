@@ -8,8 +8,9 @@ if(NOT SHADING_LAYERS_SCRIPT OR NOT SHADING_LAYERS_WORK)
 endif()
 
 # A tree every layer of which is present and whose includes are all allowed: a module including the
-# floor, SystemC, a module beside it and modules/pipeline (a module folder named like src/pipeline);
-# the floor including itself; a reference the floor; a golden model a reference.
+# floor, SystemC, a module beside it and modules/pipeline; the floor including itself; a reference
+# the floor; a golden model a reference; the golden pipeline the scene; a testbench a file beside it,
+# another folder's testbench header by its prefix, a module and Verilator's generated model.
 function(_write_good_tree root)
   file(REMOVE_RECURSE "${root}")
   file(WRITE "${root}/src/floor/formats/f.h" "#pragma once\n#include <cstdint>\n")
@@ -18,17 +19,24 @@ function(_write_good_tree root)
   file(WRITE "${root}/src/reference/r.h" "#pragma once\n#include \"formats/f.h\"\n")
   file(WRITE "${root}/src/golden/g.h" "#pragma once\n#include \"arith/a.h\"\n#include \"reference/r.h\"\n")
   file(WRITE "${root}/src/scene/s.h" "#pragma once\n#include \"golden/g.h\"\n")
-  file(WRITE "${root}/src/pipeline/pipeline.h" "#pragma once\n#include \"scene/s.h\"\n")
+  file(WRITE "${root}/src/golden_pipeline/pipeline.h" "#pragma once\n#include \"scene/s.h\"\n")
   file(WRITE "${root}/modules/pipeline/pipe.h" "#pragma once\n")
   file(WRITE "${root}/modules/m/beside.h" "#pragma once\n")
   file(WRITE "${root}/modules/m/unit.h"
        "#pragma once\n#include <systemc>\n#include \"arith/a.h\"\n#include \"formats/f.h\"\n"
        "#include \"beside.h\"\n#include \"pipeline/pipe.h\"\n#include \"ua22802_a_rom.h\"\n"
        "// #include \"golden/g.h\"  (a comment, not an include)\n")
+  file(WRITE "${root}/testbenches/t/helper.h" "#pragma once\n#include \"m/unit.h\"\n")
+  file(WRITE "${root}/testbenches/t/near.h" "#pragma once\n")
+  file(WRITE "${root}/testbenches/u/test.cpp"
+       "#include \"testbenches/t/helper.h\"\n#include \"golden_pipeline/pipeline.h\"\n"
+       "#include \"Vrtl_unit.h\"\n#include <glm/glm.hpp>\n")
+  file(WRITE "${root}/testbenches/t/test.cpp" "#include \"near.h\"\n#include \"pipeline/pipe.h\"\n")
 endfunction()
 
 set(failures "")
-# _case(<name> <file relative to the tree> <line appended to it> <expected: pass or fail>)
+# _case(<name> <file relative to the tree> <line appended to it> <expected: pass or fail> [<words the
+# report must contain>, instead of the file and the include])
 function(_case name file line expect)
   set(root "${SHADING_LAYERS_WORK}/${name}")
   _write_good_tree("${root}")
@@ -47,7 +55,12 @@ function(_case name file line expect)
     string(REGEX REPLACE "^#include " "" shown "${line}")
     if(rc EQUAL 0)
       set(failures "${failures}\n  ${name}: the check passed ${file} with ${line}" PARENT_SCOPE)
-    elseif(NOT err MATCHES "layers: 1 include" OR NOT err_line MATCHES "${file}: #include")
+    elseif(ARGC GREATER 4)  # the expected words of the report, given
+      string(FIND "${err_line}" "${ARGV4}" at)
+      if(at LESS 0)
+        set(failures "${failures}\n  ${name}: failed without saying ${ARGV4}: ${err_line}" PARENT_SCOPE)
+      endif()
+    elseif(NOT err MATCHES "layers: 1 problem" OR NOT err_line MATCHES "${file}: ")
       set(failures "${failures}\n  ${name}: failed, but not naming ${file} alone: ${err_line}" PARENT_SCOPE)
     else()
       string(FIND "${err}" "${shown}" at)
@@ -63,7 +76,7 @@ _case(good "" "" pass)
 _case(module_golden modules/m/unit.h "#include \"golden/g.h\"" fail)
 _case(module_reference modules/m/unit.h "#include \"reference/r.h\"" fail)
 _case(module_scene modules/m/unit.h "#include \"scene/s.h\"" fail)
-_case(module_src_pipeline modules/m/unit.h "#include \"pipeline/pipeline.h\"" fail)
+_case(module_src_pipeline modules/m/unit.h "#include \"golden_pipeline/pipeline.h\"" fail)
 _case(module_golden_angle modules/m/unit.h "#include <golden/g.h>" fail)
 _case(module_glm modules/m/unit.h "#include <glm/glm.hpp>" fail)
 _case(floor_golden src/floor/arith/a.h "#include \"golden/g.h\"" fail)
@@ -72,8 +85,15 @@ _case(floor_module src/floor/formats/f.h "#include \"m/unit.h\"" fail)
 _case(floor_systemc src/floor/arith/a.h "#include <systemc>" fail)
 _case(reference_golden src/reference/r.h "#include \"golden/g.h\"" fail)
 _case(golden_scene src/golden/g.h "#include \"scene/s.h\"" fail)
+_case(scene_module src/scene/s.h "#include \"m/unit.h\"" fail)
+_case(pipeline_module src/golden_pipeline/pipeline.h "#include \"pipeline/pipe.h\"" fail)
+_case(testbench_unprefixed testbenches/u/test.cpp "#include \"t/near.h\"" fail)
+_case(testbench_path testbenches/u/test.cpp "#include \"src/golden/g.h\"" fail)
+_case(testbench_modules_path testbenches/u/test.cpp "#include \"modules/m/unit.h\"" fail)
+# A folder name under two include roots: "m/" in src/ and in modules/.
+_case(shared_prefix src/m/other.h "#pragma once" fail "src/m/ and modules/m/: one folder name under two")
 
 if(failures)
   message(FATAL_ERROR "layers self-test:${failures}")
 endif()
-message(STATUS "layers self-test: 1 clean tree passed, 12 trees with one bad include each failed naming it")
+message(STATUS "layers self-test: 1 clean tree passed, 18 trees with one bad include or folder each failed naming it")
