@@ -177,6 +177,16 @@ std::optional<int> bench_specular_tlm(int argc, char** argv) {
     return std::nullopt;
 }
 
+std::optional<int> bench_line_tlm(int argc, char** argv) {
+    bench_line_tlm_options o;
+    if (auto rc = parse_bench_line_tlm(argc, argv, o)) return rc;
+    const std::size_t most = 1'000'000'000'000;
+    FUZZ_CHECK(within(o.lt_pixels, std::size_t{1}, most), "--lt-pixels %zu", o.lt_pixels);
+    FUZZ_CHECK(within(o.pin_pixels, std::size_t{1}, most), "--pin-pixels %zu", o.pin_pixels);
+    FUZZ_CHECK(within(o.burst, 1u, 256u), "--burst %u", o.burst);
+    return std::nullopt;
+}
+
 std::optional<int> accuracy_study(int argc, char** argv) {
     accuracy_study_options o;
     if (auto rc = parse_accuracy_study(argc, argv, o)) return rc;
@@ -246,6 +256,7 @@ const program programs[] = {
     {"render_reference", render_reference}, {"bench_specular_tlm", bench_specular_tlm},
     {"accuracy_study", accuracy_study},     {"generator_search", generator_search},
     {"head_study", head_study},             {"render_pipeline", render_pipeline},
+    {"bench_line_tlm", bench_line_tlm},
 };
 
 }  // namespace

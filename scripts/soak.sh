@@ -4,7 +4,8 @@
 # then every TLM-2.0 wrapper serves PIXELS loosely-timed
 # pixels (default 10^8) and PIN pin-accurate ones (default 2·10^5) in one process, each checked
 # against the device's golden model (bench_specular_tlm per device, bench_line_tlm), and each
-# specular wrapper PIXELS transactions of one pixel (--burst 1); prints the
+# wrapper PIXELS transactions of one pixel (bench_specular_tlm --burst 1) or one 32-pixel interval
+# (bench_line_tlm --burst 1) each, PIN of them pin-accurate; prints the
 # rates and exits 1 on any mismatch. Niced: the machine is shared.
 #   scripts/soak.sh [PIXELS [PIN]]      e.g. scripts/soak.sh 1000000000
 set -euo pipefail
@@ -26,5 +27,8 @@ for d in patent minimax rom_matched ua22802 squared; do
 done
 echo "== bench_line_tlm --lt-pixels $lt --pin-pixels $pin"
 nice build/bin/bench_line_tlm --lt-pixels "$lt" --pin-pixels "$pin" || status=1
+# One interval per access: 16 pixels per transaction (a write of the interval, a read of its 32 pixels).
+echo "== bench_line_tlm --lt-pixels $((lt * 16)) --pin-pixels $((pin * 16)) --burst 1"
+nice build/bin/bench_line_tlm --lt-pixels "$((lt * 16))" --pin-pixels "$((pin * 16))" --burst 1 || status=1
 [ $status -eq 0 ] && echo "soak: every wrapper, 0 mismatches" || echo "soak: MISMATCH or failure above" >&2
 exit $status

@@ -209,6 +209,17 @@ std::optional<int> parse_bench_specular_tlm(int argc, char** argv, bench_specula
     return std::nullopt;
 }
 
+std::optional<int> parse_bench_line_tlm(int argc, char** argv, bench_line_tlm_options& o) {
+    CLI::App app{"Throughput of the raster-line unit's TLM-2.0 wrapper, loosely timed and pin-accurate"};
+    const auto pixels = CLI::Range(std::size_t{1}, std::size_t{1'000'000'000'000});
+    app.add_option("--lt-pixels", o.lt_pixels, "pixels shaded loosely timed (whole bursts)")->check(pixels);
+    app.add_option("--pin-pixels", o.pin_pixels, "pixels shaded pin-accurate (whole bursts)")->check(pixels);
+    app.add_option("--burst", o.burst, "32-pixel intervals per access (1: one transaction per interval and direction)")
+        ->check(CLI::Range(1u, 256u));
+    SHADING_CLI_PARSE(app, argc, argv);
+    return std::nullopt;
+}
+
 std::optional<int> parse_accuracy_study(int argc, char** argv, accuracy_study_options& o) {
     CLI::App app{"accuracy study of the quadratic BRDF, the UA 22802 / UA 60553 devices and the squared-quadratic law"};
     app.add_option("--out", o.out, "output directory");

@@ -48,6 +48,11 @@ struct bench_specular_tlm_options {
     unsigned burst = 1024;  // pixels per COS_BLOCK write and RESULT_BLOCK read, 1..1024
 };
 
+struct bench_line_tlm_options {
+    std::size_t lt_pixels = 200'000'000, pin_pixels = 200'000;  // each 1..10^12
+    unsigned burst = 256;  // 32-pixel intervals per INTERVAL_BLOCK write and PIXEL_BLOCK read, 1..256
+};
+
 struct accuracy_study_options {
     std::string out = "out", data_dir = default_data_dir();
     unsigned fig2_n = 10;   // 1..1000, then at most n_max
@@ -71,6 +76,7 @@ std::optional<int> parse_interp_study(int argc, char** argv, interp_study_option
 std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
 std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
 std::optional<int> parse_bench_specular_tlm(int argc, char** argv, bench_specular_tlm_options& o);
+std::optional<int> parse_bench_line_tlm(int argc, char** argv, bench_line_tlm_options& o);
 std::optional<int> parse_accuracy_study(int argc, char** argv, accuracy_study_options& o);
 std::optional<int> parse_generator_search(int argc, char** argv, generator_search_options& o);
 std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o);

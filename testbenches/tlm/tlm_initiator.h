@@ -212,42 +212,4 @@ int tlm_bench_run(std::size_t lt_px, std::size_t pin_px, const std::string& titl
     return f_lt.mismatches + f_pin.mismatches == 0 && f_lt.pixels > 0 && f_pin.pixels > 0 ? 0 : 1;
 }
 
-// A pixel count on the command line: decimal digits only, 1..10^12 (a benchmark of no pixels has no
-// figures). False for anything else ("", "12x", "-5", "1e6", an overflow).
-inline bool parse_pixels(const char* text, std::size_t& out) {
-    if (text == nullptr || *text == '\0') return false;
-    uint64_t v = 0;
-    for (const char* c = text; *c != '\0'; ++c) {
-        if (*c < '0' || *c > '9') return false;
-        v = v * 10 + static_cast<uint64_t>(*c - '0');
-        if (v > 1'000'000'000'000ull) return false;
-    }
-    if (v == 0) return false;
-    out = static_cast<std::size_t>(v);
-    return true;
-}
-
-// A benchmark's sc_main: [--lt-pixels N] [--pin-pixels N] (defaults lt_px, pin_px), then
-// tlm_bench_run. Bad usage - an unknown option, a missing value, a value that is not a whole
-// number in 1..10^12 - exits 2 with a message (common/exit_status.h), before anything runs.
-template <class W, class Run>
-int tlm_bench_main(int argc, char* argv[], std::size_t lt_px, std::size_t pin_px, const std::string& title,
-                   Run run) {
-    for (int a = 1; a < argc; a += 2) {
-        std::size_t* target = nullptr;
-        if (!std::strcmp(argv[a], "--lt-pixels")) target = &lt_px;
-        else if (!std::strcmp(argv[a], "--pin-pixels")) target = &pin_px;
-        if (target == nullptr || a + 1 >= argc || !parse_pixels(argv[a + 1], *target)) {
-            if (target == nullptr)
-                std::fprintf(stderr, "%s: unknown option '%s'\n", argv[0], argv[a]);
-            else
-                std::fprintf(stderr, "%s: %s needs a whole number of pixels in 1..10^12, got '%s'\n", argv[0], argv[a],
-                             a + 1 < argc ? argv[a + 1] : "");
-            std::fprintf(stderr, "usage: %s [--lt-pixels N] [--pin-pixels N]\n", argv[0]);
-            return 2;
-        }
-    }
-    return tlm_bench_run<W>(lt_px, pin_px, title, run);
-}
-
 }  // namespace shading::tb
