@@ -6,12 +6,20 @@
 # target's run. Prints per target the executions, libFuzzer's coverage (cov: edges, ft: features)
 # and the crashes; exits 1 if any target crashed.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     e.g. scripts/fuzz.sh 600 fuzz_tlm
+#   scripts/fuzz.sh --runs N [TARGET...]       stops each target after N executions instead (the
+#                                              long runs: scripts/fuzz.sh --runs 1000000 fuzz_tlm)
 # A crash becomes a regression test: copy it to fuzz/corpus/<target>/crash-<what> (ctest then runs
 # it as fuzz.<target>.regress.<what>), fix the cause, commit both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-60}
-shift || true
+limit=(-max_total_time="${1:-60}")
+if [ "${1:-}" = --runs ]; then
+  [[ "${2:-}" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: --runs needs a positive count" >&2; exit 2; }
+  limit=(-runs="$2")
+  shift 2
+else
+  shift || true
+fi
 all=(fuzz_obj fuzz_tlm fuzz_vcd fuzz_options)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all[@]}")
@@ -46,7 +54,7 @@ for t in "${targets[@]}"; do
     *) extra=(-max_len=4096) ;;
   esac
   rc=0
-  nice build-fuzz/bin/"$t" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
+  nice build-fuzz/bin/"$t" "${limit[@]}" -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
        -artifact_prefix="$art" "${extra[@]}" "$work" "fuzz/corpus/$t" >"$log" 2>&1 || rc=$?
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
