@@ -81,8 +81,11 @@ TEST(FormatTable, ReadmeRowsMatchSrcFormats) {
         for (std::size_t i = 0; i < formats.size(); ++i) EXPECT_EQ(got[i], written(formats[i])) << bus;
     }
     // Every row of the table is checked: a row added to the README needs its constants here.
-    for (const auto& [bus, cell] : rows)
-        if (bus != "bus") EXPECT_TRUE(expected.count(bus)) << "README.md row '" << bus << "' is not checked";
+    for (const auto& [bus, cell] : rows) {
+        if (bus != "bus") {
+            EXPECT_TRUE(expected.count(bus)) << "README.md row '" << bus << "' is not checked";
+        }
+    }
 }
 
 // The parser itself, on hand-written cells.

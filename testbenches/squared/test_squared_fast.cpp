@@ -102,7 +102,9 @@ public:
 // Both models against golden, and against each other, pin change by pin change (`pixels`: the
 // samples each must have validated, or any number when 0).
 void expect_same_pins(const dual_bench& b, std::size_t pixels) {
-    if (pixels != 0) EXPECT_EQ(b.blk_checker.samples(), pixels);
+    if (pixels != 0) {
+        EXPECT_EQ(b.blk_checker.samples(), pixels);
+    }
     EXPECT_GT(b.blk_checker.samples(), 0u);
     EXPECT_EQ(b.fst_checker.samples(), b.blk_checker.samples());
     EXPECT_EQ(b.blk_checker.mismatches(), 0u);

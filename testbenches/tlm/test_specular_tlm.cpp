@@ -373,8 +373,11 @@ TEST(SpecularTlmTiming, SquaredOtherClockAndLongStrobe) {
             EXPECT_EQ(pin.write32(addr, v), tlm::TLM_OK_RESPONSE);
             const sc_time elapsed = pin.last_elapsed;
             EXPECT_EQ(elapsed, lt.last_delay) << "access at 0x" << std::hex << addr;
-            for (uint64_t r = m::RESULT_R; r <= m::RESULT_B; r += 4)
-                if (addr == m::COS) EXPECT_EQ(pin.read32(r), lt.read32(r));
+            for (uint64_t r = m::RESULT_R; r <= m::RESULT_B; r += 4) {
+                if (addr == m::COS) {
+                    EXPECT_EQ(pin.read32(r), lt.read32(r));
+                }
+            }
             return elapsed;
         };
         both_write(m::KSI_R, 200);
