@@ -48,7 +48,7 @@ public:
             SC_REPORT_ERROR(msg::trace, ("cannot open " + filename_ + " for writing").c_str());
             return;  // reached only if errors do not throw: every call below is then a no-op
         }
-        buf_.resize(1 << 20);
+        grow(1 << 20);
         attach();
     }
 
@@ -68,7 +68,7 @@ public:
         timestamp(high, low);
         if (high > start_high_ || (high == start_high_ && low > start_low_)) {
             ensure(kStampBytes);
-            used_ = static_cast<std::size_t>(put_stamp(buf_.data() + used_, high, low) - buf_.data());
+            used_ = static_cast<std::size_t>(put_stamp(buf_.get() + used_, high, low) - buf_.get());
         }
         flush();
         std::fclose(fp_);
@@ -160,7 +160,7 @@ protected:
         timestamp(high, low);
         if (low != 0 && !low_units_) resolution_warning();
         ensure(step_bytes_);
-        char* const begin = buf_.data() + used_;
+        char* const begin = buf_.get() + used_;
         char* out = begin;
         bool stamped = false;
         for (entry& e : entries_) {
@@ -305,12 +305,12 @@ private:
         for (const entry& e : entries_) step_bytes_ += static_cast<std::size_t>(e.width) + 9;
         append("$dumpvars\n");
         ensure(step_bytes_);
-        char* out = buf_.data() + used_;
+        char* out = buf_.get() + used_;
         for (entry& e : entries_) {
             e.last = e.uint != nullptr ? e.uint->value() : static_cast<uint64_t>(*e.boolean);
             out = put_value(out, e, e.last);
         }
-        used_ = static_cast<std::size_t>(out - buf_.data());
+        used_ = static_cast<std::size_t>(out - buf_.get());
         append("$end\n\n");
         names_.clear();
         names_.shrink_to_fit();
@@ -415,27 +415,34 @@ private:
 
     // Room for `n` more bytes in the buffer, flushing it if needed.
     void ensure(std::size_t n) {
-        if (used_ + n <= buf_.size()) return;
+        if (used_ + n <= cap_) return;
         flush();
-        if (n > buf_.size()) buf_.resize(n);
+        if (n > cap_) grow(n);
+    }
+
+    // A buffer of n bytes, left uninitialised: a short trace touches a few of its pages, and the
+    // zeroing a std::vector does cost each writer a MiB of stores (most of a short run's time).
+    void grow(std::size_t n) {
+        buf_.reset(new char[n]);
+        cap_ = n;
     }
 
     void append(const std::string& s) {
         if (fp_ == nullptr) return;
         ensure(s.size());
-        std::memcpy(buf_.data() + used_, s.data(), s.size());
+        std::memcpy(buf_.get() + used_, s.data(), s.size());
         used_ += s.size();
     }
 
     void flush() {
-        if (used_ != 0) std::fwrite(buf_.data(), 1, used_, fp_);
+        if (used_ != 0) std::fwrite(buf_.get(), 1, used_, fp_);
         used_ = 0;
     }
 
     std::string filename_;
     std::FILE* fp_ = nullptr;
-    std::vector<char> buf_;
-    std::size_t used_ = 0;
+    std::unique_ptr<char[]> buf_;
+    std::size_t cap_ = 0, used_ = 0;
     std::size_t step_bytes_ = 0;
     std::vector<entry> entries_;
     std::vector<std::string> names_;  // until the header is written
