@@ -1,9 +1,10 @@
 // The project's VCD writer (core/vcd_writer.h) against SystemC's own writer, the independent
 // reference: both trace the same signals in the same run (vcd_file with vcd_writer_kind::both), and
 // the files must be the same byte for byte from $timescale on (only $date may differ) - on the
-// block-level UA 60553 device with its block delays, the Horner unit, the whole pipeline, and a small
-// bench of corner cases whose file is also written out by hand. Then the escape hatch
-// (SHADING_TRACE_WRITER) and the writer's reports. Each test elaborates once (its own process).
+// block-level UA 60553 device with its block delays, the Horner unit, and a small bench of corner
+// cases whose file is also written out by hand (the whole pipeline: test_vcd_writer_pipeline.cpp).
+// Then the escape hatch (SHADING_TRACE_WRITER) and the writer's reports. Each test elaborates once
+// (its own process).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -19,8 +20,8 @@
 #include "core/trace.h"
 #include "core/vcd_writer.h"
 #include "testbenches/interp/interp_horner_bench.h"
-#include "testbenches/pipeline/pipeline_sim.h"
 #include "testbenches/specular/specular_tb.h"
+#include "testbenches/trace/vcd_compare.h"
 #include "ua60553/ua60553.h"
 
 using namespace shading;
@@ -30,56 +31,6 @@ using sc_core::SC_NS;
 using sc_core::sc_time;
 
 namespace {
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-// The file from its $timescale block on: $date (the wall clock) and $version come before it.
-std::string body(const std::string& vcd) {
-    const auto at = vcd.find("$timescale");
-    return at == std::string::npos ? std::string() : vcd.substr(at);
-}
-
-std::size_t count_lines_starting(const std::string& text, char c) {
-    std::size_t n = text.size() > 0 && text[0] == c ? 1 : 0;
-    for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 1))
-        if (at + 1 < text.size() && text[at + 1] == c) ++n;
-    return n;
-}
-
-// Where two texts first differ, with the line on each side (a failure that says where).
-std::string first_difference(const std::string& a, const std::string& b) {
-    std::istringstream sa(a), sb(b);
-    std::string la, lb;
-    for (std::size_t line = 1;; ++line) {
-        const bool ga = static_cast<bool>(std::getline(sa, la)), gb = static_cast<bool>(std::getline(sb, lb));
-        if (!ga && !gb) return "no difference";
-        if (ga != gb || la != lb)
-            return "line " + std::to_string(line) + " of the body: ours \"" + (ga ? la : "<end>") + "\", SystemC's \"" +
-                   (gb ? lb : "<end>") + "\"";
-    }
-}
-
-// Both files of a vcd_file(base, both): ours at base.vcd, SystemC's at base_systemc.vcd; the same
-// bytes after the header, with at least `min_stamps` time stamps and `min_vars` variables in them.
-void expect_same_files(const std::string& base, std::size_t min_stamps, std::size_t min_vars) {
-    const std::string ours = slurp(base + ".vcd"), theirs = slurp(base + "_systemc.vcd");
-    ASSERT_FALSE(body(ours).empty()) << base << ".vcd has no $timescale";
-    ASSERT_FALSE(body(theirs).empty()) << base << "_systemc.vcd has no $timescale";
-    EXPECT_TRUE(body(ours) == body(theirs)) << first_difference(body(ours), body(theirs));
-    EXPECT_EQ(ours.substr(0, 6), "$date\n");
-    EXPECT_NE(ours.find("$version\n " + std::string(sc_core::sc_version()) + "\n$end\n"), std::string::npos);
-    EXPECT_GE(count_lines_starting(body(theirs), '#'), min_stamps) << "too short a run to compare";
-    EXPECT_GE(count_lines_starting(body(theirs), '$'), min_vars) << "too few variables to compare";
-    if (!::testing::Test::HasFailure()) {  // kept for a look when they differ
-        std::filesystem::remove(base + ".vcd");
-        std::filesystem::remove(base + "_systemc.vcd");
-    }
-}
 
 // ---- A bench of corner cases, its file written out by hand ----
 
@@ -155,7 +106,6 @@ std::string corner_expected() {
            "#10000000000\n";
 }
 
-std::string temp_base(const std::string& stem) { return ::testing::TempDir() + stem; }
 
 }  // namespace
 
@@ -199,38 +149,6 @@ TEST(VcdWriter, SameFileAsSystemCOnTheHornerUnit) {
         EXPECT_EQ(bench.checker.mismatches(), 0u);
     }
     expect_same_files(base, 200, 20);
-}
-
-TEST(VcdWriter, SameFileAsSystemCOnThePipeline) {
-    // simulate_frame opens its vcd_file itself: SHADING_TRACE_WRITER=both makes it write both files.
-    ASSERT_EQ(setenv("SHADING_TRACE_WRITER", "both", 1), 0);
-    const std::string base = temp_base("vcd_writer_pipeline");
-    pipeline::plan p;
-    p.width = 8;
-    p.height = 1;
-    pipeline::interval_job j;
-    j.m = 2;
-    j.len = 4;
-    const uint32_t nh[4] = {30000, 32600, 32200, 29000}, nl[4] = {20000, 22000, 24000, 26000};
-    for (int i = 0; i < 4; ++i) j.s[i] = {nh[i], nl[i]};
-    p.jobs.push_back(j);
-    j.x0 = 4;
-    j.deg2 = true;
-    p.jobs.push_back(j);
-    p.pixels = 8;
-    pipeline::frame_constants k;
-    k.n = 32;
-    k.ksi = {200, 180, 90};
-    k.kdi = {150 * 256, 100 * 256, 60 * 256};  // Q8.8
-    k.ambient = {10 * 256, 8 * 256 + 77, 12 * 256 + 3};
-    pipeline::plan_config c;
-    c.eval = pipeline::evaluator::horner;
-    c.m = 2;
-    pipeline::sim_options o;
-    o.vcd_path = base;
-    const auto r = pipeline::simulate_frame(p, k, scene::device_config{}, c, o);
-    EXPECT_EQ(r.mismatches, 0u);
-    expect_same_files(base, 100, 60);
 }
 
 // ---- The escape hatch and the reports ----
