@@ -85,6 +85,10 @@ struct plan_config {
     unsigned m_max = 5;
     double length_tol = 1.0;               // adaptive length: largest accepted error estimate, 8-bit levels
     bool exact_fallback = true;            // adaptive length: where even 2^m_min fails, 2^m_min exact pixels
+    // Adaptive and geometry length: an accepted cubic interval of 2^m > 2^m_min pixels goes out as two
+    // quadratic intervals of 2^(m-1) through its four samples and its check point (t = 0, 1/4, 1/2 and
+    // 1/2, 3/4, 1): the point the decision paid for becomes a sample instead of being thrown away.
+    bool split_at_check = false;
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
     // Geometry length policy: 0 < lobe_tol; the spread of N.H an interval may span in the highlight,
@@ -122,7 +126,8 @@ geometry_limits geometry_limits_of(const frame_constants& k, const plan_config& 
 // to m_min and takes the first whose polynomial misses the exact colour at the middle of its widest
 // gap (case 1 t = 3/4, case 2 t = 1/4: a check point) by at most length_tol and, for a cubic, whose
 // quadratic through t = 0, 1/2, 1 misses the cubic's fourth sample by at most 2 x length_tol; with
-// exact_fallback, where even m_min fails, its 2^m_min pixels are exact.
+// exact_fallback, where even m_min fails, its 2^m_min pixels are exact. With split_at_check the
+// decisions are the same; only each accepted cubic above 2^m_min is delivered as its two halves.
 struct plan {
     unsigned width = 0, height = 0;
     std::vector<interval_job> jobs;

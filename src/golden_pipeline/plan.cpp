@@ -268,7 +268,10 @@ private:
             if (const auto job = choose(lg, y, pos, lowest, top)) {
                 pos += job->len;
                 p_.pixels += job->len;
-                p_.jobs.push_back(*job);
+                if (splits(*job))
+                    split_at_check(lg, *job);
+                else
+                    p_.jobs.push_back(*job);
                 grow_to = std::min(job->m + 1, c_.m_max);
             } else {
                 // Even the shortest interval misses its check: its pixels are exact.
@@ -278,6 +281,28 @@ private:
         }
         // The tail: exact pixels (the last one's geometry is the last interval's t = 1 sample).
         for (unsigned x = pos; x <= xb; ++x) exact(lg, y, x);
+    }
+
+    // An accepted cubic above 2^m_min under a checking length policy: its check point (the middle of
+    // its widest gap, length_check) lies on the eighths 0, 2, 4, 6, 8 with its samples in either sample
+    // set, so the halves' quadratics (t = 0, 1/2, 1 of each) use exactly those five points.
+    bool splits(const interval_job& job) const {
+        return c_.split_at_check && c_.length != length_policy::fixed && job.m > interp::m_min && !job.deg2 &&
+               job.len == (1u << job.m);
+    }
+    void split_at_check(line_geometry& lg, const interval_job& whole) {
+        const unsigned half = 1u << (whole.m - 1);
+        for (unsigned h = 0; h < 2; ++h) {
+            interval_job job = whole;
+            job.x0 = whole.x0 + h * half;
+            job.len = half;
+            job.m = whole.m - 1;
+            job.deg2 = true;
+            for (unsigned i = 0; i < 3; ++i) job.s[i] = lg.sample(job.x0 + quad_points[i] * half / 8);
+            job.s[3] = job.s[2];
+            job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(job.x0)));
+            p_.jobs.push_back(job);
+        }
     }
 
     void exact(line_geometry& lg, unsigned y, unsigned x) {

@@ -35,6 +35,9 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
         ->check(not_nan());
     app.add_flag("--exact-fallback,!--no-exact-fallback", o.pc.exact_fallback,
                  "adaptive length: exact pixels where even 2^m_min misses the tolerance (default on)");
+    app.add_flag("--split-at-check,!--no-split-at-check", o.pc.split_at_check,
+                 "adaptive and geometry length: send each accepted cubic above 2^m_min as two quadratics "
+                 "through its samples and its check point (default off)");
     app.add_flag("--surface-breaks,!--no-surface-breaks", o.pc.surface_breaks,
                  "also end segments at folds (neighbouring pixels' triangles share no vertex; default on)");
     app.add_option("--degree", o.degree, "degree policy")
@@ -72,7 +75,7 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
         ->check(CLI::PositiveNumber)->check(not_nan());
     app.add_flag("--sweep", o.sweep, "run the grid of configurations on the golden model, one CSV (--csv)");
     app.add_option("--jobs", o.jobs, "--sweep: parallel processes (default: the hardware's cores)");
-    app.add_option("--grid", o.grid, "--sweep: small, full, exponents (every device x n = 2..500, this command's plan settings) or claims (--scenes x --lights x --ns x --sizes x devices x twelve policies)")
+    app.add_option("--grid", o.grid, "--sweep: small, full, exponents (every device x n = 2..500, this command's plan settings) or claims (--scenes x --lights x --ns x --sizes x devices x sixteen policies)")
         ->check(CLI::IsMember({"small", "full", "exponents", "claims"}));
     app.add_option("--csv", o.csv, "--sweep: CSV path (default: <out>/sweep.csv)");
     app.add_option("--shard", o.shard, "--sweep: run only shard I of N (configurations i with i % N = I - 1)");

@@ -135,8 +135,8 @@ inline void expect_valid_plan(const scene::rasterised& r, const plan& p, const p
         }
         EXPECT_EQ(j.zone, head_zone(r, scene::geometry_at(r, j.x0, j.y, nullptr)));
         // Exact pixels only in a segment's tail, shorter than the shortest interval plus its t = 1 pixel
-        // (or, with the adaptive length's exact fallback, in runs of 2^m_min: ExactFallback).
-        if (j.m == 0 && !(c.length == length_policy::adaptive && c.exact_fallback)) {
+        // (or, with a checking length policy's exact fallback, in runs of 2^m_min: ExactFallback).
+        if (j.m == 0 && !(c.length != length_policy::fixed && c.exact_fallback)) {
             const unsigned end = segment_end(lc, j.x0);
             for (std::size_t k = i + 1; k < p.jobs.size() && p.jobs[k].y == j.y && p.jobs[k].x0 <= end; ++k)
                 EXPECT_EQ(p.jobs[k].m, 0u) << "an interval after an exact pixel in the same segment";

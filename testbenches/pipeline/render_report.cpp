@@ -135,6 +135,7 @@ json report_json(const options& o, const render_data& d) {
                      {"m_max", cfg.m_max},
                      {"length_tol", cfg.length_tol},
                      {"exact_fallback", cfg.exact_fallback},
+                     {"split_at_check", cfg.split_at_check},
                      {"surface_breaks", cfg.surface_breaks},
                      {"degree", degree_policy_name(cfg.degree)},
                      {"degree_tol", cfg.degree_tol},
@@ -199,7 +200,7 @@ std::string report_md(const options& o, const render_data& d) {
         md << " (m = " << cfg.m << ", " << (1u << cfg.m) << " pixels)";
     else
         md << " (m " << cfg.m_min << ".." << cfg.m_max << ", tolerance " << cfg.length_tol << " levels, exact fallback "
-           << (cfg.exact_fallback ? "on" : "off") << ")";
+           << (cfg.exact_fallback ? "on" : "off") << (cfg.split_at_check ? ", split at the check point" : "") << ")";
     md << ", degree " << degree_policy_name(cfg.degree);
     if (cfg.degree == degree_policy::adaptive) md << " (tolerance " << cfg.degree_tol << ")";
     md << ", evaluator " << evaluator_name(cfg.eval) << ", sample set " << o.set << ", /3 " << o.div3

@@ -468,3 +468,75 @@ TEST(PipelinePlan, Case2SamplePoints) {
     EXPECT_GT(quad, 0u);
     EXPECT_GT(cubic, 0u);
 }
+
+// ---- Splitting at the check point ----
+
+// split_at_check changes no decision: the plan with it is the plan without it, each accepted cubic
+// above 2^m_min replaced by two quadratics of half its length whose samples are the geometry at its
+// t = 0, 1/4, 1/2 and 1/2, 3/4, 1 (recomputed here from the rasteriser), in either sample set and under
+// either checking length policy; the geometry side computes the same points. Fixed lengths ignore it.
+TEST(PipelinePlan, SplitAtCheckKeepsTheDecisions) {
+    const auto& f = head();
+    for (const auto length : {length_policy::adaptive, length_policy::geometry, length_policy::fixed})
+        for (const auto set : {interp::sample_set::case1, interp::sample_set::case2}) {
+            SCOPED_TRACE(std::string(length_policy_name(length)) + (set == interp::sample_set::case1 ? " case1" : " case2"));
+            plan_config c = head_fixed(4);
+            c.length = length;
+            c.set = set;
+            c.length_tol = 1.0;
+            const plan whole = make_plan(f.r, f.k, patent, c);
+            c.split_at_check = true;
+            const plan split = make_plan(f.r, f.k, patent, c);
+            expect_valid_plan(f.r, split, c);
+            EXPECT_EQ(split.geometry_points, whole.geometry_points);
+            EXPECT_EQ(split.geometry_stepped.long_ops(), whole.geometry_stepped.long_ops());
+            std::size_t k = 0, halved = 0;
+            for (const interval_job& j : whole.jobs) {
+                ASSERT_LT(k, split.jobs.size());
+                const bool splits = length != length_policy::fixed && !j.deg2 && j.m > c.m_min;
+                if (!splits) {
+                    const interval_job& s = split.jobs[k++];
+                    EXPECT_EQ(s.y, j.y);
+                    EXPECT_EQ(s.x0, j.x0);
+                    EXPECT_EQ(s.m, j.m);
+                    EXPECT_EQ(s.deg2, j.deg2);
+                    EXPECT_EQ(s.s, j.s);
+                    continue;
+                }
+                ++halved;
+                ASSERT_LT(k + 1, split.jobs.size());
+                const unsigned n = 1u << j.m;
+                for (unsigned h = 0; h < 2; ++h) {
+                    const interval_job& s = split.jobs[k++];
+                    EXPECT_EQ(s.y, j.y);
+                    EXPECT_EQ(s.x0, j.x0 + h * n / 2);
+                    EXPECT_EQ(s.m, j.m - 1);
+                    EXPECT_TRUE(s.deg2);
+                    for (unsigned i = 0; i < 3; ++i)
+                        EXPECT_EQ(s.s[i], sample_of(scene::geometry_at(f.r, s.x0 + i * n / 4, s.y, nullptr)));
+                }
+            }
+            EXPECT_EQ(k, split.jobs.size());
+            if (length == length_policy::fixed) {
+                EXPECT_EQ(halved, 0u);
+            } else {
+                EXPECT_GT(halved, 0u);
+            }
+        }
+}
+
+// The point of the split: the halves' quadratics pass through the check point as well, so the frame
+// is closer to per-pixel shading than with the whole cubics (head at 128, adaptive length).
+TEST(PipelinePlan, SplitAtCheckLowersTheError) {
+    const auto& f = head();
+    plan_config c = head_fixed(4);
+    c.length = length_policy::adaptive;
+    c.length_tol = 1.0;
+    const scene::device_config squared{scene::specular_device::squared};
+    const scene::shaded_image ref = to_image(per_pixel_frame(f.r, f.k, squared));
+    const double whole = compare(to_image(golden_frame(make_plan(f.r, f.k, squared, c), f.k, squared, c)), ref).nmse;
+    c.split_at_check = true;
+    const double split = compare(to_image(golden_frame(make_plan(f.r, f.k, squared, c), f.k, squared, c)), ref).nmse;
+    EXPECT_GT(whole, 0.0);
+    EXPECT_LT(split, 0.9 * whole) << "whole cubics " << whole << ", split " << split;
+}
