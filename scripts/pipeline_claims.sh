@@ -2,12 +2,12 @@
 # The claims sweep (opt-in, long: not part of scripts/run.sh or CI, whose ctest runs a 24-pixel smoke
 # of it, pipeline.sweep.claims_shards): render_pipeline --sweep --grid claims over the head, sphere and
 # torus (and any OBJ given with --scenes), three light directions, n = 5, 20, 100, 500, sizes 512 and
-# 1024, every device and twelve policies (the default fixed length, the paper's zones, the adaptive
+# 1024, every device and sixteen policies (the default fixed length, the paper's zones, the adaptive
 # and the geometry-only policies, each through the forward differences and the Horner unit), golden
 # model only, then each policy's worst case and median (scripts/pipeline_claims.py).
 #   scripts/pipeline_claims.sh [OUT] [render_pipeline options...]
 #   e.g. scripts/pipeline_claims.sh out/claims --device squared --sizes 512
-# The whole grid is 4 320 configurations (about 0.8 s each at 512, 3 s at 1024 on one core). To spread
+# The whole grid is 5 760 configurations (about 0.8 s each at 512, 3 s at 1024 on one core). To spread
 # it over machines: add --shard I/N to each of N runs (same options), or --emit-jobs for one command
 # line per configuration (GNU parallel, a Slurm array), then pipeline_claims.py OUT.md their CSVs.
 set -euo pipefail

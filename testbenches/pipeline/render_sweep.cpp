@@ -28,6 +28,7 @@ struct sweep_point {
     int n = -1;  // -1: --n or the scene's
     std::string scene, light;  // empty: --scene, --light
     unsigned size = 0;         // 0: --size
+    bool split = false;        // --split-at-check (or the command line's)
 };
 
 // small: two devices x the degree policies x fixed m = 3..5 and three adaptive-length tolerances,
@@ -35,7 +36,7 @@ struct sweep_point {
 // tolerances, three adaptive-degree tolerances, and the geometry-only policies; exponents: every
 // device x n = 2..500 with the command line's own plan settings (the total error against Phong per
 // device and n); claims: scenes (--scenes, default head, sphere, torus) x light directions (--lights)
-// x n (--ns) x sizes (--sizes) x devices x twelve policies (render_sweep.cpp: claims_policies).
+// x n (--ns) x sizes (--sizes) x devices x sixteen policies (eight, each through both evaluators).
 std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& only_device, const options& o) {
     std::vector<std::string> devices = grid != "small" ? scene::device_names() : std::vector<std::string>{"patent", "minimax"};
     if (!only_device.empty()) devices = {only_device};
@@ -56,10 +57,13 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
             double ltol;
             const char* degree;
             double dtol;
+            bool split;
         };
-        const pol policies[] = {{"fixed", 4, 0.5, "cubic", 0.5},        {"fixed", 3, 0.5, "zones", 0.5},
-                                {"adaptive", 4, 1.0, "adaptive", 0.5},  {"adaptive", 4, 2.0, "adaptive", 0.5},
-                                {"geometry", 4, 1.0, "geometry", 0.5},  {"geometry", 4, 2.0, "geometry", 0.5}};
+        // The last two: the head's cheapest at NMSE <= 1e-5 with each checking policy, split at the check.
+        const pol policies[] = {{"fixed", 4, 0.5, "cubic", 0.5, false},       {"fixed", 3, 0.5, "zones", 0.5, false},
+                                {"adaptive", 4, 1.0, "adaptive", 0.5, false}, {"adaptive", 4, 2.0, "adaptive", 0.5, false},
+                                {"geometry", 4, 1.0, "geometry", 0.5, false}, {"geometry", 4, 2.0, "geometry", 0.5, false},
+                                {"adaptive", 4, 1.3, "cubic", 0.5, true},     {"geometry", 4, 2.0, "geometry", 0.5, true}};
         std::vector<sweep_point> g;
         for (const auto& sc : o.claims_scenes)
             for (const auto& li : o.claims_lights)
@@ -68,7 +72,7 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
                         for (const auto& d : devices)
                             for (const pol& p : policies)
                                 for (const char* ev : {"fd", "horner"})
-                                    g.push_back({d, p.length, p.degree, ev, p.m, p.ltol, p.dtol, n, sc, li, sz});
+                                    g.push_back({d, p.length, p.degree, ev, p.m, p.ltol, p.dtol, n, sc, li, sz, p.split});
         return g;
     }
     const std::vector<unsigned> ms = grid == "full" ? std::vector<unsigned>{2, 3, 4, 5, 6} : std::vector<unsigned>{3, 4, 5};
@@ -188,6 +192,7 @@ int run_sweep(const options& o) {
                                       num(sp.degree_tol), "--eval", sp.eval, "--set", o.set, "--div3", o.div3,
                                       "--depth-step", num(o.pc.depth_step), "--unit", o.unit,
                                       o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
+                                      sp.split || o.pc.split_at_check ? "--split-at-check" : "--no-split-at-check",
                                       o.pc.surface_breaks ? "--surface-breaks" : "--no-surface-breaks", "--no-sim", "--no-images", "--md", "",
                                       "--json", "report.json", "--out", (tmp / std::to_string(i)).string()};
         const std::string light = sp.light.empty() ? o.light : sp.light;
@@ -245,7 +250,7 @@ int run_sweep(const options& o) {
            "nmse_interp,psnr_interp,max_interp,nmse_phong,max_phong,nmse_brdf,"
            "long_per_px,mul_per_px,div_per_px,sqrt_per_px,add_per_px,interp_long_per_px,clocks_per_px,"
            "phong_long_per_px,phong_add_per_px,ratio_long,intervals,mean_len,quadratic_px,cubic_px,exact_px,"
-           "scanline_long_per_px,ratio_long_scanline,nmse_interp_8bit,nmse_phong_8bit,light,geometry_side\n";
+           "scanline_long_per_px,ratio_long_scanline,nmse_interp_8bit,nmse_phong_8bit,light,geometry_side,split\n";
     csv.precision(6);
     for (std::size_t i = 0; i < grid.size(); ++i) {
         std::ifstream f(tmp / std::to_string(i) / "report.json");
@@ -285,7 +290,8 @@ int run_sweep(const options& o) {
             << num(e["interpolation"]["displayed_8bit"]["nmse"].get<double>()) << ','
             << num(e["total"]["displayed_8bit"]["nmse"].get<double>()) << ','
             << light_field(j["config"]["light"].get<std::string>()) << ','
-            << (c["runs_on_geometry_side"].get<bool>() ? "yes" : "no") << '\n';
+            << (c["runs_on_geometry_side"].get<bool>() ? "yes" : "no") << ','
+            << (c["split_at_check"].get<bool>() ? 1 : 0) << '\n';
     }
     const std::string csv_path = o.csv.empty() ? (fs::path(o.out) / "sweep.csv").string() : o.csv;
     if (fs::path(csv_path).has_parent_path()) fs::create_directories(fs::path(csv_path).parent_path());
