@@ -283,12 +283,12 @@ private:
         for (unsigned x = pos; x <= xb; ++x) exact(lg, y, x);
     }
 
-    // An accepted cubic above 2^m_min under a checking length policy: its check point (the middle of
-    // its widest gap, length_check) lies on the eighths 0, 2, 4, 6, 8 with its samples in either sample
-    // set, so the halves' quadratics (t = 0, 1/2, 1 of each) use exactly those five points.
+    // An accepted, checked cubic above 2^m_min (without the fallback the shortest goes unchecked): its
+    // check and samples lie on eighths 0, 2, 4, 6, 8 in either set, the halves' quadratics' points.
     bool splits(const interval_job& job) const {
-        return c_.split_at_check && c_.length != length_policy::fixed && job.m > interp::m_min && !job.deg2 &&
-               job.len == (1u << job.m);
+        const bool checked = job.m > c_.m_min || c_.exact_fallback;
+        return c_.split_at_check && c_.length != length_policy::fixed && checked && job.m > interp::m_min &&
+               !job.deg2 && job.len == (1u << job.m);
     }
     void split_at_check(line_geometry& lg, const interval_job& whole) {
         const unsigned half = 1u << (whole.m - 1);

@@ -525,6 +525,30 @@ TEST(PipelinePlan, SplitAtCheckKeepsTheDecisions) {
         }
 }
 
+// Without the exact fallback the shortest interval is taken unchecked, so it has no check point to
+// reuse: with m_min = 3 those cubics stay whole, and the split still computes no extra geometry.
+TEST(PipelinePlan, SplitAtCheckLeavesUncheckedIntervalsWhole) {
+    const auto& f = head();
+    plan_config c = head_fixed(4);
+    c.length = length_policy::adaptive;
+    c.m_min = 3;
+    c.exact_fallback = false;
+    c.length_tol = 0.5;
+    const plan whole = make_plan(f.r, f.k, patent, c);
+    c.split_at_check = true;
+    const plan split = make_plan(f.r, f.k, patent, c);
+    expect_valid_plan(f.r, split, c);
+    EXPECT_EQ(split.geometry_points, whole.geometry_points);
+    std::size_t unchecked = 0, halves = 0;
+    for (const interval_job& j : whole.jobs) unchecked += j.m == 3 && !j.deg2;
+    for (const interval_job& j : split.jobs) halves += j.m == 3 && j.deg2;
+    EXPECT_GT(unchecked, 0u);
+    EXPECT_GT(halves, 0u) << "longer cubics are still split";
+    std::size_t kept = 0;
+    for (const interval_job& j : split.jobs) kept += j.m == 3 && !j.deg2;
+    EXPECT_EQ(kept, unchecked);
+}
+
 // The point of the split: the halves' quadratics pass through the check point as well, so the frame
 // is closer to per-pixel shading than with the whole cubics (head at 128, adaptive length).
 TEST(PipelinePlan, SplitAtCheckLowersTheError) {
