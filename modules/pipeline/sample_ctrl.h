@@ -30,6 +30,10 @@
 // Bad input (shading/input): a job with m neither 0 nor m_min..m_max, len 0 or above 2^m, m = 0
 // with deg2 (golden_interval refuses both), or, with the forward-difference evaluator built for M,
 // an interval with m != M: reported and dropped (no sample, no pixel).
+// Carry (ours, `carry` at construction): at a job whose first N.H / N.L codes equal the last sample's
+// (carry_hit, the top's comparators), that sample's colour is not formed again: carry_sel = 1 puts the
+// last-sample registers on the colour bus while ld_i1 (all four for an exact pixel) is low, and ctl17
+// stays high. ld_last, low for a clock at every sample, latches each sample's colour and codes.
 // The FSM is plain state (sample_fsm.h), stepped the same way by the fast pin-level pipeline.
 #pragma once
 
@@ -47,6 +51,7 @@ class sample_ctrl : public sc_core::sc_module, public timed_block {
 public:
     static constexpr unsigned len_bits = 16, m_bits = 4;
     using sel_t = sc_dt::sc_uint<2>;
+    using bit_t = sc_dt::sc_uint<1>;
 
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> start{"start"}, load_frame{"load_frame"};
@@ -55,17 +60,20 @@ public:
     sc_core::sc_in<sc_dt::sc_uint<1>> deg2{"deg2"};
     sc_core::sc_in<bool> ld_e{"ld_e"};
     sc_core::sc_in<bool> dev_valid{"dev_valid"};  // the device's output 29 (read only with wait_valid)
+    sc_core::sc_in<bool> carry_hit{"carry_hit"};  // the job's first codes are the last sample's (read only with carry)
     sc_core::sc_out<bool> ready{"ready"}, ld_job{"ld_job"}, ld_d{"ld_d"};
     sc_core::sc_out<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"}, ld_k{"ld_k"};
     sc_core::sc_out<sel_t> smp_sel{"smp_sel"};
     sc_core::sc_out<bool> ld_i1{"ld_i1"}, ld_i2{"ld_i2"}, ld_i3{"ld_i3"}, ld_i4{"ld_i4"};
     sc_core::sc_out<bool> samples_ready{"samples_ready"};
+    sc_core::sc_out<bit_t> carry_sel{"carry_sel"};
+    sc_core::sc_out<bool> ld_last{"ld_last"};
 
     SC_HAS_PROCESS(sample_ctrl);
     // fd_m: 0 for the Horner unit (any m), else the m the forward-difference evaluator is built for.
-    // wait_valid: the device needs more than one clock (sample_fsm.h).
-    sample_ctrl(const sc_core::sc_module_name& name, unsigned fd_m, bool wait_valid = false)
-        : sc_module(name), fd_m_(fd_m), fsm_(wait_valid) {
+    // wait_valid: the device needs more than one clock (sample_fsm.h); carry: reuse the last sample's colour.
+    sample_ctrl(const sc_core::sc_module_name& name, unsigned fd_m, bool wait_valid = false, bool carry = false)
+        : sc_module(name), fd_m_(fd_m), fsm_(wait_valid, carry) {
         SC_METHOD(on_clock);
         sensitive << clk.neg();
         dont_initialize();
@@ -81,6 +89,7 @@ public:
     std::size_t jobs() const { return fsm_.jobs(); }
     std::size_t dropped() const { return fsm_.dropped(); }
     std::size_t samples() const { return fsm_.samples(); }
+    std::size_t carried() const { return fsm_.carried(); }
 
 private:
     // sample_fsm's view of the pins: reads see the values before the edge, writes drive the strobes.
@@ -91,6 +100,9 @@ private:
         bool ld_e() const { return c.ld_e.read(); }
         bool dev_valid() const { return c.dev_valid.read(); }
         unsigned check_job() const { return c.check_job(); }
+        bool carry_hit() const { return c.carry_hit.read(); }
+        void carry_sel(bool v) { c.carry_sel.write(bit_t(v ? 1 : 0)); }
+        void ld_last(bool v) { c.ld_last.write(v); }
         void ready(bool v) { c.ready.write(v); }
         void ld_job(bool v) { c.ld_job.write(v); }
         void ld_d(bool v) { c.ld_d.write(v); }

@@ -7,7 +7,10 @@
 // dev_valid() (the device's output 29), and the jobs' check: check_job() returns the samples of the
 // job in the job registers (1, 3 or 4) or 0 for a job it reported and drops; outputs ready(v),
 // ld_job(v), ld_d(v), ctl17(v), frame_strobes(v) (ctl15, ctl20, ctl22, ctl24 and ld_k), smp_sel(k),
-// sample_strobe(k, count, v) (the sample registers sample k of `count` goes to), samples_ready(v).
+// sample_strobe(k, count, v) (the sample registers sample k of `count` goes to), samples_ready(v);
+// with the carry (ours): carry_hit() (the job's first N.H / N.L codes equal the last sample's),
+// carry_sel(v) (the sample registers take the last sample's colour) and ld_last(v) (the last-sample
+// registers: its colour and codes, latched at every sample's latch).
 #pragma once
 
 #include <sstream>
@@ -37,7 +40,7 @@ inline unsigned job_samples(unsigned m, bool deg2) { return m == 0 ? 1 : (deg2 ?
 
 class sample_fsm {
 public:
-    enum state { idle_st, frame_st, check_st, low_st, valid_st, high_st };
+    enum state { idle_st, frame_st, check_st, low_st, valid_st, high_st, copy_st };
     // The sample registers' interval: free, full (samples_ready = 1), or being taken (ld_e seen at
     // this edge: the interval registers latch half a clock later, the sample registers not before).
     enum bank { bank_free, bank_full, bank_taking };
@@ -47,7 +50,11 @@ public:
     // edge where output 29 is high, then announces `ready` at that edge; with a Fig. 1 device
     // (output 29 = strobe 17) the sample latches where strobe 17 rises and `ready` comes a clock
     // ahead of the job's last latch, so the next job is taken at that same edge.
-    explicit sample_fsm(bool wait_valid = false) : wait_valid_(wait_valid) {}
+    // carry: a job whose first sample point is the point whose colour was formed last (the previous
+    // interval's t = 1 sample, which the geometry side sends again as this one's t = 0) takes that
+    // colour from the last-sample registers instead of the device: no strobe 17, the same two clocks
+    // (without waiting for output 29). Only after a sample since the frame constants were loaded.
+    explicit sample_fsm(bool wait_valid = false, bool carry = false) : wait_valid_(wait_valid), carry_(carry) {}
 
     template <class Pins>
     void falling(Pins& p) {
@@ -91,13 +98,20 @@ public:
                 if (bank_ != bank_free || !p.dev_valid()) break;
                 latch_sample(p);
                 break;
+            case copy_st:  // the carried colour waits only for the sample registers
+                if (bank_ != bank_free) break;
+                p.carry_sel(false);
+                ++carried_;
+                latch_sample(p, false);
+                break;
             case high_st:
                 begin_sample(p);
                 break;
         }
         // The last sample's latch is the edge where the next request can be taken: announce it one
         // clock ahead, once it is sure to happen there (the sample registers free by then).
-        if (!wait_valid_ && state_ == low_st && sample_ + 1 == count_ && bank_ != bank_full && !ready_) {
+        if (!wait_valid_ && (state_ == low_st || state_ == copy_st) && sample_ + 1 == count_ && bank_ != bank_full &&
+            !ready_) {
             set_ready(p, true);
             p.ld_job(true);
         }
@@ -111,12 +125,14 @@ public:
     bool idle() const { return state_ == idle_st && bank_ != bank_full; }
     std::size_t jobs() const { return jobs_; }
     std::size_t dropped() const { return dropped_; }
-    std::size_t samples() const { return samples_; }
+    std::size_t samples() const { return samples_; }  // colours formed by the device
+    std::size_t carried() const { return carried_; }  // colours taken from the last-sample registers
 
 private:
     template <class Pins>
     void take_request(Pins& p) {
         if (p.load_frame()) {
+            have_last_ = false;  // new frame constants: the last colour is not this frame's
             p.frame_strobes(true);
             set_ready(p, false);
             state_ = frame_st;
@@ -131,16 +147,24 @@ private:
 
     template <class Pins>
     void begin_sample(Pins& p) {
-        p.ctl17(false);  // RG2 latches N.H of sample `sample_`
+        if (sample_ == 0 && carry_ && have_last_ && p.carry_hit()) {
+            p.carry_sel(true);  // the colour bus carries the last sample's colour
+            state_ = copy_st;
+        } else {
+            p.ctl17(false);  // RG2 latches N.H of sample `sample_`
+            state_ = low_st;
+        }
         p.sample_strobe(sample_, count_, true);
+        if (carry_) p.ld_last(true);
         if (sample_ + 1 == count_) p.ld_d(true);
-        state_ = low_st;
     }
 
     template <class Pins>
-    void latch_sample(Pins& p) {
-        p.sample_strobe(sample_, count_, false);  // I(K) takes ambient + diffuse + specular
-        ++samples_;
+    void latch_sample(Pins& p, bool formed = true) {
+        p.sample_strobe(sample_, count_, false);  // I(K) takes ambient + diffuse + specular (or the carried colour)
+        if (carry_) p.ld_last(false);             // and so do the last-sample registers, with its codes
+        have_last_ = true;
+        if (formed) ++samples_;
         if (++sample_ < count_) {
             p.smp_sel(sample_);
             state_ = high_st;
@@ -165,12 +189,13 @@ private:
         p.ready(v);
     }
 
-    bool wait_valid_;
+    bool wait_valid_, carry_;
+    bool have_last_ = false;
     state state_ = idle_st;
     bank bank_ = bank_free;
     bool ready_ = true;
     unsigned sample_ = 0, count_ = 0;
-    std::size_t jobs_ = 0, dropped_ = 0, samples_ = 0;
+    std::size_t jobs_ = 0, dropped_ = 0, samples_ = 0, carried_ = 0;
 };
 
 }  // namespace shading::pipe

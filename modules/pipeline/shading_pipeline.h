@@ -6,6 +6,9 @@
 //   rg_dy, rg_dx0, rg_dlen, rg_dm, rg_ddeg2  the descriptor of the interval in the sample
 //                  registers (ld_d, at its last sample's latch), read by the pixel controller
 //   mx_nh, mx_nl   the sample being formed (smp_sel)
+//   rg_lnh, rg_lnl the last sample's N.H / N.L (strobe ld_last, at every sample's latch), and
+//   eq_nh, eq_nl, and_carry  whether the job's first codes are those (carry_hit): with `carry` (ours)
+//                  that sample's colour is taken from the channels' rg_last instead of the device
 //   dev            the specular device (pipe_device.h): UA 60553, Fig. 1, with the generator of
 //                  `a` AGen (a_gen_linear: the patent's constants; a_gen_tuned: minimax /
 //                  rom_matched; a_gen_rom: UA 22802), or the squared-quadratic device (AGen =
@@ -27,6 +30,8 @@
 #include <systemc>
 #include <type_traits>
 
+#include "blocks/and_gate.h"
+#include "blocks/eq_cmp.h"
 #include "blocks/mux.h"
 #include "blocks/reg.h"
 #include "blocks/wire.h"
@@ -100,6 +105,9 @@ public:
         nl4{"nl4"};
     sc_core::sc_signal<sample_ctrl::sel_t> smp_sel{"smp_sel"};
     sc_core::sc_signal<cos_t> in18_cos{"in18_cos"}, cos_nl{"cos_nl"};
+    sc_core::sc_signal<cos_t> last_nh{"last_nh"}, last_nl{"last_nl"};  // the last sample's codes
+    sc_core::sc_signal<bool> ld_last{"ld_last"}, nh_hit{"nh_hit"}, nl_hit{"nl_hit"}, carry_hit{"carry_hit"};
+    sc_core::sc_signal<sample_ctrl::bit_t> carry_sel{"carry_sel"};
     sc_core::sc_signal<sc_dt::sc_uint<spec::out_fmt.width>> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
     sc_core::sc_signal<pipe::kdi_t> kdi_r{"kdi_r"}, kdi_g{"kdi_g"}, kdi_b{"kdi_b"};
     sc_core::sc_signal<sample_t> amb_r{"amb_r"}, amb_g{"amb_g"}, amb_b{"amb_b"};
@@ -125,6 +133,9 @@ public:
     reg<1> rg_ddeg2;
     reg<WCOS> rg_nh1, rg_nh2, rg_nh3, rg_nh4, rg_nl1, rg_nl2, rg_nl3, rg_nl4;
     mux<WCOS, 4> mx_nh, mx_nl;
+    reg<WCOS> rg_lnh, rg_lnl;
+    eq_cmp<WCOS> eq_nh, eq_nl;
+    and_gate and_carry;
     typename pipe_device<AGen>::type dev;
     reg<pipe::kdi_fmt.width> rg_kd_r, rg_kd_g, rg_kd_b;
     reg<WI> rg_amb_r, rg_amb_g, rg_amb_b;
@@ -135,21 +146,24 @@ public:
     pixel_ctrl ctl_pixel;
 
     // fd_m: the interval length 2^fd_m the forward-difference evaluator is built for, 0 for any m per
-    // interval (fd_eval_var); ignored for Horner.
+    // interval (fd_eval_var); ignored for Horner. carry: a job whose first sample point is the last
+    // sample's takes its colour from rg_last (sample_ctrl.h); off, the controller never selects it.
     shading_pipeline(const sc_core::sc_module_name& name, overflow_mode mode, const typename AGen::config& gen,
                      interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4, const block_delays& bd = {},
-                     const interp_delays& dl = {})
+                     const interp_delays& dl = {}, bool carry = false)
         : sc_module(name), rg_y("rg_y", dl.reg), rg_x0("rg_x0", dl.reg), rg_len("rg_len", dl.reg),
           rg_m("rg_m", dl.reg), rg_deg2("rg_deg2", dl.reg), rg_dy("rg_dy", dl.reg), rg_dx0("rg_dx0", dl.reg),
           rg_dlen("rg_dlen", dl.reg), rg_dm("rg_dm", dl.reg), rg_ddeg2("rg_ddeg2", dl.reg), rg_nh1("rg_nh1", dl.reg), rg_nh2("rg_nh2", dl.reg),
           rg_nh3("rg_nh3", dl.reg), rg_nh4("rg_nh4", dl.reg), rg_nl1("rg_nl1", dl.reg), rg_nl2("rg_nl2", dl.reg),
           rg_nl3("rg_nl3", dl.reg), rg_nl4("rg_nl4", dl.reg), mx_nh("mx_nh", dl.mux), mx_nl("mx_nl", dl.mux),
+          rg_lnh("rg_lnh", dl.reg), rg_lnl("rg_lnl", dl.reg), eq_nh("eq_nh", dl.mux), eq_nl("eq_nl", dl.mux),
+          and_carry("and_carry", dl.mux),
           dev("dev", mode, gen, bd), rg_kd_r("rg_kd_r", dl.reg), rg_kd_g("rg_kd_g", dl.reg), rg_kd_b("rg_kd_b", dl.reg),
           rg_amb_r("rg_amb_r", dl.reg), rg_amb_g("rg_amb_g", dl.reg), rg_amb_b("rg_amb_b", dl.reg),
           smp_r("smp_r", set, div, dl), smp_g("smp_g", set, div, dl), smp_b("smp_b", set, div, dl),
           ev_r(horner ? "horner_r" : "fd_r", fd_m, dl), ev_g(horner ? "horner_g" : "fd_g", fd_m, dl),
           ev_b(horner ? "horner_b" : "fd_b", fd_m, dl),
-          ctl_sample("ctl_sample", horner ? 0 : fd_m, pipe_device<AGen>::clocked), ctl_pixel("ctl_pixel") {
+          ctl_sample("ctl_sample", horner ? 0 : fd_m, pipe_device<AGen>::clocked, carry), ctl_pixel("ctl_pixel") {
         // Job registers: latched where ld_job falls.
         rg_y.ctl(ld_job); rg_y.d(in_y); rg_y.q(y);
         rg_x0.ctl(ld_job); rg_x0.d(in_x0); rg_x0.q(x0);
@@ -177,6 +191,12 @@ public:
         }
         mx_nh.sel(smp_sel); mx_nh.y(in18_cos);
         mx_nl.sel(smp_sel); mx_nl.y(cos_nl);
+        // The last sample's codes, and whether the job's first sample is that point again.
+        rg_lnh.ctl(ld_last); rg_lnh.d(in18_cos); rg_lnh.q(last_nh);
+        rg_lnl.ctl(ld_last); rg_lnl.d(cos_nl); rg_lnl.q(last_nl);
+        eq_nh.a(nh1); eq_nh.b(last_nh); eq_nh.y(nh_hit);
+        eq_nl.a(nl1); eq_nl.b(last_nl); eq_nl.y(nl_hit);
+        and_carry.a(nh_hit); and_carry.b(nl_hit); and_carry.y(carry_hit);
 
         // The specular device: frame constants straight from the pins through its own registers.
         dev.ctl15(ctl15); dev.ctl17(ctl17); dev.ctl20(ctl20); dev.ctl22(ctl22); dev.ctl24(ctl24);
@@ -202,6 +222,7 @@ public:
             s.clk(clk);
             s.ld_i1(ld_i1); s.ld_i2(ld_i2); s.ld_i3(ld_i3); s.ld_i4(ld_i4); s.ld_e(ld_e);
             s.kdi(*kd[ch]); s.ambient(*amb[ch]); s.cos_nl(cos_nl); s.specular(*spec[ch]);
+            s.carry_sel(carry_sel); s.ld_last(ld_last);
             s.ca(ca[ch]); s.cb(cb[ch]); s.cc(cc[ch]); s.cd(cd[ch]); s.qa(qa[ch]); s.qb(qb[ch]); s.qc(qc[ch]);
             eval_channel& e = *ev[ch];
             e.clk(clk); e.start(ev_start); e.deg_sel(deg_sel);
@@ -226,6 +247,7 @@ public:
         ctl_sample.smp_sel(smp_sel);
         ctl_sample.ld_i1(ld_i1); ctl_sample.ld_i2(ld_i2); ctl_sample.ld_i3(ld_i3); ctl_sample.ld_i4(ld_i4);
         ctl_sample.samples_ready(samples_ready);
+        ctl_sample.carry_hit(carry_hit); ctl_sample.carry_sel(carry_sel); ctl_sample.ld_last(ld_last);
 
         ctl_pixel.clk(clk); ctl_pixel.samples_ready(samples_ready);
         ctl_pixel.y(d_y); ctl_pixel.x0(d_x0); ctl_pixel.deg2_in(d_deg2);
@@ -244,6 +266,9 @@ public:
 
     // Nothing taken and not yet written out.
     bool idle() const { return ctl_sample.idle() && ctl_pixel.idle(); }
+    // Colours the device formed, and colours carried from rg_last (the sample controller's counts).
+    std::size_t samples() const { return ctl_sample.samples(); }
+    std::size_t carried() const { return ctl_sample.carried(); }
 
 private:
     // Per-channel nets named <base>_r, _g, _b.

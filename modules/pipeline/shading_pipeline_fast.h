@@ -15,6 +15,9 @@
 //     differences, the output clamp, from the shared format definitions), with the frame constants
 //     latched at the edge the device's strobes would latch them. The golden pipeline's header
 //     (src/golden_pipeline/pipeline.h) is not included: it pulls in the rasteriser (docs/layers.md).
+// With `carry` the sample controller's carry (sample_fsm.h) compares the job's first codes with the
+// last sample's, as the block model's comparators do; the carried colour is the one interval_pixels
+// forms from the same codes, so only the controller's timing and counts change.
 // The device is named by scene::device_config (device and ADD11 overflow mode) instead of a
 // generator type. Bit-exact with the block model (test_pipeline_fast: the frame, the write order
 // and the pins at every edge) and with golden_frame (render_pipeline --abstraction fast).
@@ -76,9 +79,9 @@ public:
     // fd_m as shading_pipeline's: the forward differences' fixed interval length 2^fd_m, 0 for any m
     // per interval; ignored for Horner.
     shading_pipeline_fast(const sc_core::sc_module_name& name, const scene::device_config& dev,
-                          interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4)
+                          interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4, bool carry = false)
         : sc_module(name), dev_(dev), set_(set), div_(div), fd_m_(horner ? 0 : fd_m),
-          fsm_(dev.device == scene::specular_device::squared) {
+          fsm_(dev.device == scene::specular_device::squared, carry) {
         SC_METHOD(on_edge);
         sensitive << clk;
         dont_initialize();
@@ -94,6 +97,8 @@ public:
     }
     std::size_t jobs() const { return fsm_.jobs(); }
     std::size_t dropped() const { return fsm_.dropped(); }
+    std::size_t samples() const { return fsm_.samples(); }
+    std::size_t carried() const { return fsm_.carried(); }
 
 private:
     using rgb = pipeline::rgb_codes;
@@ -112,7 +117,8 @@ private:
             return;
         }
         rising();
-        const bool waiting = fsm_.current() == pipe::sample_fsm::low_st &&
+        const auto st = fsm_.current();
+        const bool waiting = (st == pipe::sample_fsm::low_st || st == pipe::sample_fsm::copy_st) &&
                              fsm_.sample_bank() == pipe::sample_fsm::bank_full && !ld_e_ && !fsm_.wait_valid();
         const bool finishing = horner ? h_done_ : f_rem_ != 0;
         if (waiting && !finishing) next_trigger(clk.posedge_event());
@@ -143,7 +149,13 @@ private:
             if (!v) u.latch_frame();
         }
         void smp_sel(unsigned) {}
-        void sample_strobe(unsigned, unsigned, bool) {}
+        // The last-sample registers: the codes of the sample latched here (rg_lnh, rg_lnl).
+        void sample_strobe(unsigned k, unsigned, bool v) {
+            if (!v) u.last_s_ = u.job_s_[k];
+        }
+        bool carry_hit() const { return u.job_s_[0] == u.last_s_; }
+        void carry_sel(bool) {}
+        void ld_last(bool) {}
         void samples_ready(bool v) { u.samples_ready_ = v; }
     };
 
@@ -313,6 +325,7 @@ private:
     uint64_t dev_clocks_ = 2;               // the squared-quadratic device's k + 2 for the frame's n
     interval job_, d_;  // the job registers (with the samples' pixels) and the descriptor registers
     std::array<pipeline::sample_geometry, 4> job_s_{};
+    pipeline::sample_geometry last_s_{};  // the last sample's codes
     // Pixel controller.
     interval cur_, pend_, captured_;
     bool start_ = false, ld_e_ = false, in_flight_ = false, deg2_ = false;

@@ -7,6 +7,7 @@
 #include "blocks/adder.h"
 #include "testbenches/common/report_log.h"
 #include "blocks/constant.h"
+#include "blocks/eq_cmp.h"
 #include "blocks/inverter_bank.h"
 #include "blocks/mul.h"
 #include "blocks/reg.h"
@@ -164,4 +165,25 @@ TEST(Constant, DrivesThePatentBitPatternFromTimeZero) {
     sc_start(1, SC_NS);
     EXPECT_EQ(y.read(), 101u);
     EXPECT_TRUE(one.read());
+}
+
+TEST(EqualityComparator, OneOnlyWhereEveryWireAgreesAfterItsDelay) {
+    bus<16> a("a"), b("b");
+    sc_core::sc_signal<bool> y("y");
+    eq_cmp<16> cmp("cmp", sc_time(300, SC_PS));
+    cmp.a(a); cmp.b(b); cmp.y(y);
+    a.write(0x8000); b.write(0x8000);
+    sc_start(1, SC_NS);
+    EXPECT_TRUE(y.read());
+    b.write(0x8001);  // the lowest wire differs
+    sc_start(200, SC_PS);
+    EXPECT_TRUE(y.read()) << "not before the comparator's delay";
+    sc_start(200, SC_PS);
+    EXPECT_FALSE(y.read());
+    a.write(0x0001); b.write(0x8001);  // the highest wire differs
+    sc_start(1, SC_NS);
+    EXPECT_FALSE(y.read());
+    a.write(0x8001);
+    sc_start(1, SC_NS);
+    EXPECT_TRUE(y.read());
 }
