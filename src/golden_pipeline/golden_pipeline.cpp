@@ -197,10 +197,16 @@ hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::d
     h.geometry += times(device_per_sample, p.check_samples);
     h.geometry += times(diffuse_per_sample, p.check_samples);
     const scene::op_counts cubic_unit = cubic_unit_ops(c.set, c.div);
+    const sample_geometry* last = nullptr;  // the codes of the last sample formed or carried
     for (const interval_job& job : p.jobs) {
         const bool exact = job.m == 0;
         const bool quad = job.deg2 && !exact;
-        const uint64_t samples = exact ? 1 : (quad ? 3 : 4);  // an exact pixel's sample fills all four
+        uint64_t samples = exact ? 1 : (quad ? 3 : 4);  // an exact pixel's sample fills all four
+        if (c.carry_samples && last && job.s[0] == *last) {
+            --samples;
+            ++h.carried;
+        }
+        last = &job.s[exact ? 0 : (quad ? 2 : 3)];
         h.samples += samples;
         h.sample_stage += times(device_per_sample, samples);
         h.sample_stage += times(diffuse_per_sample, samples);

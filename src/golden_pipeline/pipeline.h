@@ -98,6 +98,9 @@ struct plan_config {
     bool surface_breaks = true;            // also end segments where neighbours' triangles share no vertex (a fold)
     evaluator eval = evaluator::horner;    // fd: fixed length keeps one m (tails exact); adaptive as Horner
     geometry_unit unit = geometry_unit::stepped;  // which geometry count hardware_ops charges
+    // The sample stage's carry (modules/pipeline/sample_ctrl.h): a job whose first sample's codes are
+    // the last formed sample's takes that colour from the last-sample registers, not from the device.
+    bool carry_samples = false;
 };
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
 // a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
@@ -175,10 +178,12 @@ frame per_pixel_frame(const scene::rasterised& r, const frame_constants& k, cons
 // them: the geometry side (plan.geometry_stepped, or plan.geometry with c.unit = scratch, + plan.decision), per sample evaluated by the sample stage
 // the device's multipliers and adders and the diffuse multiplier and adders, per interval the
 // coefficient unit's adders, per pixel the evaluator's multiplications and additions. `interpolation`
-// is everything after the geometry side.
+// is everything after the geometry side. With c.carry_samples a job whose first sample's codes equal
+// the previous job's last sample's (t = 1 of an interval; an exact pixel's own) forms one sample less.
 struct hardware_counts {
     scene::op_counts geometry, sample_stage, interpolation;
     std::size_t pixels = 0, samples = 0, intervals = 0;
+    std::size_t carried = 0;  // with carry_samples: samples taken from the last-sample registers (not in `samples`)
     uint64_t clocks = 0;  // clock cycles of the evaluator for the frame (Horner: 6 per cubic pixel, 4 per quadratic)
     scene::op_counts total() const {
         scene::op_counts t = geometry;

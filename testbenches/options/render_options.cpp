@@ -38,6 +38,9 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
     app.add_flag("--split-at-check,!--no-split-at-check", o.pc.split_at_check,
                  "adaptive and geometry length: send each accepted cubic above 2^m_min as two quadratics "
                  "through its samples and its check point (default off)");
+    app.add_flag("--carry-samples,!--no-carry-samples", o.pc.carry_samples,
+                 "the sample stage takes a job's first colour from its last-sample registers where the codes "
+                 "are the last sample's (default off)");
     app.add_flag("--surface-breaks,!--no-surface-breaks", o.pc.surface_breaks,
                  "also end segments at folds (neighbouring pixels' triangles share no vertex; default on)");
     app.add_option("--degree", o.degree, "degree policy")

@@ -298,8 +298,8 @@ private:
     // The DUT's constructor by abstraction (guaranteed copy elision: a module is built in place).
     static dut_t make_dut(const char* name, const scene::device_config& dev, const typename AGen::config& gen,
                           const plan_config& c) {
-        if constexpr (FAST) return dut_t(name, dev, c.set, c.div, fd_m(c));
-        else return dut_t(name, dev.mode, gen, c.set, c.div, fd_m(c));
+        if constexpr (FAST) return dut_t(name, dev, c.set, c.div, fd_m(c), c.carry_samples);
+        else return dut_t(name, dev.mode, gen, c.set, c.div, fd_m(c), {}, {}, c.carry_samples);
     }
 
     std::function<void(std::size_t, std::size_t)> progress_;

@@ -38,6 +38,8 @@ struct sim_result {
     // For the tests.
     std::vector<std::size_t> write_order;  // frame index of every frame-buffer write, in order (keep_write_order)
     std::size_t jobs_dropped = 0;          // jobs the hardware refused (bad input, reported)
+    std::size_t samples_formed = 0;        // colour samples the device formed
+    std::size_t samples_carried = 0;       // colour samples taken from the last-sample registers (carry)
     uint64_t frame_load_clocks = 0;        // clocks until the frame constants were latched
     double period_ns = 0.0;                // the clock period
 };

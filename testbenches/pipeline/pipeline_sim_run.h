@@ -82,6 +82,8 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
     res.mismatches = bench->checker.mismatches();
     res.write_order = bench->checker.order();
     res.jobs_dropped = bench->checker.dropped();
+    res.samples_formed = bench->dut.samples();
+    res.samples_carried = bench->dut.carried();
     res.clocks = static_cast<uint64_t>(bench->last_write() / pipeline_period());
     res.frame_load_clocks = bench->src.frame_loaded_at_edge();
     for (const auto& j : p.jobs) {

@@ -136,6 +136,7 @@ json report_json(const options& o, const render_data& d) {
                      {"length_tol", cfg.length_tol},
                      {"exact_fallback", cfg.exact_fallback},
                      {"split_at_check", cfg.split_at_check},
+                     {"carry_samples", cfg.carry_samples},
                      {"surface_breaks", cfg.surface_breaks},
                      {"degree", degree_policy_name(cfg.degree)},
                      {"degree_tol", cfg.degree_tol},
@@ -155,6 +156,7 @@ json report_json(const options& o, const render_data& d) {
                                  {"steps", p.stepping.steps}}},
                    {"check_samples", p.check_samples},
                    {"samples", hc.samples},
+                   {"samples_carried", hc.carried},
                    {"mean_interval_pixels", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()},
                    {"exact_pixels", n_deg[1]},
                    {"quadratic_pixels", n_deg[2]},
@@ -204,7 +206,8 @@ std::string report_md(const options& o, const render_data& d) {
     md << ", degree " << degree_policy_name(cfg.degree);
     if (cfg.degree == degree_policy::adaptive) md << " (tolerance " << cfg.degree_tol << ")";
     md << ", evaluator " << evaluator_name(cfg.eval) << ", sample set " << o.set << ", /3 " << o.div3
-       << ", depth step " << cfg.depth_step << (cfg.surface_breaks ? ", segments also end at folds" : "") << ".\n\n";
+       << ", depth step " << cfg.depth_step << (cfg.surface_breaks ? ", segments also end at folds" : "")
+       << (cfg.carry_samples ? ", samples carried" : "") << ".\n\n";
     md << "Plan: " << p.jobs.size() << " intervals over " << p.pixels << " covered pixels (mean "
        << fmt("%.2f", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()) << " pixels), " << hc.samples
        << " samples through the sample stage; pixels exact " << n_deg[1] << ", quadratic " << n_deg[2] << ", cubic "

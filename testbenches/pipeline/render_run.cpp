@@ -109,6 +109,15 @@ int run_sim(const options& o, render_data& d) {
             std::fprintf(stderr, "render_pipeline: the simulation reported %zu mismatches\n", sr.mismatches);
         return 1;
     }
+    // The counts behind the sample stage's operations: the samples the simulated device formed (and
+    // those carried) must be hardware_ops' figures, derived from the plan on their own.
+    if (sr.samples_formed != hc.samples || sr.samples_carried != hc.carried) {
+        std::fprintf(stderr,
+                     "render_pipeline: the SystemC sample stage formed %zu samples and carried %zu; the counted "
+                     "hardware path says %zu and %zu\n",
+                     sr.samples_formed, sr.samples_carried, hc.samples, hc.carried);
+        return 1;
+    }
     const double px = static_cast<double>(hc.pixels ? hc.pixels : 1);
     sim_clocks_per_px = sr.clocks / px;
     sim_px_per_s = sr.seconds > 0 ? hc.pixels / sr.seconds : 0.0;
@@ -117,6 +126,7 @@ int run_sim(const options& o, render_data& d) {
              {"pixels", hc.pixels},  {"pixels_per_second", sim_px_per_s},
              {"cpu_seconds", sr.cpu_seconds}, {"pixels_per_cpu_second", sim_px_per_cpu_s},
              {"clocks_per_pixel", sim_clocks_per_px}, {"mismatches", 0},
+             {"samples_formed", sr.samples_formed}, {"samples_carried", sr.samples_carried},
              {"bit_exact_vs_golden", true}, {"vcd", o.vcd.empty() ? json(nullptr) : json(o.vcd)}};
     return 0;
 #else

@@ -39,10 +39,13 @@ namespace {
 // A random plan on a frame `w` wide: jobs placed left to right, line after line, never overlapping;
 // about one in `bad_every` invalid (len 0, len > 2^m, m 1 or 7, an exact quadratic; refused and
 // reported by both pipelines), the rest valid for the evaluator (fd_m != 0: that m or exact pixels).
-plan random_plan(uint64_t seed, std::size_t jobs, unsigned w, unsigned fd_m, unsigned bad_every) {
+// chain: about half the jobs start at the codes of the job before's last sample, as a planned line's
+// do (the carry's case).
+plan random_plan(uint64_t seed, std::size_t jobs, unsigned w, unsigned fd_m, unsigned bad_every, bool chain = false) {
     plan p;
     p.width = w;
     unsigned x = 0, y = 0;
+    pipeline::sample_geometry last{};
     for (std::size_t i = 0; i < jobs; ++i) {
         tb::split_rng r(seed, i);
         interval_job j;
@@ -58,8 +61,10 @@ plan random_plan(uint64_t seed, std::size_t jobs, unsigned w, unsigned fd_m, uns
             s.cos_nl = static_cast<uint32_t>(r.range(0, one));
             s.cos_nh = s.cos_nl == 0 ? 0 : static_cast<uint32_t>(r.range(0, one));
         }
+        if (chain && r.range(0, 1) == 0) j.s[0] = last;
         if (j.m == 0) j.s[1] = j.s[2] = j.s[3] = j.s[0];
         if (j.deg2) j.s[3] = j.s[2];
+        last = j.s[j.m == 0 ? 0 : (j.deg2 ? 2 : 3)];
         if (bad_every != 0 && r.range(0, bad_every - 1) == 0) {
             switch (r.range(0, 3)) {
                 case 0: j.len = 0; break;
@@ -175,7 +180,8 @@ public:
     pair_bench(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
                const scene::device_config& dev, const plan_config& c, const typename AGen::config& gen,
                interp::sample_set fast_set)
-        : sc_module(name), blk("blk", dev.mode, gen, c.set, c.div, fd_m(c)), fst("fst", dev, fast_set, c.div, fd_m(c)),
+        : sc_module(name), blk("blk", dev.mode, gen, c.set, c.div, fd_m(c), {}, {}, c.carry_samples),
+          fst("fst", dev, fast_set, c.div, fd_m(c), c.carry_samples),
           fb_b("fb_b", p.width, p.height), fb_f("fb_f", p.width, p.height),
           src("src", p, k, [this] { return blk.idle() && fst.idle(); }),
           chk_b(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), chk_f(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0) {
@@ -209,6 +215,7 @@ struct pair_case {
     pipe_eval eval;
     unsigned fd_m;  // forward differences: 0 any m per interval, else the fixed m
     uint64_t seed;
+    bool carry = false;  // both pipelines with the carry, on a plan whose jobs chain
 };
 void PrintTo(const pair_case& c, std::ostream* os) { *os << c.name; }
 
@@ -217,12 +224,13 @@ void PrintTo(const pair_case& c, std::ostream* os) { *os << c.name; }
 template <class AGen, pipe_eval EVAL>
 void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_set = false) {
     tb::report_log::get().expect(msg::input);  // the invalid jobs, reported by both
-    const plan p = random_plan(pc.seed, 400, 64, EVAL == pipe_eval::fd ? pc.fd_m : 0, 12);
+    const plan p = random_plan(pc.seed, 400, 64, EVAL == pipe_eval::fd ? pc.fd_m : 0, 12, pc.carry);
     const frame_constants k = random_constants(pc.seed);
     scene::device_config dev;
     dev.device = pc.device;
     dev.mode = pc.seed % 2 ? overflow_mode::wrap : overflow_mode::saturate;
     plan_config c;
+    c.carry_samples = pc.carry;
     c.eval = EVAL == pipe_eval::horner ? evaluator::horner : evaluator::fd;
     c.length = pc.fd_m == 0 ? length_policy::adaptive : length_policy::fixed;
     c.m = pc.fd_m == 0 ? 4 : pc.fd_m;
@@ -250,6 +258,13 @@ void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_
     EXPECT_EQ(bench->chk_f.order(), bench->chk_b.order());
     EXPECT_EQ(bench->fst.dropped(), bench->chk_f.dropped());
     EXPECT_GT(bench->fst.dropped(), 5u);
+    EXPECT_EQ(bench->fst.samples(), bench->blk.samples());
+    EXPECT_EQ(bench->fst.carried(), bench->blk.carried());
+    if (pc.carry) {
+        EXPECT_GT(bench->blk.carried(), 50u);
+    } else {
+        EXPECT_EQ(bench->blk.carried(), 0u);
+    }
     // Each invalid job is reported once by each pipeline.
     EXPECT_EQ(tb::report_log::get().count(msg::input), 2 * bench->chk_f.dropped());
     std::printf("%s: %zu pins compared over %zu edges, %zu pixels, %zu jobs dropped\n", pc.name,
@@ -295,7 +310,10 @@ INSTANTIATE_TEST_SUITE_P(
                       pair_case{"fd_m4_patent", scene::specular_device::patent, pipe_eval::fd, 4, 5},
                       pair_case{"fd_m2_minimax", scene::specular_device::minimax, pipe_eval::fd, 2, 6},
                       pair_case{"horner_squared", scene::specular_device::squared, pipe_eval::horner, 0, 8},
-                      pair_case{"fd_any_m_squared", scene::specular_device::squared, pipe_eval::fd, 0, 9}),
+                      pair_case{"fd_any_m_squared", scene::specular_device::squared, pipe_eval::fd, 0, 9},
+                      pair_case{"horner_patent_carry", scene::specular_device::patent, pipe_eval::horner, 0, 10, true},
+                      pair_case{"fd_any_m_squared_carry", scene::specular_device::squared, pipe_eval::fd, 0, 11, true},
+                      pair_case{"fd_m3_ua22802_carry", scene::specular_device::ua22802, pipe_eval::fd, 3, 13, true}),
     [](const ::testing::TestParamInfo<pair_case>& i) { return std::string(i.param.name); });
 
 // The comparison can fail: the fast pipeline built with the other sample set differs at the pins.

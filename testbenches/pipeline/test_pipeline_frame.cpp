@@ -314,3 +314,33 @@ TEST(PipelineFrame, PlannedFrameAgainstPerPixel) {
             RecordProperty(what + " nmse", std::to_string(s.nmse));
         }
 }
+
+// The sample stage's carry: a job whose first sample's codes equal the last sample's (the previous
+// job's t = 1 sample, or an exact pixel's own) forms one sample less. Hand-built sequence, codes as
+// letters: cubic (P0 P1 P2 P3) 4; cubic (P3 ..) 3, carried; exact R 1; exact R 0, carried; quadratic
+// (R S1 S2) 2, carried; cubic (S1 ..) 4, not carried (the quadratic's last sample is S2): 14 samples,
+// 3 carried, each formed sample 5 mul + 2 add (device) + 3 mul + 6 add. Without the carry 4 + 4 + 1 +
+// 1 + 3 + 4 = 17.
+TEST(PipelineOps, CarriedSamplesAreNotFormedAgain) {
+    plan p;
+    p.width = 64;
+    p.height = 1;
+    p.jobs.push_back(job_of({100, 200, 300, 400}, 2, false));
+    p.jobs.push_back(job_of({400, 500, 600, 700}, 2, false));
+    p.jobs.push_back(job_of({900, 900, 900, 900}, 0, false, 1));
+    p.jobs.push_back(job_of({900, 900, 900, 900}, 0, false, 1));
+    p.jobs.push_back(job_of({900, 1000, 1100, 1100}, 2, true));
+    p.jobs.push_back(job_of({1000, 1200, 1300, 1400}, 2, false));
+    plan_config c;
+    c.eval = evaluator::fd;
+    const hardware_counts plain = hardware_ops(p, c);
+    EXPECT_EQ(plain.samples, 17u);
+    EXPECT_EQ(plain.carried, 0u);
+    c.carry_samples = true;
+    const hardware_counts h = hardware_ops(p, c);
+    EXPECT_EQ(h.samples, 14u);
+    EXPECT_EQ(h.carried, 3u);
+    EXPECT_EQ(h.sample_stage, (scene::op_counts{14 * 8, 0, 0, 14 * 8, 0}));
+    EXPECT_EQ(h.interpolation, plain.interpolation);
+    EXPECT_EQ(h.geometry, plain.geometry);
+}

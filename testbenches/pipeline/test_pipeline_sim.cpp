@@ -126,6 +126,38 @@ TEST_P(PipelineSimMix, MixedIntervalsBitExact) {
     expect_golden_frame(r, p, k, patent, c);
 }
 
+// The carry: jobs that start where the one before ended (its t = 1 codes again) take that colour
+// from the last-sample registers. Hand-made line: cubic 0..16, quadratic 16..32 starting at the
+// cubic's t = 1 codes (carried), exact pixel at 32 with the quadratic's t = 1 codes (carried), exact
+// 33 with other codes, cubic 34.. starting at those (carried); then a line whose first job repeats
+// nothing. 4 + 2 + 0 + 1 + 3 + 4 = 14 samples formed, 3 carried (17 without), pixels bit-exact
+// (squared-quadratic device: the carried samples skip its wait for output 29).
+class PipelineSimCarry : public ::testing::TestWithParam<evaluator> {};
+
+TEST_P(PipelineSimCarry, CarriedSamplesBitExactAndCounted) {
+    const auto k = hand_constants();
+    plan_config c = config(GetParam());
+    c.length = length_policy::adaptive;  // fd: any m per interval
+    c.carry_samples = true;
+    interval_job a = job(0, 0, 4, 16, false), b = job(0, 16, 4, 16, true, 700), x = job(0, 32, 0, 1, false),
+                 z = job(0, 33, 0, 1, false, 1500), d = job(0, 34, 2, 4, false, 900), e = job(1, 0, 4, 16, false, 40);
+    b.s[0] = a.s[3];
+    x.s = {b.s[2], b.s[2], b.s[2], b.s[2]};
+    d.s[0] = z.s[0];
+    const plan p = make_hand_plan(48, 2, {a, b, x, z, d, e});
+    const sim_result r = simulate_frame(p, k, squared, c, traced());
+    EXPECT_EQ(r.mismatches, 0u);
+    expect_golden_frame(r, p, k, squared, c);
+    EXPECT_EQ(r.samples_formed, 14u);
+    EXPECT_EQ(r.samples_carried, 3u);
+    const hardware_counts h = hardware_ops(p, c, squared, k.n);
+    EXPECT_EQ(r.samples_formed, h.samples);
+    EXPECT_EQ(r.samples_carried, h.carried);
+}
+
+INSTANTIATE_TEST_SUITE_P(Evaluators, PipelineSimCarry, ::testing::Values(evaluator::horner, evaluator::fd),
+                         [](const ::testing::TestParamInfo<evaluator>& i) { return std::string(evaluator_name(i.param)); });
+
 INSTANTIATE_TEST_SUITE_P(Evaluators, PipelineSimMix,
                          ::testing::Values(mix_case{evaluator::horner, interp::sample_set::case1, interp::div3_mode::shift_add, "HornerCase1"},
                                            mix_case{evaluator::horner, interp::sample_set::case2, interp::div3_mode::exact, "HornerCase2Exact"},
