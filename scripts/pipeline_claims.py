@@ -37,6 +37,7 @@ def policy(r):
     ln = f"fixed m={r['m']}" if r["length"] == "fixed" else f"{r['length']} tol {r['length_tol']}"
     deg = r["degree"] + (f" {r['degree_tol']}" if r["degree"] in ("adaptive", "geometry") else "")
     split = ", split at check" if r.get("split") == "1" else ""
+    split += ", carry" if r.get("carry") == "1" else ""
     return f"{ln}, {deg}{split}, {r['eval']}"
 
 

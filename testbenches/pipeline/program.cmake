@@ -62,7 +62,7 @@ if(TARGET shading_pipeline)
   # prints one command line per configuration; a bad shard is bad input.
   set(rp_claims --sweep --grid claims --scenes sphere torus --lights 0,30 --ns 20 --sizes 24 --device squared --jobs 2)
   add_test(NAME pipeline.sweep.claims_shards
-           COMMAND sh -c "set -e; b=\"$0\"; o=\"$1\"; shift; rm -rf \"$o\"; \"$b\" \"$@\" --out \"$o/all\"; \"$b\" \"$@\" --shard 1/2 --out \"$o/s1\"; \"$b\" \"$@\" --shard 2/2 --out \"$o/s2\"; test $(wc -l < \"$o/all/sweep.csv\") -eq 33; (tail -n +2 \"$o/s1/sweep.csv\"; tail -n +2 \"$o/s2/sweep.csv\") | sort -t, -k1,1n > \"$o/merged\"; tail -n +2 \"$o/all/sweep.csv\" | cmp - \"$o/merged\"; grep -q ',geometry,.*,yes,0$' \"$o/all/sweep.csv\"; grep -q ',adaptive,.*,no,0$' \"$o/all/sweep.csv\"; grep -q ',adaptive,.*,no,1$' \"$o/all/sweep.csv\"; grep -q ',geometry,.*,yes,1$' \"$o/all/sweep.csv\""
+           COMMAND sh -c "set -e; b=\"$0\"; o=\"$1\"; shift; rm -rf \"$o\"; \"$b\" \"$@\" --out \"$o/all\"; \"$b\" \"$@\" --shard 1/2 --out \"$o/s1\"; \"$b\" \"$@\" --shard 2/2 --out \"$o/s2\"; test $(wc -l < \"$o/all/sweep.csv\") -eq 33; (tail -n +2 \"$o/s1/sweep.csv\"; tail -n +2 \"$o/s2/sweep.csv\") | sort -t, -k1,1n > \"$o/merged\"; tail -n +2 \"$o/all/sweep.csv\" | cmp - \"$o/merged\"; grep -q ',geometry,.*,yes,0,0$' \"$o/all/sweep.csv\"; grep -q ',adaptive,.*,no,0,0$' \"$o/all/sweep.csv\"; grep -q ',adaptive,.*,no,1,1$' \"$o/all/sweep.csv\"; grep -q ',geometry,.*,yes,1,1$' \"$o/all/sweep.csv\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/claims ${rp_claims})
   add_test(NAME pipeline.sweep.emit_jobs
            COMMAND sh -c "b=\"$0\"; test $(\"$b\" \"$@\" --emit-jobs --out /nonexistent | grep -c -- '--shard [0-9]*/32 --csv') -eq 32"

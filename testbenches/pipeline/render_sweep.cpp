@@ -29,6 +29,7 @@ struct sweep_point {
     std::string scene, light;  // empty: --scene, --light
     unsigned size = 0;         // 0: --size
     bool split = false;        // --split-at-check (or the command line's)
+    bool carry = false;        // --carry-samples (or the command line's)
 };
 
 // small: two devices x the degree policies x fixed m = 3..5 and three adaptive-length tolerances,
@@ -57,9 +58,10 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
             double ltol;
             const char* degree;
             double dtol;
-            bool split;
+            bool split;  // split at the check point, and the sample stage's carry
         };
-        // The last two: the head's cheapest at NMSE <= 1e-5 with each checking policy, split at the check.
+        // The last two: the head's cheapest at NMSE <= 1e-5 with each checking policy, split at the
+        // check and with the carry.
         const pol policies[] = {{"fixed", 4, 0.5, "cubic", 0.5, false},       {"fixed", 3, 0.5, "zones", 0.5, false},
                                 {"adaptive", 4, 1.0, "adaptive", 0.5, false}, {"adaptive", 4, 2.0, "adaptive", 0.5, false},
                                 {"geometry", 4, 1.0, "geometry", 0.5, false}, {"geometry", 4, 2.0, "geometry", 0.5, false},
@@ -72,7 +74,7 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
                         for (const auto& d : devices)
                             for (const pol& p : policies)
                                 for (const char* ev : {"fd", "horner"})
-                                    g.push_back({d, p.length, p.degree, ev, p.m, p.ltol, p.dtol, n, sc, li, sz, p.split});
+                                    g.push_back({d, p.length, p.degree, ev, p.m, p.ltol, p.dtol, n, sc, li, sz, p.split, p.split});
         return g;
     }
     const std::vector<unsigned> ms = grid == "full" ? std::vector<unsigned>{2, 3, 4, 5, 6} : std::vector<unsigned>{3, 4, 5};
@@ -193,6 +195,7 @@ int run_sweep(const options& o) {
                                       "--depth-step", num(o.pc.depth_step), "--unit", o.unit,
                                       o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
                                       sp.split || o.pc.split_at_check ? "--split-at-check" : "--no-split-at-check",
+                                      sp.carry || o.pc.carry_samples ? "--carry-samples" : "--no-carry-samples",
                                       o.pc.surface_breaks ? "--surface-breaks" : "--no-surface-breaks", "--no-sim", "--no-images", "--md", "",
                                       "--json", "report.json", "--out", (tmp / std::to_string(i)).string()};
         const std::string light = sp.light.empty() ? o.light : sp.light;
@@ -250,7 +253,7 @@ int run_sweep(const options& o) {
            "nmse_interp,psnr_interp,max_interp,nmse_phong,max_phong,nmse_brdf,"
            "long_per_px,mul_per_px,div_per_px,sqrt_per_px,add_per_px,interp_long_per_px,clocks_per_px,"
            "phong_long_per_px,phong_add_per_px,ratio_long,intervals,mean_len,quadratic_px,cubic_px,exact_px,"
-           "scanline_long_per_px,ratio_long_scanline,nmse_interp_8bit,nmse_phong_8bit,light,geometry_side,split\n";
+           "scanline_long_per_px,ratio_long_scanline,nmse_interp_8bit,nmse_phong_8bit,light,geometry_side,split,carry\n";
     csv.precision(6);
     for (std::size_t i = 0; i < grid.size(); ++i) {
         std::ifstream f(tmp / std::to_string(i) / "report.json");
@@ -291,7 +294,7 @@ int run_sweep(const options& o) {
             << num(e["total"]["displayed_8bit"]["nmse"].get<double>()) << ','
             << light_field(j["config"]["light"].get<std::string>()) << ','
             << (c["runs_on_geometry_side"].get<bool>() ? "yes" : "no") << ','
-            << (c["split_at_check"].get<bool>() ? 1 : 0) << '\n';
+            << (c["split_at_check"].get<bool>() ? 1 : 0) << ',' << (c["carry_samples"].get<bool>() ? 1 : 0) << '\n';
     }
     const std::string csv_path = o.csv.empty() ? (fs::path(o.out) / "sweep.csv").string() : o.csv;
     if (fs::path(csv_path).has_parent_path()) fs::create_directories(fs::path(csv_path).parent_path());
