@@ -67,7 +67,9 @@ const char* geometry_unit_name(geometry_unit u);  // "stepped", "scratch"
 // k_s I, k_d I and the tolerance, computed once per frame like the device's a(n)); see plan.cpp.
 // `adaptive` reads exact colours (the sample stage's output) at a check point, which no modelled
 // hardware returns to the geometry side: policy_runs_on_geometry_side() says which can run there.
-enum class length_policy { fixed, adaptive, geometry };
+// `optimal` is no policy but a yardstick (optimal.cpp): knowing every pixel's colour and its reference,
+// it chooses lengths and degrees both to need the fewest geometry points for a given NMSE.
+enum class length_policy { fixed, adaptive, geometry, optimal };
 enum class degree_policy { cubic, quadratic, zones, adaptive, geometry };
 const char* length_policy_name(length_policy p);  // "fixed", "adaptive", "geometry"
 const char* degree_policy_name(degree_policy p);  // "cubic", "quadratic", "zones", "adaptive", "geometry"
@@ -101,6 +103,11 @@ struct plan_config {
     // The sample stage's carry (modules/pipeline/sample_ctrl.h): a job whose first sample's codes are
     // the last formed sample's takes that colour from the last-sample registers, not from the device.
     bool carry_samples = false;
+    // The optimum: the largest NMSE allowed (against per-pixel shading through the device, or against
+    // exact Phong) and which; c.degree is not read (the optimum picks every interval's degree).
+    enum class reference { interpolation, total };
+    double optimal_nmse = 1e-5;
+    reference optimal_reference = reference::interpolation;
 };
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
 // a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
@@ -144,9 +151,27 @@ struct plan {
     // sample point: their check points. The sample stage's cost for these is the decision's too.
     std::size_t check_samples = 0;
     std::size_t pixels = 0;            // covered pixels (= sum of len)
+    // The optimum's certificate (length_policy::optimal; zero otherwise), see optimal_plan.
+    struct optimum_certificate {
+        double points_bound = 0.0;   // no plan of these segments reaching the NMSE has fewer geometry points
+        double nmse = 0.0;           // the plan's own NMSE against its reference (<= c.optimal_nmse if feasible)
+        double lambda = 0.0;         // the Lagrange multiplier it was found with (points per squared level)
+        bool feasible = false;       // false: even the lowest-error plan misses c.optimal_nmse (it is the plan)
+        double point_long_min = 0.0; // long ops of the cheapest geometry point (a step, no set-up or run start)
+    };
+    optimum_certificate optimum;
 };
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c);
+// The optimum over every plan the pipeline can express for these segments (intervals of 2^m_min ..
+// 2^m_max pixels, quadratic or cubic in c.set, exact pixels, tails as make_plan's), with no decision
+// cost: fewest distinct geometry points such that the frame's NMSE against c.optimal_reference is at
+// most c.optimal_nmse. A dynamic programme per segment minimises points + lambda x squared error;
+// lambda is bisected to the smallest that meets the NMSE, and every lambda tried gives a Lagrangian
+// lower bound (points + lambda (error - allowed error)) on the true optimum: plan.optimum.points_bound.
+// Its geometry is counted as make_plan's (make_plan calls it for length_policy::optimal).
+plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                  const plan_config& c);
 
 // ---- Zones of the head (the interpolation paper, Fig. 5, reconstructed: the figure is not in the text) ----
 // 0 other (ears, skull, neck), 1 brows, 2 forehead, 3 eyes, 4 cheeks, 5 nose, 6 mouth, 7 chin:

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "golden_pipeline/line_geometry.h"
 #include "golden_pipeline/pipeline.h"
 
 namespace shading::pipeline {
@@ -18,6 +19,7 @@ const char* length_policy_name(length_policy p) {
         case length_policy::fixed: return "fixed";
         case length_policy::adaptive: return "adaptive";
         case length_policy::geometry: return "geometry";
+        case length_policy::optimal: return "optimal";
     }
     return "?";
 }
@@ -33,7 +35,9 @@ const char* degree_policy_name(degree_policy p) {
     return "?";
 }
 
-bool policy_runs_on_geometry_side(length_policy p) { return p != length_policy::adaptive; }
+bool policy_runs_on_geometry_side(length_policy p) {
+    return p != length_policy::adaptive && p != length_policy::optimal;
+}
 // zones: the zone's box tests on the position the geometry side interpolates, against per-frame
 // thresholds from the mesh (host set-up, as the scene's other frame constants).
 bool policy_runs_on_geometry_side(degree_policy p) { return p != degree_policy::adaptive; }
@@ -52,6 +56,7 @@ void validate(const plan_config& c) {
     if (!(c.degree_tol >= 0.0)) fail("the degree tolerance must be >= 0 (8-bit levels)");
     if (!(c.depth_step > 0.0)) fail("the depth step must be > 0 (world units)");
     if (!(c.lobe_tol > 0.0)) fail("the lobe tolerance must be > 0");
+    if (!(c.optimal_nmse >= 0.0) || !std::isfinite(c.optimal_nmse)) fail("the optimum's NMSE must be finite and >= 0");
     // Any evaluator takes either length policy: fd_eval_var sets the forward differences up per
     // interval for every m in m_min..m_max, as the Horner unit takes any t.
 }
@@ -62,12 +67,6 @@ using scene::cnum;
 using scene::cvec3;
 using scene::op_counts;
 
-// Sample points of an interval as fractions of N in eighths (t = k/8): the sets of pipeline.h.
-// Cubic case 1: 0, 1/4, 1/2, 1; case 2: 0, 1/2, 3/4, 1. Quadratic: 0, 1/2, 1.
-std::array<unsigned, 4> cubic_points(interp::sample_set set) {
-    return set == interp::sample_set::case1 ? std::array<unsigned, 4>{0, 2, 4, 8} : std::array<unsigned, 4>{0, 4, 6, 8};
-}
-constexpr std::array<unsigned, 3> quad_points{0, 4, 8};
 // The cubic's sample that the quadratic skips (the adaptive degree policy's check): case 1 t = 1/4,
 // case 2 t = 3/4. The adaptive length policy's check: the middle of the widest gap between the cubic's
 // points, case 1 t = 3/4, case 2 t = 1/4.
@@ -96,75 +95,6 @@ unsigned shift_add_cost(double w) {
     return ones > 0 ? ones - 1 : 0;
 }
 
-// One raster line's geometry, computed once per pixel and counted once.
-class line_geometry {
-public:
-    line_geometry(const scene::rasterised& r, unsigned y, const frame_constants& k, const scene::device_config& dev,
-                  plan& p)
-        : r_(r), y_(y), k_(k), dev_(dev), p_(p), geo_(r.width), have_geo_(r.width, 0), smp_(r.width),
-          col_(r.width), have_col_(r.width, 0) {}
-
-    const scene::pixel_geometry& geometry(unsigned x) {
-        if (!have_geo_[x]) {
-            // geometry_at charges a scratch count, added at once; sample_of may do arithmetic on the
-            // counted values, which then lands in the scratch and is ignored: the dot products are
-            // charged below, exactly as the references' shade_common computes them.
-            op_counts scratch;
-            geo_[x] = scene::geometry_at(r_, x, y_, &scratch);
-            p_.geometry += scratch;
-            smp_[x] = sample_of(geo_[x]);
-            charge_dots(geo_[x], &p_.geometry);
-            uncount(geo_[x]);  // the scratch count dies here: the kept values charge nothing
-            ++p_.geometry_points;
-            have_geo_[x] = 1;
-        }
-        return geo_[x];
-    }
-    sample_geometry sample(unsigned x) {
-        geometry(x);
-        return smp_[x];
-    }
-    bool has_geometry(unsigned x) const { return have_geo_[x] != 0; }
-    // N.L, the N.L > 0 gate, and N.H clamped at 0 where the light reaches (sample_of, shade.cpp).
-    static void charge_dots(const scene::pixel_geometry& g, op_counts* ops) {
-        auto recount = [ops](const cvec3& v) {
-            return cvec3{cnum(v.x.value(), ops), cnum(v.y.value(), ops), cnum(v.z.value(), ops)};
-        };
-        const cvec3 n = recount(g.n);
-        const cnum zero(0.0, ops);
-        if (dot(n, recount(g.l[0])) > zero) max(dot(n, recount(g.h[0])), zero);
-    }
-    // The colour sample at pixel x (the sample stage's output), for the policies' estimates.
-    bool has_colour(unsigned x) const { return have_col_[x] != 0; }
-    const rgb_codes& colour(unsigned x) {
-        if (!have_col_[x]) {
-            col_[x] = golden_sample(dev_, k_, sample(x));
-            have_col_[x] = 1;
-        }
-        return col_[x];
-    }
-
-private:
-    static void uncount(scene::pixel_geometry& g) {
-        auto plain = [](cvec3& v) { v = {cnum(v.x.value(), nullptr), cnum(v.y.value(), nullptr), cnum(v.z.value(), nullptr)}; };
-        plain(g.p);
-        plain(g.n);
-        plain(g.v);
-        for (auto& v : g.l) plain(v);
-        for (auto& v : g.h) plain(v);
-    }
-    const scene::rasterised& r_;
-    unsigned y_;
-    const frame_constants& k_;
-    const scene::device_config& dev_;
-    plan& p_;
-    std::vector<scene::pixel_geometry> geo_;
-    std::vector<uint8_t> have_geo_;
-    std::vector<sample_geometry> smp_;
-    std::vector<rgb_codes> col_;
-    std::vector<uint8_t> have_col_;
-};
-
 class planner {
 public:
     planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
@@ -182,26 +112,7 @@ public:
         line_geometry lg(r_, y, k_, dev_, p_);
         const std::size_t first_job = p_.jobs.size();
         miss_pos_ = ~0u;  // the quadratic's miss is per line
-        // Segment boundaries: every discontinuity (coverage edges bound the spans; object changes and
-        // depth steps cut them), so no interval's pixels or samples straddle one.
-        std::vector<unsigned> cuts;
-        for (const auto& d : scene::line_discontinuities(r_, y, c_.depth_step)) cuts.push_back(d.x);
-        if (c_.surface_breaks) {
-            for (unsigned x = 1; x < r_.width; ++x)
-                if (r_.covered(x - 1, y) && r_.covered(x, y) && surface_break(r_.index(x - 1, y), r_.index(x, y)))
-                    cuts.push_back(x);
-            std::sort(cuts.begin(), cuts.end());
-            cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-        }
-        for (const scene::span& sp : scene::line_spans(r_, y)) {
-            unsigned xa = sp.x_begin;
-            for (unsigned x : cuts)
-                if (x > sp.x_begin && x < sp.x_end) {
-                    segment(lg, y, xa, x - 1);
-                    xa = x;
-                }
-            segment(lg, y, xa, sp.x_end - 1);
-        }
+        for (const auto& seg : line_segments(r_, y, c_, &p_.decision)) segment(lg, y, seg[0], seg[1]);
         // Check samples: colours evaluated where no job of this line has a sample point.
         std::vector<uint8_t> sampled(r_.width, 0);
         for (std::size_t j = first_job; j < p_.jobs.size(); ++j) {
@@ -216,34 +127,10 @@ public:
         }
         for (unsigned x = 0; x < r_.width; ++x)
             if (lg.has_colour(x) && !sampled[x]) ++p_.check_samples;
-        // The stepping geometry unit's count: the same points, left to right, stepped along the line.
-        for (unsigned x = 0; x < r_.width; ++x)
-            if (lg.has_geometry(x))
-                line_geometry::charge_dots(stepper_.at(x, y, &p_.geometry_stepped), &p_.geometry_stepped);
-        p_.stepping = stepper_.stats();
+        lg.charge_stepped(stepper_, p_);
     }
 
 private:
-    // The visible surface jumps to another part of the mesh between two neighbouring pixels when their
-    // triangles share no vertex (a fold: eyelid, ear, nostril, lips, in front of a surface at nearly
-    // the same depth). Integer compares on the rasteriser's triangle indices, counted as decisions.
-    bool surface_break(std::size_t a, std::size_t b) {
-        const int32_t ta = r_.tri[a], tb = r_.tri[b];
-        if (ta == tb) return false;
-        const scene::triangle_setup& sa = r_.setups[static_cast<std::size_t>(ta)];
-        const scene::triangle_setup& sb = r_.setups[static_cast<std::size_t>(tb)];
-        if (sa.object != sb.object) return true;
-        const scene::mesh& m = r_.src->objects[sa.object].geometry;
-        const auto& va = m.triangles[sa.triangle];
-        const auto& vb = m.triangles[sb.triangle];
-        for (uint32_t i : va)
-            for (uint32_t j : vb) {
-                ++p_.decision.cmp;
-                if (i == j) return false;
-            }
-        return true;
-    }
-
     // Pixels xa..xb (inclusive) with no discontinuity inside.
     void segment(line_geometry& lg, unsigned y, unsigned xa, unsigned xb) {
         // A fixed length with forward differences keeps one m per frame, tails exact: the SystemC
@@ -589,6 +476,7 @@ geometry_limits geometry_limits_of(const frame_constants& k, const plan_config& 
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c) {
     validate(c);
+    if (c.length == length_policy::optimal) return optimal_plan(r, k, dev, c);
     plan p;
     p.width = r.width;
     p.height = r.height;

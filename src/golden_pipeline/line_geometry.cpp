@@ -1,0 +1,58 @@
+// A raster line's segments (line_geometry.h): the spans cut at the discontinuities and folds.
+#include "golden_pipeline/line_geometry.h"
+
+#include <algorithm>
+
+namespace shading::pipeline {
+
+namespace {
+
+// The visible surface jumps to another part of the mesh between two neighbouring pixels when their
+// triangles share no vertex (a fold: eyelid, ear, nostril, lips, in front of a surface at nearly
+// the same depth). Integer compares on the rasteriser's triangle indices, counted as decisions.
+bool surface_break(const scene::rasterised& r, std::size_t a, std::size_t b, scene::op_counts* decision) {
+    const int32_t ta = r.tri[a], tb = r.tri[b];
+    if (ta == tb) return false;
+    const scene::triangle_setup& sa = r.setups[static_cast<std::size_t>(ta)];
+    const scene::triangle_setup& sb = r.setups[static_cast<std::size_t>(tb)];
+    if (sa.object != sb.object) return true;
+    const scene::mesh& m = r.src->objects[sa.object].geometry;
+    const auto& va = m.triangles[sa.triangle];
+    const auto& vb = m.triangles[sb.triangle];
+    for (uint32_t i : va)
+        for (uint32_t j : vb) {
+            ++decision->cmp;
+            if (i == j) return false;
+        }
+    return true;
+}
+
+}  // namespace
+
+std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, unsigned y, const plan_config& c,
+                                                   scene::op_counts* decision) {
+    // Segment boundaries: every discontinuity (coverage edges bound the spans; object changes and
+    // depth steps cut them), so no interval's pixels or samples straddle one.
+    std::vector<unsigned> cuts;
+    for (const auto& d : scene::line_discontinuities(r, y, c.depth_step)) cuts.push_back(d.x);
+    if (c.surface_breaks) {
+        for (unsigned x = 1; x < r.width; ++x)
+            if (r.covered(x - 1, y) && r.covered(x, y) && surface_break(r, r.index(x - 1, y), r.index(x, y), decision))
+                cuts.push_back(x);
+        std::sort(cuts.begin(), cuts.end());
+        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    }
+    std::vector<std::array<unsigned, 2>> out;
+    for (const scene::span& sp : scene::line_spans(r, y)) {
+        unsigned xa = sp.x_begin;
+        for (unsigned x : cuts)
+            if (x > sp.x_begin && x < sp.x_end) {
+                out.push_back({xa, x - 1});
+                xa = x;
+            }
+        out.push_back({xa, sp.x_end - 1});
+    }
+    return out;
+}
+
+}  // namespace shading::pipeline

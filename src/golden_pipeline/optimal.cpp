@@ -1,0 +1,268 @@
+// The optimum plan (pipeline.h, optimal_plan): a yardstick for the length and degree policies. It
+// knows what no policy knows (every pixel's colour and its reference) and pays nothing to decide, so
+// no policy can need fewer geometry points at its NMSE; its certificate says how far each policy is
+// from the best the pipeline's intervals allow, and so what ratio against Phong is in reach at all.
+//
+// Per segment (line_geometry.h: the same segments as make_plan), a piece at pixel i is an exact pixel
+// or an interval of 2^m pixels (m_min..m_max, whose t = 1 sample is pixel i + 2^m of the segment),
+// quadratic or cubic. Points are counted as the geometry side computes them: a piece's first pixel
+// costs one unless an interval ended there (its t = 1 sample), an interval adds its inner samples and
+// its t = 1 sample. The squared error of each candidate piece is computed once (interval_pixels, the
+// hardware's arithmetic, against the reference image); a backward dynamic programme over the segment
+// then minimises points + lambda x error exactly, for each lambda of a bisection.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "golden_pipeline/line_geometry.h"
+#include "golden_pipeline/pipeline.h"
+
+namespace shading::pipeline {
+
+namespace {
+
+// A segment's candidate pieces: the squared error (8-bit levels^2, three channels) of the exact pixel
+// and of every interval (m, degree) at each of its pixels; +inf where the interval does not fit.
+struct segment_costs {
+    unsigned y = 0, xa = 0, len = 0;
+    std::vector<double> exact;      // [i]
+    std::vector<double> intervals;  // [(i * lengths + (m - m_min)) * 2 + cubic]
+};
+
+// A piece of the chosen plan: m = 0 an exact pixel.
+struct piece {
+    unsigned i = 0, m = 0;
+    bool cubic = false;
+};
+
+class optimum_search {
+public:
+    optimum_search(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                   const plan_config& c, plan& p)
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), lengths_(c.m_max - c.m_min + 1) {}
+
+    // The reference image and every segment's candidate errors.
+    void prepare() {
+        const frame exact = per_pixel_frame(r_, k_, dev_);
+        const scene::shaded_image ref = c_.optimal_reference == plan_config::reference::interpolation
+                                            ? to_image(exact)
+                                            : scene::render_phong(r_);
+        const double lsb = pixel_fmt.lsb();
+        auto err = [&](std::size_t at, const rgb_codes& v) {
+            double e = 0.0;
+            for (int ch = 0; ch < 3; ++ch) {
+                const double d = double(v[ch]) * lsb - ref.value[at][ch];
+                e += d * d;
+            }
+            return e;
+        };
+        for (std::size_t at = 0; at < ref.value.size(); ++at)
+            if (ref.covered[at])
+                for (int ch = 0; ch < 3; ++ch) ref_energy_ += ref.value[at][ch] * ref.value[at][ch];
+        const double inf = std::numeric_limits<double>::infinity();
+        const std::array<unsigned, 4> cubic = cubic_points(c_.set);
+        std::vector<sample_geometry> sg(r_.width);
+        for (unsigned y = 0; y < r_.height; ++y) {
+            for (unsigned x = 0; x < r_.width; ++x)
+                if (r_.covered(x, y)) sg[x] = sample_of(scene::geometry_at(r_, x, y, nullptr));
+            for (const auto& seg : line_segments(r_, y, c_, &p_.decision)) {
+                segment_costs s;
+                s.y = y;
+                s.xa = seg[0];
+                s.len = seg[1] - seg[0] + 1;
+                s.exact.resize(s.len);
+                s.intervals.assign(std::size_t(s.len) * lengths_ * 2, inf);
+                for (unsigned i = 0; i < s.len; ++i) {
+                    const unsigned x = s.xa + i;
+                    s.exact[i] = err(r_.index(x, y), exact.px[r_.index(x, y)]);
+                    for (unsigned m = c_.m_min; m <= c_.m_max; ++m) {
+                        const unsigned n = 1u << m;
+                        if (i + n >= s.len) break;  // the t = 1 sample must lie in the segment
+                        for (unsigned cub = 0; cub < 2; ++cub) {
+                            interval_job job;
+                            job.y = y;
+                            job.x0 = x;
+                            job.len = n;
+                            job.m = m;
+                            job.deg2 = cub == 0;
+                            if (job.deg2) {
+                                for (unsigned j = 0; j < 3; ++j) job.s[j] = sg[x + quad_points[j] * n / 8];
+                                job.s[3] = job.s[2];
+                            } else {
+                                for (unsigned j = 0; j < 4; ++j) job.s[j] = sg[x + cubic[j] * n / 8];
+                            }
+                            const std::vector<rgb_codes> px = interval_pixels(job, k_, dev_, c_.eval, c_.set, c_.div);
+                            double e = 0.0;
+                            for (unsigned j = 0; j < n; ++j) e += err(r_.index(x + j, y), px[j]);
+                            s.intervals[index(i, m, cub)] = e;
+                        }
+                    }
+                }
+                segs_.push_back(std::move(s));
+            }
+        }
+    }
+
+    // Points and squared error of the plan minimising points + lambda x error over every segment; with
+    // `out`, its pieces per segment.
+    std::pair<double, double> solve(double lambda, std::vector<std::vector<piece>>* out) {
+        double points = 0.0, error = 0.0;
+        if (out) out->assign(segs_.size(), {});
+        for (std::size_t k = 0; k < segs_.size(); ++k) {
+            const segment_costs& s = segs_[k];
+            // g[have][i]: the least cost of pixels i.. of the segment, `have` when pixel i's geometry
+            // is already computed (an interval's t = 1 sample).
+            std::vector<double> g0(s.len + 1, 0.0), g1(s.len + 1, 0.0);
+            std::vector<piece> best0(s.len), best1(s.len);
+            for (unsigned i = s.len; i-- > 0;) {
+                for (unsigned have = 0; have < 2; ++have) {
+                    const double first = have ? 0.0 : 1.0;
+                    double cost = first + lambda * s.exact[i] + g0[i + 1];
+                    piece choice{i, 0, false};
+                    for (unsigned m = c_.m_min; m <= c_.m_max; ++m) {
+                        const unsigned n = 1u << m;
+                        if (i + n >= s.len) break;
+                        for (unsigned cub = 0; cub < 2; ++cub) {
+                            const double v = first + (cub ? 3.0 : 2.0) + lambda * s.intervals[index(i, m, cub)] + g1[i + n];
+                            if (v < cost) {
+                                cost = v;
+                                choice = {i, m, cub != 0};
+                            }
+                        }
+                    }
+                    (have ? g1 : g0)[i] = cost;
+                    (have ? best1 : best0)[i] = choice;
+                }
+            }
+            bool have = false;
+            for (unsigned i = 0; i < s.len;) {
+                const piece pc = (have ? best1 : best0)[i];
+                points += have ? 0.0 : 1.0;
+                if (pc.m == 0) {
+                    error += s.exact[i];
+                    have = false;
+                    i += 1;
+                } else {
+                    points += pc.cubic ? 3.0 : 2.0;
+                    error += s.intervals[index(i, pc.m, pc.cubic)];
+                    have = true;
+                    i += 1u << pc.m;
+                }
+                if (out) (*out)[k].push_back(pc);
+            }
+        }
+        return {points, error};
+    }
+
+    // Bisects lambda to the smallest that meets the NMSE; returns the chosen pieces.
+    std::vector<std::vector<piece>> search() {
+        const double allowed = c_.optimal_nmse * ref_energy_;
+        double bound = 0.0;
+        auto trial = [&](double lambda) {
+            const auto [points, error] = solve(lambda, nullptr);
+            bound = std::max(bound, points + lambda * (error - allowed));  // Lagrangian dual: a lower bound
+            return error <= allowed;
+        };
+        double lo = 0.0, hi = 1.0;
+        bool feasible = trial(0.0);
+        if (feasible) {
+            hi = 0.0;
+        } else {
+            // Squared levels against points: grow until the error fits (or no plan's does).
+            while (!(feasible = trial(hi)) && hi < 1e15) {
+                lo = hi;
+                hi *= 4.0;
+            }
+            for (int it = 0; feasible && it < 48 && hi > lo * (1.0 + 1e-6); ++it) {
+                const double mid = lo > 0.0 ? std::sqrt(lo * hi) : hi / 4.0;
+                (trial(mid) ? hi : lo) = mid;
+            }
+        }
+        std::vector<std::vector<piece>> pieces;
+        const auto [points, error] = solve(hi, &pieces);
+        p_.optimum.points_bound = feasible ? bound : 0.0;  // <= points: at lambda = hi the error is within
+        p_.optimum.nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
+        p_.optimum.lambda = hi;
+        p_.optimum.feasible = feasible;
+        return pieces;
+    }
+
+    // The chosen pieces as jobs, their geometry counted as make_plan counts it.
+    void emit(const std::vector<std::vector<piece>>& pieces) {
+        scene::span_stepper stepper(r_);
+        const std::array<unsigned, 4> cubic = cubic_points(c_.set);
+        std::size_t k = 0;
+        for (unsigned y = 0; y < r_.height; ++y) {
+            line_geometry lg(r_, y, k_, dev_, p_);
+            for (; k < segs_.size() && segs_[k].y == y; ++k)
+                for (const piece& pc : pieces[k]) {
+                    interval_job job;
+                    job.y = y;
+                    job.x0 = segs_[k].xa + pc.i;
+                    job.m = pc.m;
+                    job.len = 1u << pc.m;
+                    job.deg2 = pc.m > 0 && !pc.cubic;
+                    if (pc.m == 0) {
+                        const sample_geometry s = lg.sample(job.x0);
+                        job.s = {s, s, s, s};
+                    } else if (job.deg2) {
+                        for (unsigned j = 0; j < 3; ++j) job.s[j] = lg.sample(job.x0 + quad_points[j] * job.len / 8);
+                        job.s[3] = job.s[2];
+                    } else {
+                        for (unsigned j = 0; j < 4; ++j) job.s[j] = lg.sample(job.x0 + cubic[j] * job.len / 8);
+                    }
+                    job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(job.x0)));
+                    p_.pixels += job.len;
+                    p_.jobs.push_back(job);
+                }
+            lg.charge_stepped(stepper, p_);
+        }
+        p_.optimum.point_long_min = cheapest_point();
+    }
+
+private:
+    std::size_t index(unsigned i, unsigned m, unsigned cub) const {
+        return (std::size_t(i) * lengths_ + (m - c_.m_min)) * 2 + cub;
+    }
+
+    // The long operations of a point the stepping unit reaches by a step (no triangle set-up, no run
+    // start) with its dot products: no point of any plan costs less. 0 if no two neighbouring pixels
+    // of a line share a triangle (then nothing is claimed).
+    double cheapest_point() const {
+        for (unsigned y = 0; y < r_.height; ++y)
+            for (unsigned x = 0; x + 1 < r_.width; ++x)
+                if (r_.covered(x, y) && r_.covered(x + 1, y) && r_.tri[r_.index(x, y)] == r_.tri[r_.index(x + 1, y)]) {
+                    scene::span_stepper stepper(r_);
+                    stepper.at(x, y, nullptr);
+                    scene::op_counts ops;
+                    line_geometry::charge_dots(stepper.at(x + 1, y, &ops), &ops);
+                    return double(ops.long_ops());
+                }
+        return 0.0;
+    }
+
+    const scene::rasterised& r_;
+    const frame_constants& k_;
+    const scene::device_config& dev_;
+    const plan_config& c_;
+    plan& p_;
+    unsigned lengths_;
+    double ref_energy_ = 0.0;
+    std::vector<segment_costs> segs_;
+};
+
+}  // namespace
+
+plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                  const plan_config& c) {
+    validate(c);
+    plan p;
+    p.width = r.width;
+    p.height = r.height;
+    optimum_search s(r, k, dev, c, p);
+    s.prepare();
+    s.emit(s.search());
+    return p;
+}
+
+}  // namespace shading::pipeline
