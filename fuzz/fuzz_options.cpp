@@ -220,7 +220,10 @@ std::optional<int> render_pipeline(int argc, char** argv) {
     if (auto rc = rp::parse_render_pipeline(argc, argv, o)) return rc;
     FUZZ_CHECK(within(o.size, 1u, rp::max_size), "--size %u", o.size);
     FUZZ_CHECK(o.n == -1 || within(o.n, 1, 1000), "--n %d", o.n);
-    FUZZ_CHECK(in({"fixed", "adaptive", "geometry"}, o.length), "--length '%s'", o.length.c_str());
+    FUZZ_CHECK(in({"fixed", "adaptive", "geometry", "optimal"}, o.length), "--length '%s'", o.length.c_str());
+    FUZZ_CHECK(in({"interpolation", "total"}, o.optimal_reference), "--optimal-reference '%s'",
+               o.optimal_reference.c_str());
+    FUZZ_CHECK(o.pc.optimal_nmse >= 0.0 && o.pc.optimal_nmse <= 1.0, "--optimal-nmse %g", o.pc.optimal_nmse);
     FUZZ_CHECK(in({"cubic", "quadratic", "zones", "adaptive", "geometry"}, o.degree), "--degree '%s'", o.degree.c_str());
     FUZZ_CHECK(in({"horner", "fd"}, o.eval), "--eval '%s'", o.eval.c_str());
     FUZZ_CHECK(in({"case1", "case2"}, o.set), "--set '%s'", o.set.c_str());

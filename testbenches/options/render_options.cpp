@@ -23,9 +23,16 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
     app.add_option("--ks", o.ks, "k_s: one value or r,g,b in [0, 1]");
     app.add_option("--ambient", o.ambient, "ambient: one value or r,g,b in [0, 1]");
     app.add_option("--length", o.length,
-                   "interval length policy: fixed, adaptive (exact colours at a check point: host only) or geometry "
-                   "(N.H and N.L only: a hardware geometry side can run it)")
-        ->check(CLI::IsMember({"fixed", "adaptive", "geometry"}));
+                   "interval length policy: fixed, adaptive (exact colours at a check point: host only), geometry "
+                   "(N.H and N.L only: a hardware geometry side can run it) or optimal (a yardstick: the fewest "
+                   "geometry points for --optimal-nmse, knowing every colour; host only)")
+        ->check(CLI::IsMember({"fixed", "adaptive", "geometry", "optimal"}));
+    app.add_option("--optimal-nmse", o.pc.optimal_nmse, "optimal length: the largest NMSE allowed (0..1)")
+        ->check(CLI::Range(0.0, 1.0))->check(not_nan());
+    app.add_option("--optimal-reference", o.optimal_reference,
+                   "optimal length: the NMSE against interpolation (per-pixel shading through the device) or total "
+                   "(exact Phong)")
+        ->check(CLI::IsMember({"interpolation", "total"}));
     app.add_option("--lobe-tol", o.pc.lobe_tol, "geometry length: N.H spread allowed in a highlight, x the derived bound")
         ->check(CLI::PositiveNumber)->check(not_nan());
     app.add_option("--m", o.pc.m, "fixed length: intervals of 2^m pixels");

@@ -28,6 +28,7 @@ struct options {
     int n = -1;                         // -1: the scene's material
     std::string kd, ks, ambient;        // "v" or "r,g,b" in [0, 1]; empty: the scene's material
     std::string length = "fixed", degree = "cubic", eval = "horner", set = "case1", div3 = "shift_add";
+    std::string optimal_reference = "interpolation";
     std::string unit = "stepped";       // the geometry side's unit: stepped or scratch
     plan_config pc;                     // the numeric and boolean settings, defaults from pipeline.h
     std::string device = "patent", mode = "saturate";

@@ -161,6 +161,26 @@ json report_json(const options& o, const render_data& d) {
                    {"exact_pixels", n_deg[1]},
                    {"quadratic_pixels", n_deg[2]},
                    {"cubic_pixels", n_deg[3]}};
+    if (cfg.length == length_policy::optimal) {
+        // The yardstick's certificate: no plan of these segments reaching the NMSE has fewer points,
+        // and (with the cheapest point's long operations and the sample stage's per sample) no fewer
+        // long operations of the geometry side and the sample stage than the bound.
+        const double per_sample = hc.samples ? double(hc.sample_stage.long_ops()) / double(hc.samples) : 0.0;
+        const double bound_long = p.optimum.points_bound * (p.optimum.point_long_min + per_sample);
+        rep["plan"]["optimum"] = {
+            {"reference", cfg.optimal_reference == plan_config::reference::total ? "total" : "interpolation"},
+            {"nmse_allowed", cfg.optimal_nmse},
+            {"feasible", p.optimum.feasible},
+            {"nmse", p.optimum.nmse},
+            {"lambda", p.optimum.lambda},
+            {"points_bound", p.optimum.points_bound},
+            {"points_bound_per_pixel", hw_px > 0 ? p.optimum.points_bound / hw_px : 0.0},
+            {"point_long_min", p.optimum.point_long_min},
+            {"sample_long", per_sample},
+            {"long_bound_per_pixel", hw_px > 0 ? bound_long / hw_px : 0.0},
+            {"scanline_phong_ratio_bound",
+             bound_long > 0 ? double(d.sl.total().long_ops()) / bound_long * (hw_px / phong_px) : 0.0}};
+    }
     rep["scene_stats"] = {{"triangles", r.setups.size()}, {"covered_pixels", r.covered_pixels()}};
     rep["errors"] = errors;
     rep["ops_per_pixel"] = {
@@ -212,6 +232,16 @@ std::string report_md(const options& o, const render_data& d) {
        << fmt("%.2f", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()) << " pixels), " << hc.samples
        << " samples through the sample stage; pixels exact " << n_deg[1] << ", quadratic " << n_deg[2] << ", cubic "
        << n_deg[3] << ".\n\n";
+    if (cfg.length == length_policy::optimal) {
+        const json rep = report_json(o, d);
+        const json& opt = rep["plan"]["optimum"];
+        md << "The optimum (a yardstick, not a policy: it knows every colour and pays nothing to decide) for "
+           << opt["reference"].get<std::string>() << " NMSE <= " << fmt("%.2e", cfg.optimal_nmse) << ": "
+           << (p.optimum.feasible ? "reached, NMSE " : "out of reach; the lowest-error plan has NMSE ")
+           << fmt("%.3e", p.optimum.nmse) << ", " << p.geometry_points << " geometry points; no plan of these segments "
+           << "meets the NMSE with fewer than " << fmt("%.1f", p.optimum.points_bound) << " ("
+           << fmt("%.4f", opt["points_bound_per_pixel"].get<double>()) << " per pixel).\n\n";
+    }
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";
     md << "| pair | what | NMSE | PSNR dB | max |\n|---|---|---|---|---|\n";
     for (const auto& pd : pairs) {

@@ -62,7 +62,10 @@ plan_config plan_config_of(const options& o) {
     c.div = o.div3 == "exact" ? interp::div3_mode::exact : interp::div3_mode::shift_add;
     c.length = o.length == "adaptive"   ? length_policy::adaptive
                : o.length == "geometry" ? length_policy::geometry
+               : o.length == "optimal"  ? length_policy::optimal
                                         : length_policy::fixed;
+    c.optimal_reference = o.optimal_reference == "total" ? plan_config::reference::total
+                                                         : plan_config::reference::interpolation;
     c.degree = o.degree == "quadratic" ? degree_policy::quadratic
                : o.degree == "zones"   ? degree_policy::zones
                : o.degree == "adaptive" ? degree_policy::adaptive

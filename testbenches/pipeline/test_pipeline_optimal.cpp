@@ -1,0 +1,207 @@
+// The optimum plan (optimal.cpp), the yardstick of the length and degree policies: a valid plan whose
+// NMSE, recomputed from its frame, is within the allowed one; its geometry points counted from its
+// sample pixels; its Lagrangian certificate checked against every policy's plan and against plans
+// perturbed from it (none may beat points + lambda x error); the cheapest point hand-counted.
+#include <random>
+
+#include "plan_test_fixtures.h"
+
+using namespace shading;
+using namespace shading::pipeline;
+using namespace plan_test;
+
+namespace {
+
+plan_config optimum_config(double nmse, plan_config::reference ref = plan_config::reference::interpolation) {
+    plan_config c;
+    c.length = length_policy::optimal;
+    c.m_min = interp::m_min;
+    c.m_max = interp::m_max;
+    c.eval = evaluator::fd;
+    c.optimal_nmse = nmse;
+    c.optimal_reference = ref;
+    return c;
+}
+
+// The reference image and its energy (sum of squared values over covered pixels and channels),
+// recomputed here from the golden model and the Phong renderer.
+struct reference_image {
+    scene::shaded_image img;
+    double energy = 0.0;
+    reference_image(const scene_fixture& f, plan_config::reference ref) {
+        img = ref == plan_config::reference::interpolation ? to_image(per_pixel_frame(f.r, f.k, patent))
+                                                            : scene::render_phong(f.r);
+        for (std::size_t i = 0; i < img.value.size(); ++i)
+            if (img.covered[i])
+                for (int ch = 0; ch < 3; ++ch) energy += img.value[i][ch] * img.value[i][ch];
+    }
+};
+
+// Squared error (8-bit levels^2) of a plan's frame against the reference: NMSE x energy.
+double squared_error(const scene_fixture& f, const plan& p, const plan_config& c, const reference_image& ref) {
+    return compare(to_image(golden_frame(p, f.k, patent, c)), ref.img).nmse * ref.energy;
+}
+
+}  // namespace
+
+TEST(PipelineOptimal, IsAValidPlanWithinItsNmse) {
+    const scene_fixture& f = head();
+    for (const auto ref : {plan_config::reference::interpolation, plan_config::reference::total}) {
+        const plan_config c = optimum_config(ref == plan_config::reference::interpolation ? 1e-4 : 1e-2, ref);
+        const plan p = make_plan(f.r, f.k, patent, c);
+        expect_valid_plan(f.r, p, c);
+        ASSERT_TRUE(p.optimum.feasible);
+        const reference_image img(f, ref);
+        const double nmse = squared_error(f, p, c, img) / img.energy;
+        EXPECT_LE(nmse, c.optimal_nmse);
+        EXPECT_NEAR(p.optimum.nmse, nmse, 1e-9 * c.optimal_nmse);
+        // Its points are its distinct sample pixels (no check points: it pays nothing to decide).
+        EXPECT_EQ(p.geometry_points, sample_pixels(p, c.set).size());
+        EXPECT_EQ(p.check_samples, 0u);
+        EXPECT_LE(p.optimum.points_bound, double(p.geometry_points));
+        EXPECT_GT(p.optimum.points_bound, 0.0);
+    }
+}
+
+TEST(PipelineOptimal, TighterNmseNeedsMorePoints) {
+    const scene_fixture& f = head();
+    std::size_t prev = 0;
+    for (const double nmse : {1e-3, 1e-4, 1e-5, 1e-6}) {
+        const plan p = make_plan(f.r, f.k, patent, optimum_config(nmse));
+        EXPECT_GE(p.geometry_points, prev) << "NMSE " << nmse;
+        prev = p.geometry_points;
+    }
+    // NMSE 0 against per-pixel shading: every interval that is not exact costs error unless its
+    // polynomial hits every pixel's code, so the plan is (nearly) all exact pixels, and still valid.
+    const plan all = make_plan(f.r, f.k, patent, optimum_config(0.0));
+    EXPECT_TRUE(all.optimum.feasible);
+    EXPECT_EQ(all.optimum.nmse, 0.0);
+    EXPECT_GT(all.geometry_points, prev);
+}
+
+// No policy's plan (same segments, same evaluator) reaches its own NMSE with fewer sample points than
+// the bound the optimum certifies for that NMSE.
+TEST(PipelineOptimal, BoundIsBelowEveryPolicy) {
+    const scene_fixture& f = head();
+    const reference_image ref(f, plan_config::reference::interpolation);
+    std::vector<plan_config> policies;
+    for (const double tol : {0.5, 1.0, 2.0, 4.0}) {
+        plan_config c;
+        c.length = length_policy::adaptive;
+        c.length_tol = tol;
+        c.split_at_check = tol > 1.0;
+        policies.push_back(c);
+        c.length = length_policy::geometry;
+        c.degree = degree_policy::geometry;
+        policies.push_back(c);
+    }
+    for (const unsigned m : {2u, 3u, 4u}) policies.push_back(head_fixed(m));
+    for (plan_config c : policies) {
+        c.eval = evaluator::fd;
+        SCOPED_TRACE(std::string(length_policy_name(c.length)) + " tol " + std::to_string(c.length_tol) + " m " +
+                     std::to_string(c.m));
+        const plan p = make_plan(f.r, f.k, patent, c);
+        const double nmse = squared_error(f, p, c, ref) / ref.energy;
+        const plan best = make_plan(f.r, f.k, patent, optimum_config(nmse));
+        EXPECT_LE(best.optimum.points_bound, double(sample_pixels(p, c.set).size()));
+        EXPECT_LE(best.geometry_points, sample_pixels(p, c.set).size());
+    }
+}
+
+// Lagrangian optimality, checked from outside: the optimum minimises points + lambda x error over every
+// plan of its segments, so no plan made from it by a local change (an interval made exact pixels, its
+// degree flipped, split in two, or merged with its neighbour) may do better at its lambda.
+TEST(PipelineOptimal, NoLocalChangeBeatsIt) {
+    const scene_fixture& f = head();
+    const plan_config c = optimum_config(3e-5);
+    const reference_image ref(f, plan_config::reference::interpolation);
+    const plan best = make_plan(f.r, f.k, patent, c);
+    const double lambda = best.optimum.lambda;
+    ASSERT_GT(lambda, 0.0);
+    auto objective = [&](const plan& p) {
+        return double(sample_pixels(p, c.set).size()) + lambda * squared_error(f, p, c, ref);
+    };
+    const double at_best = objective(best);
+    std::mt19937 rng(7);
+    std::size_t tried = 0;
+    for (int attempt = 0; attempt < 400 && tried < 60; ++attempt) {
+        const std::size_t i = std::uniform_int_distribution<std::size_t>(0, best.jobs.size() - 1)(rng);
+        const interval_job& j = best.jobs[i];
+        if (j.m == 0) continue;
+        plan p = best;
+        std::vector<interval_job> repl;
+        auto sample = [&](unsigned x) { return sample_of(scene::geometry_at(f.r, x, j.y, nullptr)); };
+        auto make = [&](unsigned x0, unsigned m, bool deg2) {
+            interval_job k = j;
+            k.x0 = x0;
+            k.m = m;
+            k.len = 1u << m;
+            k.deg2 = deg2;
+            if (m == 0) {
+                k.deg2 = false;
+                k.s = {sample(x0), sample(x0), sample(x0), sample(x0)};
+            } else {
+                const auto pts = job_points(k, c.set);
+                for (std::size_t s = 0; s < 4; ++s) k.s[s] = sample(at(k, pts[std::min(s, pts.size() - 1)]));
+            }
+            k.zone = static_cast<uint8_t>(head_zone(f.r, scene::geometry_at(f.r, x0, j.y, nullptr)));
+            return k;
+        };
+        const int kind = attempt % 4;
+        if (kind == 0) {
+            for (unsigned x = j.x0; x < j.x0 + j.len; ++x) repl.push_back(make(x, 0, false));
+        } else if (kind == 1) {
+            repl.push_back(make(j.x0, j.m, !j.deg2));
+        } else if (kind == 2) {
+            if (j.m <= c.m_min) continue;
+            repl.push_back(make(j.x0, j.m - 1, j.deg2));
+            repl.push_back(make(j.x0 + j.len / 2, j.m - 1, j.deg2));
+        } else {
+            // Merge with the next job when it is an interval of the same length and the doubled
+            // interval's t = 1 sample stays in the segment.
+            if (i + 1 >= best.jobs.size() || j.m >= c.m_max) continue;
+            const interval_job& nx = best.jobs[i + 1];
+            const auto lc = cuts(f.r, j.y, c);
+            if (nx.y != j.y || nx.m != j.m || nx.x0 != j.x0 + j.len) continue;
+            if (j.x0 + 2 * j.len > segment_end(lc, j.x0)) continue;
+            repl.push_back(make(j.x0, j.m + 1, j.deg2));
+        }
+        const std::size_t removed = kind == 3 ? 2 : 1;
+        p.jobs.erase(p.jobs.begin() + std::ptrdiff_t(i), p.jobs.begin() + std::ptrdiff_t(i + removed));
+        p.jobs.insert(p.jobs.begin() + std::ptrdiff_t(i), repl.begin(), repl.end());
+        ++tried;
+        EXPECT_GE(objective(p), at_best - 1e-6 * at_best) << "change " << kind << " of job " << i << " (line " << j.y
+                                                           << ", x " << j.x0 << ", m " << j.m << ")";
+    }
+    EXPECT_GE(tried, 40u);
+}
+
+TEST(PipelineOptimal, InfeasibleNmseGivesTheLowestErrorPlan) {
+    const scene_fixture& f = head();
+    // Against exact Phong the device's own error remains at every pixel: NMSE 0 is out of reach.
+    const plan_config c = optimum_config(0.0, plan_config::reference::total);
+    const plan p = make_plan(f.r, f.k, patent, c);
+    EXPECT_FALSE(p.optimum.feasible);
+    EXPECT_EQ(p.optimum.points_bound, 0.0);
+    expect_valid_plan(f.r, p, c);
+    const reference_image ref(f, plan_config::reference::total);
+    EXPECT_NEAR(p.optimum.nmse, squared_error(f, p, c, ref) / ref.energy, 1e-9);
+}
+
+TEST(PipelineOptimal, RejectsABadNmse) {
+    plan_config c = optimum_config(-1e-5);
+    EXPECT_THROW(make_plan(head().r, head().k, patent, c), scene::scene_error);
+    c.optimal_nmse = std::nan("");
+    EXPECT_THROW(make_plan(head().r, head().k, patent, c), scene::scene_error);
+    EXPECT_STREQ(length_policy_name(length_policy::optimal), "optimal");
+    EXPECT_FALSE(policy_runs_on_geometry_side(length_policy::optimal));
+}
+
+// The cheapest point of the head (perspective camera, one directional light), counted by hand from
+// scanline.h: a step is additions only; N = normalize(U_N): 3 mul for |U_N|^2, a square root, a
+// division, 3 mul (8); P = (1 / Q) U_P: a division, 3 mul (4); V = normalize(E - P) (8); H =
+// normalize(L + V) (8); N.L and N.H: 6 mul. 34 long operations.
+TEST(PipelineOptimal, CheapestPointIsHandCounted) {
+    const plan p = make_plan(head().r, head().k, patent, optimum_config(1e-3));
+    EXPECT_EQ(p.optimum.point_long_min, 34.0);
+}
