@@ -36,6 +36,13 @@ void add_bench_options(CLI::App& app, bench_options& b, const std::string& defau
         ->check(CLI::Range(1u, max_jobs));
 }
 
+// The TLM benches' two run lengths, in pixels rounded up to whole `unit`s (lines or bursts).
+void add_pixel_options(CLI::App& app, std::size_t& lt, std::size_t& pin, const std::string& unit) {
+    const auto pixels = CLI::Range(std::size_t{1}, std::size_t{1'000'000'000'000});
+    app.add_option("--lt-pixels", lt, "pixels shaded loosely timed (whole " + unit + ")")->check(pixels);
+    app.add_option("--pin-pixels", pin, "pixels shaded pin-accurate (whole " + unit + ")")->check(pixels);
+}
+
 // Parses, then derives what depends on which options were given.
 std::optional<int> parse_bench(CLI::App& app, int argc, char** argv, bench_options& b) {
     SHADING_CLI_PARSE(app, argc, argv);
@@ -200,9 +207,7 @@ std::optional<int> parse_bench_specular_tlm(int argc, char** argv, bench_specula
     CLI::App app{"Throughput of the specular TLM-2.0 wrapper, loosely timed and pin-accurate"};
     app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared")
         ->check(CLI::IsMember(device_names()));
-    const auto pixels = CLI::Range(std::size_t{1}, std::size_t{1'000'000'000'000});
-    app.add_option("--lt-pixels", o.lt_pixels, "pixels shaded loosely timed (whole lines)")->check(pixels);
-    app.add_option("--pin-pixels", o.pin_pixels, "pixels shaded pin-accurate (whole lines)")->check(pixels);
+    add_pixel_options(app, o.lt_pixels, o.pin_pixels, "lines");
     app.add_option("--burst", o.burst, "pixels per access (1: one transaction per write and per read)")
         ->check(CLI::Range(1u, 1024u));
     SHADING_CLI_PARSE(app, argc, argv);
@@ -211,9 +216,7 @@ std::optional<int> parse_bench_specular_tlm(int argc, char** argv, bench_specula
 
 std::optional<int> parse_bench_line_tlm(int argc, char** argv, bench_line_tlm_options& o) {
     CLI::App app{"Throughput of the raster-line unit's TLM-2.0 wrapper, loosely timed and pin-accurate"};
-    const auto pixels = CLI::Range(std::size_t{1}, std::size_t{1'000'000'000'000});
-    app.add_option("--lt-pixels", o.lt_pixels, "pixels shaded loosely timed (whole bursts)")->check(pixels);
-    app.add_option("--pin-pixels", o.pin_pixels, "pixels shaded pin-accurate (whole bursts)")->check(pixels);
+    add_pixel_options(app, o.lt_pixels, o.pin_pixels, "bursts");
     app.add_option("--burst", o.burst, "32-pixel intervals per access (1: one transaction per interval and direction)")
         ->check(CLI::Range(1u, 256u));
     SHADING_CLI_PARSE(app, argc, argv);
