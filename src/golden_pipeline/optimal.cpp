@@ -154,6 +154,70 @@ public:
         return {points, error};
     }
 
+    // The length policies' own structure with perfect estimates: per segment left to right, the
+    // longest m (growing by at most one level, as make_plan's adaptive length) whose quadratic, else
+    // cubic, has a mean squared error per channel of at most tau2; where even 2^m_min misses, 2^m_min
+    // exact pixels. Points and squared error as solve().
+    std::pair<double, double> greedy(double tau2, std::vector<std::vector<piece>>* out) {
+        double points = 0.0, error = 0.0;
+        if (out) out->assign(segs_.size(), {});
+        for (std::size_t k = 0; k < segs_.size(); ++k) {
+            const segment_costs& s = segs_[k];
+            bool have = false;
+            unsigned i = 0, grow = c_.m_max;
+            auto take = [&](const piece& pc) {
+                points += have ? 0.0 : 1.0;
+                if (pc.m == 0) {
+                    error += s.exact[pc.i];
+                    have = false;
+                } else {
+                    points += pc.cubic ? 3.0 : 2.0;
+                    error += s.intervals[index(pc.i, pc.m, pc.cubic)];
+                    have = true;
+                }
+                if (out) (*out)[k].push_back(pc);
+            };
+            while (s.len - 1 - i >= (1u << c_.m_min)) {
+                const unsigned room = s.len - 1 - i;  // the t = 1 sample must lie in the segment
+                unsigned top = c_.m_min;
+                while (top < grow && (1u << (top + 1)) <= room) ++top;
+                bool done = false;
+                for (unsigned m = top + 1; m-- > c_.m_min && !done;)
+                    for (unsigned cub = 0; cub < 2 && !done; ++cub)
+                        if (s.intervals[index(i, m, cub)] <= tau2 * 3.0 * double(1u << m)) {
+                            take({i, m, cub != 0});
+                            i += 1u << m;
+                            grow = std::min(m + 1, c_.m_max);
+                            done = true;
+                        }
+                if (!done) {
+                    for (unsigned j = 0; j < (1u << c_.m_min); ++j) take({i++, 0, false});
+                    grow = std::min(c_.m_min + 1, c_.m_max);
+                }
+            }
+            while (i < s.len) take({i++, 0, false});
+        }
+        return {points, error};
+    }
+
+    // The greedy's tolerance: the largest (bisected) whose plan meets the NMSE.
+    std::vector<std::vector<piece>> search_greedy() {
+        const double allowed = c_.optimal_nmse * ref_energy_;
+        auto meets = [&](double tau) { return greedy(tau * tau, nullptr).second <= allowed; };
+        double lo = 0.0, hi = 256.0;  // levels: tau = 0 takes only intervals without error
+        if (meets(hi)) lo = hi;
+        for (int it = 0; it < 40 && lo != hi; ++it) {
+            const double mid = lo > 0.0 ? std::sqrt(lo * hi) : hi / 16.0;
+            (meets(mid) ? lo : hi) = mid;
+            if (hi < 1e-6) break;
+        }
+        std::vector<std::vector<piece>> pieces;
+        const double error = greedy(lo * lo, &pieces).second;
+        p_.optimum.greedy_tolerance = lo;
+        p_.optimum.greedy_nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
+        return pieces;
+    }
+
     // Bisects lambda to the smallest that meets the NMSE; returns the chosen pieces.
     std::vector<std::vector<piece>> search() {
         const double allowed = c_.optimal_nmse * ref_energy_;
@@ -261,7 +325,9 @@ plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const sc
     p.height = r.height;
     optimum_search s(r, k, dev, c, p);
     s.prepare();
-    s.emit(s.search());
+    auto pieces = s.search();
+    if (c.optimal_greedy) pieces = s.search_greedy();
+    s.emit(pieces);
     return p;
 }
 

@@ -108,6 +108,10 @@ struct plan_config {
     enum class reference { interpolation, total };
     double optimal_nmse = 1e-5;
     reference optimal_reference = reference::interpolation;
+    // Instead of the optimum, the length policies' greedy structure with perfect estimates (see
+    // optimal_plan): what a policy that knew every interval's error could reach. The certificate
+    // (points_bound, nmse, lambda) stays the optimum's; the plan is the greedy's.
+    bool optimal_greedy = false;
 };
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
 // a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
@@ -158,6 +162,8 @@ struct plan {
         double lambda = 0.0;         // the Lagrange multiplier it was found with (points per squared level)
         bool feasible = false;       // false: even the lowest-error plan misses c.optimal_nmse (it is the plan)
         double point_long_min = 0.0; // long ops of the cheapest geometry point (a step, no set-up or run start)
+        // With c.optimal_greedy: the greedy's tolerance (RMS levels per interval) and its plan's NMSE.
+        double greedy_tolerance = 0.0, greedy_nmse = 0.0;
     };
     optimum_certificate optimum;
 };
@@ -169,7 +175,11 @@ plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene
 // most c.optimal_nmse. A dynamic programme per segment minimises points + lambda x squared error;
 // lambda is bisected to the smallest that meets the NMSE, and every lambda tried gives a Lagrangian
 // lower bound (points + lambda (error - allowed error)) on the true optimum: plan.optimum.points_bound.
-// Its geometry is counted as make_plan's (make_plan calls it for length_policy::optimal).
+// Its geometry is counted as make_plan's (make_plan calls it for length_policy::optimal). With
+// c.optimal_greedy the plan is instead the length policies' structure given perfect estimates: per
+// segment left to right, the longest m (growing by one level at most, as adaptive length) whose
+// quadratic, else cubic, has an RMS error of at most a tolerance, bisected to the largest that meets
+// the NMSE; where 2^m_min misses, 2^m_min exact pixels. Its gap to the optimum is the structure's cost.
 plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                   const plan_config& c);
 

@@ -33,6 +33,9 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
                    "optimal length: the NMSE against interpolation (per-pixel shading through the device) or total "
                    "(exact Phong)")
         ->check(CLI::IsMember({"interpolation", "total"}));
+    app.add_flag("--optimal-greedy", o.pc.optimal_greedy,
+                 "optimal length: instead the adaptive policies' greedy structure with perfect estimates (the "
+                 "certificate stays the optimum's)");
     app.add_option("--lobe-tol", o.pc.lobe_tol, "geometry length: N.H spread allowed in a highlight, x the derived bound")
         ->check(CLI::PositiveNumber)->check(not_nan());
     app.add_option("--m", o.pc.m, "fixed length: intervals of 2^m pixels");

@@ -179,7 +179,11 @@ json report_json(const options& o, const render_data& d) {
             {"sample_long", per_sample},
             {"long_bound_per_pixel", hw_px > 0 ? bound_long / hw_px : 0.0},
             {"scanline_phong_ratio_bound",
-             bound_long > 0 ? double(d.sl.total().long_ops()) / bound_long * (hw_px / phong_px) : 0.0}};
+             bound_long > 0 ? double(d.sl.total().long_ops()) / bound_long * (hw_px / phong_px) : 0.0},
+            {"greedy", cfg.optimal_greedy}};
+        if (cfg.optimal_greedy)
+            rep["plan"]["optimum"]["greedy_plan"] = {{"tolerance_rms_levels", p.optimum.greedy_tolerance},
+                                                     {"nmse", p.optimum.greedy_nmse}};
     }
     rep["scene_stats"] = {{"triangles", r.setups.size()}, {"covered_pixels", r.covered_pixels()}};
     rep["errors"] = errors;
@@ -238,9 +242,15 @@ std::string report_md(const options& o, const render_data& d) {
         md << "The optimum (a yardstick, not a policy: it knows every colour and pays nothing to decide) for "
            << opt["reference"].get<std::string>() << " NMSE <= " << fmt("%.2e", cfg.optimal_nmse) << ": "
            << (p.optimum.feasible ? "reached, NMSE " : "out of reach; the lowest-error plan has NMSE ")
-           << fmt("%.3e", p.optimum.nmse) << ", " << p.geometry_points << " geometry points; no plan of these segments "
+           << fmt("%.3e", p.optimum.nmse) << "; no plan of these segments "
            << "meets the NMSE with fewer than " << fmt("%.1f", p.optimum.points_bound) << " ("
-           << fmt("%.4f", opt["points_bound_per_pixel"].get<double>()) << " per pixel).\n\n";
+           << fmt("%.4f", opt["points_bound_per_pixel"].get<double>()) << " per pixel).";
+        if (cfg.optimal_greedy)
+            md << " The plan here is not the optimum's but the adaptive policies' greedy structure with perfect "
+                  "estimates: RMS tolerance "
+               << fmt("%.3f", p.optimum.greedy_tolerance) << " levels per interval, NMSE "
+               << fmt("%.3e", p.optimum.greedy_nmse) << ", " << p.geometry_points << " geometry points.";
+        md << "\n\n";
     }
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";
     md << "| pair | what | NMSE | PSNR dB | max |\n|---|---|---|---|---|\n";

@@ -205,3 +205,61 @@ TEST(PipelineOptimal, CheapestPointIsHandCounted) {
     const plan p = make_plan(head().r, head().k, patent, optimum_config(1e-3));
     EXPECT_EQ(p.optimum.point_long_min, 34.0);
 }
+
+// The greedy with perfect estimates (--optimal-greedy): a valid plan within the NMSE, never below the
+// optimum's bound, every interval within the tolerance, and where the growth rule allowed a longer
+// interval at the same start, neither degree of it within the tolerance (recomputed here).
+TEST(PipelineOptimal, GreedyFollowsItsRule) {
+    const scene_fixture& f = head();
+    plan_config c = optimum_config(1e-4);
+    c.optimal_greedy = true;
+    const plan p = make_plan(f.r, f.k, patent, c);
+    expect_valid_plan(f.r, p, c);
+    const reference_image ref(f, plan_config::reference::interpolation);
+    const double nmse = squared_error(f, p, c, ref) / ref.energy;
+    EXPECT_LE(nmse, c.optimal_nmse);
+    EXPECT_NEAR(p.optimum.greedy_nmse, nmse, 1e-9 * c.optimal_nmse);
+    EXPECT_GE(double(p.geometry_points), p.optimum.points_bound);
+    const plan best = make_plan(f.r, f.k, patent, optimum_config(1e-4));
+    EXPECT_GT(p.geometry_points, best.geometry_points) << "the greedy should need more points than the optimum";
+    const double tol = p.optimum.greedy_tolerance;
+    ASSERT_GT(tol, 0.0);
+    const frame exact = per_pixel_frame(f.r, f.k, patent);
+    // RMS error (levels, per channel) of an interval at (y, x0) of 2^m pixels, recomputed.
+    auto rms = [&](unsigned y, unsigned x0, unsigned m, bool deg2) {
+        interval_job j;
+        j.y = y;
+        j.x0 = x0;
+        j.m = m;
+        j.len = 1u << m;
+        j.deg2 = deg2;
+        const auto pts = job_points(j, c.set);
+        for (std::size_t s = 0; s < 4; ++s)
+            j.s[s] = sample_of(scene::geometry_at(f.r, at(j, pts[std::min(s, pts.size() - 1)]), y, nullptr));
+        const auto px = golden_interval(j, f.k, patent, c.eval, c.set, c.div);
+        double e = 0.0;
+        for (unsigned i = 0; i < j.len; ++i)
+            for (int ch = 0; ch < 3; ++ch) {
+                const double d = (double(px[i][ch]) - double(exact.px[f.r.index(x0 + i, y)][ch])) / 256.0;
+                e += d * d;
+            }
+        return std::sqrt(e / (3.0 * j.len));
+    };
+    std::size_t longer_checked = 0;
+    for (std::size_t i = 0; i < p.jobs.size(); ++i) {
+        const interval_job& j = p.jobs[i];
+        if (j.m == 0) continue;
+        EXPECT_LE(rms(j.y, j.x0, j.m, j.deg2), tol * (1 + 1e-9)) << "line " << j.y << ", x " << j.x0;
+        // The previous job ends here on the same segment as an interval at least as long: the growth
+        // rule allowed m + 1, so m + 1 either does not fit or misses in both degrees.
+        if (i == 0 || j.m >= c.m_max) continue;
+        const interval_job& prev = p.jobs[i - 1];
+        const auto lc = cuts(f.r, j.y, c);
+        if (prev.y != j.y || prev.m < j.m || prev.x0 + prev.len != j.x0 || lc.count(j.x0)) continue;
+        if (j.x0 + (2u << j.m) > segment_end(lc, j.x0)) continue;
+        ++longer_checked;
+        EXPECT_GT(rms(j.y, j.x0, j.m + 1, true), tol) << "line " << j.y << ", x " << j.x0;
+        EXPECT_GT(rms(j.y, j.x0, j.m + 1, false), tol) << "line " << j.y << ", x " << j.x0;
+    }
+    EXPECT_GT(longer_checked, 20u);
+}
