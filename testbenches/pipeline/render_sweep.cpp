@@ -201,6 +201,9 @@ int run_sweep(const options& o) {
         const std::string light = sp.light.empty() ? o.light : sp.light;
         if (!light.empty()) a.insert(a.end(), {"--light", light});
         a.insert(a.end(), {"--lobe-tol", num(o.pc.lobe_tol)});
+        // The optimum's settings (read only with --length optimal, as --lobe-tol only with geometry).
+        a.insert(a.end(), {"--optimal-nmse", num(o.pc.optimal_nmse), "--optimal-reference", o.optimal_reference});
+        if (o.pc.optimal_greedy) a.push_back("--optimal-greedy");
         const int n = sp.n != -1 ? sp.n : o.n;
         if (n != -1) a.insert(a.end(), {"--n", std::to_string(n)});
         if (!o.kd.empty()) a.insert(a.end(), {"--kd", o.kd});
