@@ -4,7 +4,15 @@
 
 namespace shading::scene {
 
-span_stepper::span_stepper(const rasterised& r) : r_(r), grad_(r.setups.size()) {
+namespace {
+unsigned popcount(unsigned v) {
+    unsigned ones = 0;
+    for (; v; v >>= 1) ones += v & 1u;
+    return ones;
+}
+}  // namespace
+
+span_stepper::span_stepper(const rasterised& r, bool walk_edges) : r_(r), walk_(walk_edges), grad_(r.setups.size()) {
     const world& s = *r.src;
     perspective_ = !s.cam.orthographic();
     need_p_ = perspective_;
@@ -39,15 +47,14 @@ void span_stepper::setup(int32_t t, op_counts* ops) {
 pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops) {
     const int32_t t = r_.tri[r_.index(x, y)];
     if (!grad_[static_cast<std::size_t>(t)].ready) setup(t, ops);
-    const gradients& g = grad_[static_cast<std::size_t>(t)];
+    gradients& g = grad_[static_cast<std::size_t>(t)];
     auto c = [ops](double v) { return cnum(v, ops); };
     // Counted values start from the stored ones, charging `ops` from here on.
     auto rebind = [&c](cnum v) { return c(v.value()); };
     if (t == tri_ && y == y_ && x > x_) {
         // Step d pixels right: + d a per component (shift, or shift-and-add: popcount(d) adds).
         const unsigned d = x - x_;
-        unsigned ones = 0;
-        for (unsigned k = d; k; k >>= 1) ones += k & 1u;
+        const unsigned ones = popcount(d);
         auto step = [&](cnum v, const plane3& pl) {
             if (ops) ops->add += ones - 1;
             return rebind(v) + c(d * pl.a);
@@ -62,6 +69,30 @@ pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops) {
         }
         if (perspective_) q_ = step(q_, g.q);
         ++stats_.steps;
+    } else if (walk_ && g.visited && y >= g.last_y) {
+        // Edge walking from the triangle's last point: + (y - y') b (an add a line), + (x - x') a
+        // (popcount(|x - x'|) adds; a subtraction leftwards).
+        const unsigned dy = y - g.last_y;
+        const int dx = int(x) - int(g.last_x);
+        const unsigned ones = popcount(unsigned(dx < 0 ? -dx : dx));
+        auto walk = [&](double v, const plane3& pl) {
+            cnum out = c(v);
+            if (dy > 0) {
+                out = out + c(dy * pl.b);
+                if (ops) ops->add += dy - 1;
+            }
+            if (dx != 0) {
+                out = out + c(dx * pl.a);
+                if (ops) ops->add += ones - 1;
+            }
+            return out;
+        };
+        un_ = {walk(g.last_un[0], g.n[0]), walk(g.last_un[1], g.n[1]), walk(g.last_un[2], g.n[2])};
+        if (need_p_) up_ = {walk(g.last_up[0], g.p[0]), walk(g.last_up[1], g.p[1]), walk(g.last_up[2], g.p[2])};
+        if (perspective_) q_ = walk(g.last_q, g.q);
+        tri_ = t;
+        ++stats_.run_starts;
+        ++stats_.walked_starts;
     } else {
         // Run start: a x + b y + c at the pixel centre (2 mul, 2 add per component).
         const cnum px = c(x + 0.5), py = c(y + 0.5);
@@ -75,6 +106,14 @@ pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops) {
     x_ = x;
     y_ = y;
     ++stats_.points;
+    if (walk_) {
+        g.visited = true;
+        g.last_x = x;
+        g.last_y = y;
+        g.last_q = q_.value();
+        g.last_un = {un_.x.value(), un_.y.value(), un_.z.value()};
+        g.last_up = {up_.x.value(), up_.y.value(), up_.z.value()};
+    }
 
     auto rb = [&rebind](const cvec3& v) { return cvec3{rebind(v.x), rebind(v.y), rebind(v.z)}; };
     pixel_geometry out;

@@ -14,6 +14,12 @@
 //  - step, to a point d pixels right of the point before on the same triangle: each component + d a;
 //    d a is a shift of the x gradient when d is a power of two, a shift-and-add network otherwise:
 //    popcount(d) adds per component.
+//  - edge walking (optional, `walk_edges`): a scan-line renderer's active-edge walker carries each
+//    triangle's values from line to line, so only a triangle's first run starts from a x + b y + c;
+//    every later run start is reached from the triangle's last point (x', y') by additions:
+//    (y - y') b, one add a line down per component, and (x - x') a, popcount(|x - x'|) adds. No
+//    long operation; the adds are a lower estimate of a walker that steps every active triangle on
+//    every line.
 //  - per point: perspective-correct P = U_P / Q (one division, 3 mul; orthographic Q = 1: none);
 //    N = normalize(U_N) (U_N / Q points the same way, so no division for N); V, L, H as geometry_at.
 //
@@ -32,12 +38,14 @@ namespace shading::scene {
 // Where the counts of a stepping geometry unit went (all of them are in the op_counts given to at()).
 struct stepping_stats {
     std::size_t triangle_setups = 0, run_starts = 0, steps = 0, points = 0;
+    std::size_t walked_starts = 0;  // run starts reached by edge walking (counted in run_starts too)
 };
 
 class span_stepper {
 public:
     // The rasterised frame must outlive the stepper.
-    explicit span_stepper(const rasterised& r);
+    // walk_edges: run starts on a triangle already visited are walked to, not evaluated (above).
+    explicit span_stepper(const rasterised& r, bool walk_edges = false);
     // The geometry at covered pixel (x, y), charged to `ops` (nullptr: uncounted). Points of one line
     // in increasing x step; anything else starts a run.
     pixel_geometry at(unsigned x, unsigned y, op_counts* ops);
@@ -52,11 +60,16 @@ private:
         bool ready = false;
         plane3 q;
         std::array<plane3, 3> n, p;
+        // The triangle's last point and its stepped values (edge walking).
+        bool visited = false;
+        unsigned last_x = 0, last_y = 0;
+        double last_q = 0.0;
+        std::array<double, 3> last_un{}, last_up{};
     };
     void setup(int32_t t, op_counts* ops);
 
     const rasterised& r_;
-    bool need_p_ = false, perspective_ = false;
+    bool need_p_ = false, perspective_ = false, walk_ = false;
     std::vector<gradients> grad_;
     // The current run.
     int32_t tri_ = -1;

@@ -145,8 +145,9 @@ shaded_image render_specular(const rasterised& r, const specular_fn& unit, rende
     });
 }
 
-shaded_image render_phong_scanline(const rasterised& r, render_stats* stats, stepping_stats* steps) {
-    span_stepper st(r);
+shaded_image render_phong_scanline(const rasterised& r, render_stats* stats, stepping_stats* steps,
+                                   bool walk_edges) {
+    span_stepper st(r, walk_edges);
     shaded_image img = render(
         r, stats, [&st](unsigned x, unsigned y, op_counts* o) { return st.at(x, y, o); },
         [&r](const pixel_geometry& g, const material& m) { return shade_phong(g, m, r.src->lights); });

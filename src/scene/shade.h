@@ -69,8 +69,9 @@ struct render_stats {
 shaded_image render_phong(const rasterised& r, render_stats* stats = nullptr);
 // The scan-line Phong reference: render_phong's shading (exact cos^n) on geometry stepped along each
 // span (scanline.h: span_stepper); the same image to rounding. `steps`: where its geometry went.
+// walk_edges: run starts walked from the triangle's last point (scanline.h), not evaluated.
 shaded_image render_phong_scanline(const rasterised& r, render_stats* stats = nullptr,
-                                   stepping_stats* steps = nullptr);
+                                   stepping_stats* steps = nullptr, bool walk_edges = false);
 shaded_image render_device(const rasterised& r, const device_config& dev, render_stats* stats = nullptr);
 shaded_image render_specular(const rasterised& r, const specular_fn& unit, render_stats* stats = nullptr);
 
