@@ -253,7 +253,7 @@ public:
 
     // The chosen pieces as jobs, their geometry counted as make_plan counts it.
     void emit(const std::vector<std::vector<piece>>& pieces) {
-        scene::span_stepper stepper(r_);
+        scene::span_stepper stepper(r_, c_.walk_edges);
         const std::array<unsigned, 4> cubic = cubic_points(c_.set);
         std::size_t k = 0;
         for (unsigned y = 0; y < r_.height; ++y) {

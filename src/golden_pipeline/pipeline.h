@@ -100,6 +100,7 @@ struct plan_config {
     bool surface_breaks = true;            // also end segments where neighbours' triangles share no vertex (a fold)
     evaluator eval = evaluator::horner;    // fd: fixed length keeps one m (tails exact); adaptive as Horner
     geometry_unit unit = geometry_unit::stepped;  // which geometry count hardware_ops charges
+    bool walk_edges = false;  // the stepped unit (and the scan-line Phong) walk edges between lines (scanline.h)
     // The sample stage's carry (modules/pipeline/sample_ctrl.h): a job whose first sample's codes are
     // the last formed sample's takes that colour from the last-sample registers, not from the device.
     bool carry_samples = false;

@@ -99,7 +99,7 @@ class planner {
 public:
     planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
             const plan_config& c, plan& p)
-        : r_(r), k_(k), dev_(dev), c_(c), p_(p), stepper_(r), cubic_(cubic_points(c.set)),
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), stepper_(r, c.walk_edges), cubic_(cubic_points(c.set)),
           w_deg_(lagrange(quad_points, degree_check(c.set))),
           w_len_cubic_(lagrange(cubic_, length_check(c.set))),
           w_len_quad_(lagrange(quad_points, length_check(c.set))),

@@ -69,6 +69,9 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
                    "the geometry side's unit: stepped (along the line, as a scan-line renderer; default) or scratch "
                    "(every point from scratch); only the operation counts differ")
         ->check(CLI::IsMember({"stepped", "scratch"}));
+    app.add_flag("--walk-edges,!--no-walk-edges", o.pc.walk_edges,
+                 "the stepped geometry side and the scan-line Phong walk each triangle's values from line to line "
+                 "(only a triangle's first run start is evaluated; default off)");
     app.add_option("--depth-step", o.pc.depth_step, "depth jump (world units) that ends a segment of a raster line")
         ->check(CLI::PositiveNumber)->check(not_nan());
     app.add_option("--out", o.out, "output folder");

@@ -145,6 +145,7 @@ json report_json(const options& o, const render_data& d) {
                      {"div3", o.div3},
                      {"depth_step", cfg.depth_step},
                      {"geometry_unit", geometry_unit_name(cfg.unit)},
+                     {"walk_edges", cfg.walk_edges},
                      {"runs_on_geometry_side",
                       policy_runs_on_geometry_side(cfg.length) && policy_runs_on_geometry_side(cfg.degree)},
                      {"sim", o.sim}};
@@ -153,7 +154,7 @@ json report_json(const options& o, const render_data& d) {
                    {"pixels", p.pixels},
                    {"geometry_points", p.geometry_points},
                    {"stepping", {{"triangle_setups", p.stepping.triangle_setups}, {"run_starts", p.stepping.run_starts},
-                                 {"steps", p.stepping.steps}}},
+                                 {"walked_starts", p.stepping.walked_starts}, {"steps", p.stepping.steps}}},
                    {"check_samples", p.check_samples},
                    {"samples", hc.samples},
                    {"samples_carried", hc.carried},
@@ -193,7 +194,7 @@ json report_json(const options& o, const render_data& d) {
         {"phong_scanline", {{"geometry", ops_json(d.sl.geometry, phong_px)}, {"shading", ops_json(d.sl.shading, phong_px)},
                             {"total", ops_json(d.sl.total(), phong_px)},
                             {"triangle_setups", d.sl_steps.triangle_setups}, {"run_starts", d.sl_steps.run_starts},
-                            {"steps", d.sl_steps.steps}}},
+                            {"walked_starts", d.sl_steps.walked_starts}, {"steps", d.sl_steps.steps}}},
         {"device_reference", {{"total", ops_json(sd.total(), double(sd.pixels))}}},
         {"hardware", {{"geometry_unit", geometry_unit_name(cfg.unit)}, {"geometry", ops_json(hc.geometry, hw_px)},
                       {"sample_stage", ops_json(hc.sample_stage, hw_px)},
@@ -298,7 +299,11 @@ std::string report_md(const options& o, const render_data& d) {
                 d.hc_other.total(), hw_px);
     }
     md << "\nThe hardware's geometry side: " << geometry_unit_name(cfg.unit)
-       << " (scan-line stepping: per-triangle set-up, run starts, adds per step; or from scratch per point). "
+       << " (scan-line stepping: per-triangle set-up, run starts, adds per step; or from scratch per point)"
+       << (cfg.walk_edges ? "; edges walked: a triangle's later run starts, in the hardware and the scan-line Phong, "
+                            "are reached by adds from its last point"
+                          : "")
+       << ". "
           "Long operations, Phong from scratch / the hardware path's: **"
        << fmt("%.2f", ratio) << "x**; scan-line Phong / the hardware path's: **" << fmt("%.2f", F.ratio_scan)
        << "x**. The scan-line Phong image against the per-pixel one: NMSE "

@@ -203,7 +203,7 @@ int render(const options& o) {
     t = std::chrono::steady_clock::now();
     // The scan-line Phong: the same image to rounding (its difference from the per-pixel one is in
     // the report), counted with stepped geometry.
-    const scene::shaded_image scan = scene::render_phong_scanline(d.r, &d.sl, &d.sl_steps);
+    const scene::shaded_image scan = scene::render_phong_scanline(d.r, &d.sl, &d.sl_steps, d.cfg.walk_edges);
     d.errors["scanline_phong"]["image"] = stats_json(compare(scan, d.phong));
     d.errors["scanline_phong"]["what"] = "scan-line Phong vs per-pixel Phong (the two baselines' images)";
     wall["phong_scanline"] = seconds_since(t);

@@ -48,31 +48,36 @@ void charge_dots(const scene::pixel_geometry& g, scene::op_counts* ops) {
 // over exactly those pixels line by line, left to right (a std::set of (y, x) is in that order), plus
 // the dot products; the from-scratch count is geometry_at at the same pixels. The two units give
 // the same plan (same jobs, same codes), only the counts differ, and hardware_ops charges the one
-// plan_config.unit names.
+// plan_config.unit names. With edges walked (plan_config.walk_edges) the stepper walks them too.
 TEST(PipelineGeometryUnit, SteppedCountIsAStepperOverTheSamplePoints) {
     const fixture f("sphere", 64);
-    for (unsigned m : {2u, 3u, 5u}) {
-        plan_config c;
-        c.m = m;
-        const plan p = make_plan(f.r, f.k, squared, c);
-        std::set<std::pair<unsigned, unsigned>> px;
-        for (const auto& j : p.jobs)
-            for (unsigned e : job_points(j, c.set)) px.insert({j.y, j.x0 + e * (1u << j.m) / 8});
-        ASSERT_EQ(px.size(), p.geometry_points);
-        scene::span_stepper st(f.r);
-        scene::op_counts stepped, scratch;
-        for (const auto& [y, x] : px) {
-            charge_dots(st.at(x, y, &stepped), &stepped);
-            charge_dots(scene::geometry_at(f.r, x, y, &scratch), &scratch);
+    for (bool walk : {false, true}) {
+        for (unsigned m : {2u, 3u, 5u}) {
+            plan_config c;
+            c.m = m;
+            c.walk_edges = walk;
+            const plan p = make_plan(f.r, f.k, squared, c);
+            std::set<std::pair<unsigned, unsigned>> px;
+            for (const auto& j : p.jobs)
+                for (unsigned e : job_points(j, c.set)) px.insert({j.y, j.x0 + e * (1u << j.m) / 8});
+            ASSERT_EQ(px.size(), p.geometry_points);
+            scene::span_stepper st(f.r, walk);
+            scene::op_counts stepped, scratch;
+            for (const auto& [y, x] : px) {
+                charge_dots(st.at(x, y, &stepped), &stepped);
+                charge_dots(scene::geometry_at(f.r, x, y, &scratch), &scratch);
+            }
+            EXPECT_EQ(p.geometry_stepped, stepped) << m;
+            EXPECT_EQ(p.geometry, scratch) << m;
+            EXPECT_EQ(p.stepping.points, px.size());
+            EXPECT_EQ(p.stepping.walked_starts, st.stats().walked_starts);
+            if (walk) EXPECT_GT(p.stepping.walked_starts, 0u);
+            stepped += p.decision;  // the fold test's compares
+            scratch += p.decision;
+            EXPECT_EQ(hardware_ops(p, c).geometry, stepped);
+            c.unit = geometry_unit::scratch;
+            EXPECT_EQ(hardware_ops(p, c).geometry, scratch);
         }
-        EXPECT_EQ(p.geometry_stepped, stepped) << m;
-        EXPECT_EQ(p.geometry, scratch) << m;
-        EXPECT_EQ(p.stepping.points, px.size());
-        stepped += p.decision;  // the fold test's compares
-        scratch += p.decision;
-        EXPECT_EQ(hardware_ops(p, c).geometry, stepped);
-        c.unit = geometry_unit::scratch;
-        EXPECT_EQ(hardware_ops(p, c).geometry, scratch);
     }
 }
 
@@ -93,6 +98,45 @@ TEST(PipelineGeometryUnit, SteppedCheaperOnTheHeadSamePlan) {
     EXPECT_EQ(a.geometry, b.geometry);
     EXPECT_LT(a.geometry_stepped.long_ops(), a.geometry.long_ops());
     EXPECT_GT(a.stepping.steps, 0u);
+}
+
+// Walking the edges changes what the geometry side pays, never the plan: for every length policy
+// (the optimum too) the same jobs with the same codes, the same points, fewer long operations; for
+// the plans without check points (fixed, the optimum) the walked count is one walking
+// span_stepper over the plan's sample points, plus the dot products and the fold test's compares.
+TEST(PipelineGeometryUnit, WalkingEdgesChangesOnlyTheCounts) {
+    const fixture f("head", 256);
+    for (length_policy lp : {length_policy::fixed, length_policy::adaptive, length_policy::geometry,
+                             length_policy::optimal}) {
+        plan_config c;
+        c.length = lp;
+        c.eval = evaluator::fd;
+        c.degree = lp == length_policy::fixed ? degree_policy::quadratic : degree_policy::cubic;
+        const plan a = make_plan(f.r, f.k, squared, c);
+        c.walk_edges = true;
+        const plan b = make_plan(f.r, f.k, squared, c);
+        const char* name = length_policy_name(lp);
+        ASSERT_EQ(a.jobs.size(), b.jobs.size()) << name;
+        for (std::size_t i = 0; i < a.jobs.size(); ++i) {
+            ASSERT_EQ(a.jobs[i].x0, b.jobs[i].x0) << name << i;
+            ASSERT_EQ(a.jobs[i].s, b.jobs[i].s) << name << i;
+        }
+        EXPECT_EQ(a.geometry_points, b.geometry_points) << name;
+        EXPECT_EQ(a.geometry, b.geometry) << name;  // from scratch: no stepper
+        EXPECT_EQ(a.stepping.walked_starts, 0u) << name;
+        EXPECT_GT(b.stepping.walked_starts, 0u) << name;
+        EXPECT_LT(b.geometry_stepped.long_ops(), a.geometry_stepped.long_ops()) << name;
+        // The checked policies' check points have geometry too.
+        if (lp == length_policy::adaptive || lp == length_policy::geometry) continue;
+        std::set<std::pair<unsigned, unsigned>> px;
+        for (const auto& j : b.jobs)
+            for (unsigned e : job_points(j, c.set)) px.insert({j.y, j.x0 + e * (1u << j.m) / 8});
+        ASSERT_EQ(px.size(), b.geometry_points) << name;
+        scene::span_stepper st(f.r, true);
+        scene::op_counts walked;
+        for (const auto& [y, x] : px) charge_dots(st.at(x, y, &walked), &walked);
+        EXPECT_EQ(b.geometry_stepped, walked) << name;
+    }
 }
 
 // ---- The geometry-only policies ----
