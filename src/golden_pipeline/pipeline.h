@@ -91,6 +91,13 @@ struct plan_config {
     // quadratic intervals of 2^(m-1) through its four samples and its check point (t = 0, 1/4, 1/2 and
     // 1/2, 3/4, 1): the point the decision paid for becomes a sample instead of being thrown away.
     bool split_at_check = false;
+    // Adaptive and geometry length (ours): an interval may be at most `above_slack` levels longer than
+    // the shortest interval the line above has over the same pixels (a line buffer of each pixel's
+    // level, exact pixels 0; pixels the line above does not cover set no limit; 2^m_min is always
+    // allowed, as the shortest interval must be). A feature the line
+    // above's checks found is not jumped over by a long interval whose check misses it between its
+    // samples. Negative: no limit (the default).
+    int above_slack = -1;
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
     // Geometry length policy: 0 < lobe_tol; the spread of N.H an interval may span in the highlight,

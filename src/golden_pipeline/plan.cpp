@@ -4,8 +4,10 @@
 // distinct pixel that any sample or decision needs, every operation counted.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "golden_pipeline/line_geometry.h"
 #include "golden_pipeline/pipeline.h"
@@ -56,6 +58,9 @@ void validate(const plan_config& c) {
     if (!(c.degree_tol >= 0.0)) fail("the degree tolerance must be >= 0 (8-bit levels)");
     if (!(c.depth_step > 0.0)) fail("the depth step must be > 0 (world units)");
     if (!(c.lobe_tol > 0.0)) fail("the lobe tolerance must be > 0");
+    if (c.above_slack > int(interp::m_max))
+        fail("the slack over the line above, " + std::to_string(c.above_slack) + ", exceeds m_max of the units (" +
+             std::to_string(interp::m_max) + "); negative for no limit");
     if (!(c.optimal_nmse >= 0.0) || !std::isfinite(c.optimal_nmse)) fail("the optimum's NMSE must be finite and >= 0");
     // Any evaluator takes either length policy: fd_eval_var sets the forward differences up per
     // interval for every m in m_min..m_max, as the Horner unit takes any t.
@@ -113,6 +118,12 @@ public:
         const std::size_t first_job = p_.jobs.size();
         miss_pos_ = ~0u;  // the quadratic's miss is per line
         for (const auto& seg : line_segments(r_, y, c_, &p_.decision)) segment(lg, y, seg[0], seg[1]);
+        if (c_.above_slack >= 0) {
+            // This line's levels become the line above of the next (written as the jobs go out).
+            above_.assign(r_.width, no_level);
+            for (std::size_t j = first_job; j < p_.jobs.size(); ++j)
+                for (unsigned i = 0; i < p_.jobs[j].len; ++i) above_[p_.jobs[j].x0 + i] = uint8_t(p_.jobs[j].m);
+        }
         // Check samples: colours evaluated where no job of this line has a sample point.
         std::vector<uint8_t> sampled(r_.width, 0);
         for (std::size_t j = first_job; j < p_.jobs.size(); ++j) {
@@ -246,12 +257,26 @@ private:
         };
         if (c_.length == length_policy::fixed) return make(top);
         for (unsigned m = top;; --m) {
+            if (m > lowest && !within_above(pos, m)) continue;
             interval_job job = make(m);
             if (m == lowest && !c_.exact_fallback) return job;
             if (c_.length == length_policy::geometry ? geometry_passes(lg, job) : passes(job)) return job;
             if (m == lowest) return std::nullopt;
         }
     }
+
+    // The line-above limit: 2^m pixels from pos, each at most above_slack levels above the line
+    // above's level there (a compare a pixel against the line buffer).
+    bool within_above(unsigned pos, unsigned m) {
+        if (c_.above_slack < 0 || above_.empty()) return true;
+        for (unsigned x = pos; x < pos + (1u << m); ++x) {
+            ++p_.decision.cmp;
+            if (above_[x] != no_level && unsigned(above_[x]) + unsigned(c_.above_slack) < m) return false;
+        }
+        return true;
+    }
+    static constexpr uint8_t no_level = 0xFF;
+    std::vector<uint8_t> above_;  // the line above's level at each pixel (no_level: no interval there)
 
     bool degree(line_geometry& lg, unsigned pos, unsigned n) {
         switch (c_.degree) {

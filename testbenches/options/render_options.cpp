@@ -48,6 +48,10 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
     app.add_flag("--split-at-check,!--no-split-at-check", o.pc.split_at_check,
                  "adaptive and geometry length: send each accepted cubic above 2^m_min as two quadratics "
                  "through its samples and its check point (default off)");
+    app.add_option("--above-slack", o.pc.above_slack,
+                   "adaptive and geometry length: an interval at most K levels longer than the shortest the line "
+                   "above has over its pixels (negative: no limit; default -1)")
+        ->check(CLI::Range(-1, static_cast<int>(interp::m_max)));
     app.add_flag("--carry-samples,!--no-carry-samples", o.pc.carry_samples,
                  "the sample stage takes a job's first colour from its last-sample registers where the codes "
                  "are the last sample's (default off)");

@@ -194,6 +194,7 @@ int run_sweep(const options& o) {
                                       num(sp.degree_tol), "--eval", sp.eval, "--set", o.set, "--div3", o.div3,
                                       "--depth-step", num(o.pc.depth_step), "--unit", o.unit,
                                       o.pc.walk_edges ? "--walk-edges" : "--no-walk-edges",
+                                      "--above-slack", std::to_string(o.pc.above_slack),
                                       o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
                                       sp.split || o.pc.split_at_check ? "--split-at-check" : "--no-split-at-check",
                                       sp.carry || o.pc.carry_samples ? "--carry-samples" : "--no-carry-samples",

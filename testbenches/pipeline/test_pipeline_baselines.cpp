@@ -71,7 +71,9 @@ TEST(PipelineGeometryUnit, SteppedCountIsAStepperOverTheSamplePoints) {
             EXPECT_EQ(p.geometry, scratch) << m;
             EXPECT_EQ(p.stepping.points, px.size());
             EXPECT_EQ(p.stepping.walked_starts, st.stats().walked_starts);
-            if (walk) EXPECT_GT(p.stepping.walked_starts, 0u);
+            if (walk) {
+                EXPECT_GT(p.stepping.walked_starts, 0u);
+            }
             stepped += p.decision;  // the fold test's compares
             scratch += p.decision;
             EXPECT_EQ(hardware_ops(p, c).geometry, stepped);

@@ -59,6 +59,9 @@ TEST(PipelinePlan, ValidateRejectsBadConfigs) {
     c.depth_step = 0.0;
     expect_error(c, "depth step");
     c = plan_config{};
+    c.above_slack = int(interp::m_max) + 1;
+    expect_error(c, "slack over the line above");
+    c = plan_config{};
     c.eval = evaluator::fd;
     // fd with adaptive length is fine (fd_eval_var: every m in m_min..m_max), over the units' range;
     // outside it, it is refused as for Horner.
@@ -310,6 +313,63 @@ TEST(PipelinePlan, AdaptiveLengthAcceptsWithinTolerance) {
     EXPECT_GT(by_m[2] + by_m[3], 0u);
     EXPECT_GT(by_m[4] + by_m[5] + by_m[6], 0u) << "a mix of lengths at tolerance 1 level";
     EXPECT_GT(grew, 0u) << "intervals limited by the growth of one level";
+}
+
+// The line-above limit (above_slack): each interval above 2^m_min is at most `slack` levels longer
+// than the shortest interval the line above has over its pixels (recomputed here from the plan's own jobs of
+// that line), and within that limit and the growth of one level it is still the longest the checks
+// accept. Slack 1 on the sphere at tolerance 1 limits some intervals; a slack of m_max none.
+TEST(PipelinePlan, AboveSlackLimitsByTheLineAbove) {
+    const auto& f = sphere();
+    plan_config c = adaptive_length(2, 6, 1.0);
+    c.above_slack = 1;
+    const plan p = make_plan(f.r, f.k, patent, c);
+    expect_valid_plan(f.r, p, c);
+    std::map<unsigned, std::vector<int>> level;  // line -> level at each pixel (-1: no interval)
+    for (const auto& j : p.jobs) {
+        auto& l = level[j.y];
+        if (l.empty()) l.assign(f.r.width, -1);
+        for (unsigned i = 0; i < j.len; ++i) l[j.x0 + i] = int(j.m);
+    }
+    auto limit = [&](unsigned y, unsigned x0, unsigned m) {
+        if (y == 0 || !level.count(y - 1)) return true;
+        for (unsigned x = x0; x < x0 + (1u << m); ++x) {
+            const int a = level[y - 1][x];
+            if (a >= 0 && a + c.above_slack < int(m)) return false;
+        }
+        return true;
+    };
+    std::size_t limited = 0;
+    unsigned line = ~0u, seg_end = 0, allowed = c.m_max;
+    for (const auto& j : p.jobs) {
+        if (j.m == 0) continue;
+        const unsigned end = segment_end(cuts(f.r, j.y, c), j.x0);
+        if (j.y != line || end != seg_end) allowed = c.m_max;
+        line = j.y;
+        seg_end = end;
+        if (j.m > c.m_min) {
+            EXPECT_TRUE(limit(j.y, j.x0, j.m)) << "line " << j.y << ", x " << j.x0 << ", m " << j.m;
+        }
+        for (unsigned m = j.m + 1; m <= allowed && (1u << m) <= end - j.x0; ++m) {
+            if (!limit(j.y, j.x0, m)) {
+                ++limited;
+                break;  // longer ones reach the same pixels above
+            }
+            EXPECT_FALSE(estimates(f, j.y, j.x0, 1u << m).accepted(c.length_tol)) << "a longer interval passes, line " << j.y;
+        }
+        allowed = std::min(j.m + 1, c.m_max);
+    }
+    EXPECT_GT(limited, 0u) << "intervals limited by the line above";
+    EXPECT_GT(p.jobs.size(), make_plan(f.r, f.k, patent, adaptive_length(2, 6, 1.0)).jobs.size());
+    // A slack of m_max limits nothing: the plan without the limit.
+    c.above_slack = int(c.m_max);
+    const plan q = make_plan(f.r, f.k, patent, c);
+    const plan free = make_plan(f.r, f.k, patent, adaptive_length(2, 6, 1.0));
+    ASSERT_EQ(q.jobs.size(), free.jobs.size());
+    for (std::size_t i = 0; i < q.jobs.size(); ++i) {
+        EXPECT_EQ(q.jobs[i].x0, free.jobs[i].x0);
+        EXPECT_EQ(q.jobs[i].m, free.jobs[i].m);
+    }
 }
 
 // With the exact fallback, where even an interval of 2^m_min misses its checks, its pixels are exact:
