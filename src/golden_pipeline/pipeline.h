@@ -94,9 +94,9 @@ struct plan_config {
     // Adaptive and geometry length (ours): an interval may be at most `above_slack` levels longer than
     // the shortest interval the line above has over the same pixels (a line buffer of each pixel's
     // level, exact pixels 0; pixels the line above does not cover set no limit; 2^m_min is always
-    // allowed, as the shortest interval must be). A feature the line
-    // above's checks found is not jumped over by a long interval whose check misses it between its
-    // samples. Negative: no limit (the default).
+    // allowed, as the shortest interval must be). A feature the line above's checks found is not
+    // jumped over by a long interval whose check misses it between its samples. Negative: no limit
+    // (the default).
     int above_slack = -1;
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate

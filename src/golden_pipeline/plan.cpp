@@ -119,7 +119,7 @@ public:
         miss_pos_ = ~0u;  // the quadratic's miss is per line
         for (const auto& seg : line_segments(r_, y, c_, &p_.decision)) segment(lg, y, seg[0], seg[1]);
         if (c_.above_slack >= 0) {
-            // This line's levels become the line above of the next (written as the jobs go out).
+            // This line's levels (each pixel's job's m, exact pixels 0) are the next line's line above.
             above_.assign(r_.width, no_level);
             for (std::size_t j = first_job; j < p_.jobs.size(); ++j)
                 for (unsigned i = 0; i < p_.jobs[j].len; ++i) above_[p_.jobs[j].x0 + i] = uint8_t(p_.jobs[j].m);
