@@ -233,6 +233,8 @@ std::optional<int> render_pipeline(int argc, char** argv) {
     FUZZ_CHECK(in(modes, o.mode), "--mode '%s'", o.mode.c_str());
     FUZZ_CHECK(in({"stepped", "scratch"}, o.unit), "--unit '%s'", o.unit.c_str());
     FUZZ_CHECK(within(o.pc.above_slack, -1, int(shading::interp::m_max)), "--above-slack %d", o.pc.above_slack);
+    FUZZ_CHECK(within(o.pc.optimal_from_above, -1, int(shading::pipeline::optimal_window_max)),
+               "--optimal-from-above %d", o.pc.optimal_from_above);
     FUZZ_CHECK(in(abstractions, o.abstraction), "--abstraction '%s'", o.abstraction.c_str());
     FUZZ_CHECK(in({"small", "full", "exponents", "claims"}, o.grid), "--grid '%s'", o.grid.c_str());
     FUZZ_CHECK(positive(o.pc.lobe_tol) && positive(o.pc.depth_step), "--lobe-tol %g --depth-step %g", o.pc.lobe_tol,

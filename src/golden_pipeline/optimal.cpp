@@ -10,6 +10,11 @@
 // its t = 1 sample. The squared error of each candidate piece is computed once (interval_pixels, the
 // hardware's arithmetic, against the reference image); a backward dynamic programme over the segment
 // then minimises points + lambda x error exactly, for each lambda of a bisection.
+//
+// Planned from the line above (c.optimal_from_above >= 0), each candidate is priced with the line
+// above's errors instead of its own: what a planner could reach that knew every colour of the line
+// above (more than any hardware keeps) but nothing of its own line. The plan is chosen on those prices
+// and its true error counted; the certificate stays the optimum's.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -103,13 +108,67 @@ public:
         }
     }
 
-    // Points and squared error of the plan minimising points + lambda x error over every segment; with
-    // `out`, its pieces per segment.
-    std::pair<double, double> solve(double lambda, std::vector<std::vector<piece>>* out) {
+    // The prices from the line above: each candidate (exact pixel, or interval of one length and
+    // degree) at pixel x of line y costs the largest error of the same candidate on line y - 1 at
+    // x - window .. x + window where it fits a segment there; where none does (a segment's first line,
+    // a coverage edge), its own error (counted in above_fallback).
+    void price_from_above(unsigned window) {
+        priced_ = segs_;
+        std::size_t fallback = 0, candidates = 0;
+        std::vector<int> above(r_.width, -1), here(r_.width, -1);  // pixel -> its segment on the line
+        std::size_t k = 0;
+        for (unsigned y = 0; y < r_.height; ++y) {
+            std::swap(above, here);
+            std::fill(here.begin(), here.end(), -1);
+            const std::size_t first = k;
+            for (; k < segs_.size() && segs_[k].y == y; ++k)
+                for (unsigned i = 0; i < segs_[k].len; ++i) here[segs_[k].xa + i] = int(k);
+            for (std::size_t j = first; j < k; ++j) {
+                segment_costs& pr = priced_[j];
+                // The largest of get(q, i') over the line above's segments q covering x + d, |d| <= window.
+                auto from_above = [&](unsigned x, auto get) {
+                    double e = -1.0;
+                    for (int d = -int(window); d <= int(window); ++d) {
+                        const int xd = int(x) + d;
+                        if (xd < 0 || xd >= int(r_.width) || above[std::size_t(xd)] < 0) continue;
+                        const segment_costs& q = segs_[std::size_t(above[std::size_t(xd)])];
+                        e = std::max(e, get(q, unsigned(xd) - q.xa));
+                    }
+                    return e;
+                };
+                for (unsigned i = 0; i < pr.len; ++i) {
+                    const unsigned x = pr.xa + i;
+                    auto price = [&](double& own, auto get) {
+                        ++candidates;
+                        const double e = from_above(x, get);
+                        if (e >= 0.0) own = e;
+                        else ++fallback;
+                    };
+                    price(pr.exact[i], [](const segment_costs& q, unsigned iq) { return q.exact[iq]; });
+                    for (unsigned m = c_.m_min; m <= c_.m_max; ++m) {
+                        const unsigned n = 1u << m;
+                        if (i + n >= pr.len) break;
+                        for (unsigned cub = 0; cub < 2; ++cub)
+                            price(pr.intervals[index(i, m, cub)], [&](const segment_costs& q, unsigned iq) {
+                                return iq + n < q.len ? q.intervals[index(iq, m, cub)] : -1.0;
+                            });
+                    }
+                }
+            }
+        }
+        p_.optimum.above_fallback = candidates > 0 ? double(fallback) / double(candidates) : 0.0;
+    }
+    const std::vector<segment_costs>& prices() const { return c_.optimal_from_above >= 0 ? priced_ : segs_; }
+
+    // Points and squared error of the plan minimising points + lambda x error over every segment, the
+    // errors priced by `by` (segs_ for the optimum); with `out`, its pieces per segment.
+    std::pair<double, double> solve(double lambda, std::vector<std::vector<piece>>* out,
+                                    const std::vector<segment_costs>& by) {
         double points = 0.0, error = 0.0;
         if (out) out->assign(segs_.size(), {});
         for (std::size_t k = 0; k < segs_.size(); ++k) {
-            const segment_costs& s = segs_[k];
+            const segment_costs& s = by[k];
+            const segment_costs& truth = segs_[k];
             // g[have][i]: the least cost of pixels i.. of the segment, `have` when pixel i's geometry
             // is already computed (an interval's t = 1 sample).
             std::vector<double> g0(s.len + 1, 0.0), g1(s.len + 1, 0.0);
@@ -139,12 +198,12 @@ public:
                 const piece pc = (have ? best1 : best0)[i];
                 points += have ? 0.0 : 1.0;
                 if (pc.m == 0) {
-                    error += s.exact[i];
+                    error += truth.exact[i];
                     have = false;
                     i += 1;
                 } else {
                     points += pc.cubic ? 3.0 : 2.0;
-                    error += s.intervals[index(i, pc.m, pc.cubic)];
+                    error += truth.intervals[index(i, pc.m, pc.cubic)];
                     have = true;
                     i += 1u << pc.m;
                 }
@@ -157,12 +216,13 @@ public:
     // The length policies' own structure with perfect estimates: per segment left to right, the
     // longest m (growing by at most one level, as make_plan's adaptive length) whose quadratic, else
     // cubic, has a mean squared error per channel of at most tau2; where even 2^m_min misses, 2^m_min
-    // exact pixels. Points and squared error as solve().
+    // exact pixels. Points and squared error as solve(), the acceptance priced by prices().
     std::pair<double, double> greedy(double tau2, std::vector<std::vector<piece>>* out) {
         double points = 0.0, error = 0.0;
         if (out) out->assign(segs_.size(), {});
         for (std::size_t k = 0; k < segs_.size(); ++k) {
             const segment_costs& s = segs_[k];
+            const segment_costs& by = prices()[k];
             bool have = false;
             unsigned i = 0, grow = c_.m_max;
             auto take = [&](const piece& pc) {
@@ -184,7 +244,7 @@ public:
                 bool done = false;
                 for (unsigned m = top + 1; m-- > c_.m_min && !done;)
                     for (unsigned cub = 0; cub < 2 && !done; ++cub)
-                        if (s.intervals[index(i, m, cub)] <= tau2 * 3.0 * double(1u << m)) {
+                        if (by.intervals[index(i, m, cub)] <= tau2 * 3.0 * double(1u << m)) {
                             take({i, m, cub != 0});
                             i += 1u << m;
                             grow = std::min(m + 1, c_.m_max);
@@ -215,15 +275,19 @@ public:
         const double error = greedy(lo * lo, &pieces).second;
         p_.optimum.greedy_tolerance = lo;
         p_.optimum.greedy_nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
+        if (c_.optimal_from_above >= 0) p_.optimum.above_nmse = p_.optimum.greedy_nmse;
         return pieces;
     }
 
-    // Bisects lambda to the smallest that meets the NMSE; returns the chosen pieces.
-    std::vector<std::vector<piece>> search() {
+    // Bisects lambda to the smallest that meets the NMSE; returns the chosen pieces. With `certify`
+    // (the optimum, priced by its own errors) its certificate; else, priced from the line above, the
+    // plan's NMSE only (there the dual bound does not hold).
+    std::vector<std::vector<piece>> search(bool certify) {
+        const std::vector<segment_costs>& by = certify ? segs_ : priced_;
         const double allowed = c_.optimal_nmse * ref_energy_;
         double bound = 0.0;
         auto trial = [&](double lambda) {
-            const auto [points, error] = solve(lambda, nullptr);
+            const auto [points, error] = solve(lambda, nullptr, by);
             bound = std::max(bound, points + lambda * (error - allowed));  // Lagrangian dual: a lower bound
             return error <= allowed;
         };
@@ -243,7 +307,12 @@ public:
             }
         }
         std::vector<std::vector<piece>> pieces;
-        const auto [points, error] = solve(hi, &pieces);
+        const auto [points, error] = solve(hi, &pieces, by);
+        if (!certify) {
+            p_.optimum.above_nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
+            p_.optimum.above_lambda = hi;
+            return pieces;
+        }
         p_.optimum.points_bound = feasible ? bound : 0.0;  // <= points: at lambda = hi the error is within
         p_.optimum.nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
         p_.optimum.lambda = hi;
@@ -313,6 +382,7 @@ private:
     unsigned lengths_;
     double ref_energy_ = 0.0;
     std::vector<segment_costs> segs_;
+    std::vector<segment_costs> priced_;  // with c.optimal_from_above >= 0: segs_ priced from the line above
 };
 
 }  // namespace
@@ -325,7 +395,11 @@ plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const sc
     p.height = r.height;
     optimum_search s(r, k, dev, c, p);
     s.prepare();
-    auto pieces = s.search();
+    auto pieces = s.search(true);
+    if (c.optimal_from_above >= 0) {
+        s.price_from_above(unsigned(c.optimal_from_above));
+        if (!c.optimal_greedy) pieces = s.search(false);
+    }
     if (c.optimal_greedy) pieces = s.search_greedy();
     s.emit(pieces);
     return p;

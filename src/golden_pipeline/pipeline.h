@@ -120,7 +120,13 @@ struct plan_config {
     // optimal_plan): what a policy that knew every interval's error could reach. The certificate
     // (points_bound, nmse, lambda) stays the optimum's; the plan is the greedy's.
     bool optimal_greedy = false;
+    // Negative: off. Else the optimum (or with optimal_greedy the greedy) prices each candidate with the
+    // line above's error of the same candidate, the largest over starts within this many pixels: what a
+    // planner that knew every colour of the line above, but none of its own line, could reach (see
+    // optimal_plan). The certificate stays the optimum's.
+    int optimal_from_above = -1;
 };
+inline constexpr unsigned optimal_window_max = 16;  // the widest window over the line above (pixels)
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
 // a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
 void validate(const plan_config& c);
@@ -172,6 +178,11 @@ struct plan {
         double point_long_min = 0.0; // long ops of the cheapest geometry point (a step, no set-up or run start)
         // With c.optimal_greedy: the greedy's tolerance (RMS levels per interval) and its plan's NMSE.
         double greedy_tolerance = 0.0, greedy_nmse = 0.0;
+        // With c.optimal_from_above >= 0: the plan's NMSE (a plan priced from the line above may miss
+        // c.optimal_nmse even at the largest lambda), and the share of candidates priced by their own
+        // line because the line above had none there.
+        double above_nmse = 0.0, above_fallback = 0.0;
+        double above_lambda = 0.0;  // the lambda it was chosen at (the optimum's way; 0 for the greedy)
     };
     optimum_certificate optimum;
 };
@@ -188,6 +199,9 @@ plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene
 // segment left to right, the longest m (growing by one level at most, as adaptive length) whose
 // quadratic, else cubic, has an RMS error of at most a tolerance, bisected to the largest that meets
 // the NMSE; where 2^m_min misses, 2^m_min exact pixels. Its gap to the optimum is the structure's cost.
+// With c.optimal_from_above = W >= 0 the plan (either one) is chosen on prices from the line above: each
+// candidate's error is the largest of the same candidate's on line y - 1 starting within W pixels (its
+// own where the line above has none); lambda or the tolerance is bisected on the plan's true NMSE.
 plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                   const plan_config& c);
 

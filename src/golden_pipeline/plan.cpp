@@ -62,6 +62,9 @@ void validate(const plan_config& c) {
         fail("the slack over the line above, " + std::to_string(c.above_slack) + ", exceeds m_max of the units (" +
              std::to_string(interp::m_max) + "); negative for no limit");
     if (!(c.optimal_nmse >= 0.0) || !std::isfinite(c.optimal_nmse)) fail("the optimum's NMSE must be finite and >= 0");
+    if (c.optimal_from_above > int(optimal_window_max))
+        fail("the window over the line above, " + std::to_string(c.optimal_from_above) + ", exceeds " +
+             std::to_string(optimal_window_max) + " pixels; negative for the optimum's own prices");
     // Any evaluator takes either length policy: fd_eval_var sets the forward differences up per
     // interval for every m in m_min..m_max, as the Horner unit takes any t.
 }

@@ -36,6 +36,11 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
     app.add_flag("--optimal-greedy", o.pc.optimal_greedy,
                  "optimal length: instead the adaptive policies' greedy structure with perfect estimates (the "
                  "certificate stays the optimum's)");
+    app.add_option("--optimal-from-above", o.pc.optimal_from_above,
+                   "optimal length: choose on the line above's errors (the largest over starts within W pixels), "
+                   "not the line's own: what knowing every colour of the line above could reach (negative: off; "
+                   "default -1)")
+        ->check(CLI::Range(-1, static_cast<int>(shading::pipeline::optimal_window_max)));
     app.add_option("--lobe-tol", o.pc.lobe_tol, "geometry length: N.H spread allowed in a highlight, x the derived bound")
         ->check(CLI::PositiveNumber)->check(not_nan());
     app.add_option("--m", o.pc.m, "fixed length: intervals of 2^m pixels");

@@ -186,6 +186,11 @@ json report_json(const options& o, const render_data& d) {
         if (cfg.optimal_greedy)
             rep["plan"]["optimum"]["greedy_plan"] = {{"tolerance_rms_levels", p.optimum.greedy_tolerance},
                                                      {"nmse", p.optimum.greedy_nmse}};
+        if (cfg.optimal_from_above >= 0)
+            rep["plan"]["optimum"]["from_above"] = {{"window", cfg.optimal_from_above},
+                                                    {"nmse", p.optimum.above_nmse},
+                                                    {"met", p.optimum.above_nmse <= cfg.optimal_nmse},
+                                                    {"own_priced_share", p.optimum.above_fallback}};
     }
     rep["scene_stats"] = {{"triangles", r.setups.size()}, {"covered_pixels", r.covered_pixels()}};
     rep["errors"] = errors;
@@ -252,6 +257,14 @@ std::string report_md(const options& o, const render_data& d) {
                   "estimates: RMS tolerance "
                << fmt("%.3f", p.optimum.greedy_tolerance) << " levels per interval, NMSE "
                << fmt("%.3e", p.optimum.greedy_nmse) << ", " << p.geometry_points << " geometry points.";
+        if (cfg.optimal_from_above >= 0)
+            md << " Its choices are priced not by the line's own errors but by the line above's (the largest over "
+                  "starts within "
+               << cfg.optimal_from_above << " pixels; "
+               << fmt("%.1f", 100.0 * p.optimum.above_fallback)
+               << " % of the candidates, with none above, by their own): NMSE " << fmt("%.3e", p.optimum.above_nmse)
+               << (p.optimum.above_nmse <= cfg.optimal_nmse ? "" : ", above the NMSE allowed") << ", "
+               << p.geometry_points << " geometry points.";
         md << "\n\n";
     }
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";

@@ -206,6 +206,7 @@ int run_sweep(const options& o) {
         // The optimum's settings (read only with --length optimal, as --lobe-tol only with geometry).
         a.insert(a.end(), {"--optimal-nmse", num(o.pc.optimal_nmse), "--optimal-reference", o.optimal_reference});
         if (o.pc.optimal_greedy) a.push_back("--optimal-greedy");
+        a.insert(a.end(), {"--optimal-from-above", std::to_string(o.pc.optimal_from_above)});
         const int n = sp.n != -1 ? sp.n : o.n;
         if (n != -1) a.insert(a.end(), {"--n", std::to_string(n)});
         if (!o.kd.empty()) a.insert(a.end(), {"--kd", o.kd});

@@ -263,3 +263,107 @@ TEST(PipelineOptimal, GreedyFollowsItsRule) {
     }
     EXPECT_GT(longer_checked, 20u);
 }
+
+// Planned from the line above (--optimal-from-above 0): a valid plan whose NMSE, recomputed, is the
+// one reported, with the optimum's certificate unchanged; and at its lambda no local change beats
+// points + lambda x error when every interval is priced as the planner must price it: by the same
+// interval on the line above where it fits a segment there, else by its own error (recomputed here
+// from the rasteriser's segments and the golden model).
+TEST(PipelineOptimal, FromAboveChoosesOnTheLineAbovesErrors) {
+    const scene_fixture& f = head();
+    plan_config c = optimum_config(1e-4);
+    const plan best = make_plan(f.r, f.k, patent, c);
+    c.optimal_from_above = 0;
+    const plan p = make_plan(f.r, f.k, patent, c);
+    expect_valid_plan(f.r, p, c);
+    const reference_image ref(f, plan_config::reference::interpolation);
+    const double nmse = squared_error(f, p, c, ref) / ref.energy;
+    EXPECT_NEAR(p.optimum.above_nmse, nmse, 1e-9 * c.optimal_nmse);
+    EXPECT_LE(nmse, c.optimal_nmse);
+    EXPECT_EQ(p.optimum.points_bound, best.optimum.points_bound) << "the certificate is the optimum's";
+    EXPECT_GT(p.geometry_points, best.geometry_points) << "pricing from the line above should cost points";
+    EXPECT_GT(p.optimum.above_fallback, 0.0);
+    EXPECT_LT(p.optimum.above_fallback, 0.2);
+    const double lambda = p.optimum.above_lambda;
+    ASSERT_GT(lambda, 0.0);
+
+    const frame exact = per_pixel_frame(f.r, f.k, patent);
+    std::map<unsigned, std::set<unsigned>> line_cuts;
+    auto cuts_of = [&](unsigned y) -> const std::set<unsigned>& {
+        auto it = line_cuts.find(y);
+        return it != line_cuts.end() ? it->second : line_cuts.emplace(y, cuts(f.r, y, c)).first->second;
+    };
+    // Squared error (levels^2, three channels) of job j's interval placed on line y.
+    auto error_on = [&](const interval_job& j, unsigned y) {
+        if (j.m == 0) return 0.0;  // an exact pixel is the reference itself
+        interval_job k = j;
+        k.y = y;
+        const auto pts = job_points(k, c.set);
+        for (std::size_t s = 0; s < 4; ++s)
+            k.s[s] = sample_of(scene::geometry_at(f.r, at(k, pts[std::min(s, pts.size() - 1)]), y, nullptr));
+        const auto px = golden_interval(k, f.k, patent, c.eval, c.set, c.div);
+        double e = 0.0;
+        for (unsigned i = 0; i < k.len; ++i)
+            for (int ch = 0; ch < 3; ++ch) {
+                const double d = (double(px[i][ch]) - double(exact.px[f.r.index(k.x0 + i, y)][ch])) / 256.0;
+                e += d * d;
+            }
+        return e;
+    };
+    auto priced = [&](const interval_job& j) {
+        if (j.m > 0 && j.y > 0 && f.r.covered(j.x0, j.y - 1)) {
+            const auto& lc = cuts_of(j.y - 1);
+            if (lc.upper_bound(j.x0) != lc.end() && j.x0 + j.len <= segment_end(lc, j.x0)) return error_on(j, j.y - 1);
+        }
+        return error_on(j, j.y);
+    };
+    const double points = double(sample_pixels(p, c.set).size());
+    std::mt19937 rng(11);
+    std::size_t tried = 0, above = 0;
+    for (int attempt = 0; attempt < 400 && tried < 60; ++attempt) {
+        const std::size_t i = std::uniform_int_distribution<std::size_t>(0, p.jobs.size() - 1)(rng);
+        const interval_job& j = p.jobs[i];
+        if (j.m == 0) continue;
+        auto make = [&](unsigned x0, unsigned m, bool deg2) {
+            interval_job k = j;
+            k.x0 = x0;
+            k.m = m;
+            k.len = 1u << m;
+            k.deg2 = m > 0 && deg2;
+            return k;
+        };
+        std::vector<interval_job> repl;
+        const int kind = attempt % 4;
+        if (kind == 0) {
+            for (unsigned x = j.x0; x < j.x0 + j.len; ++x) repl.push_back(make(x, 0, false));
+        } else if (kind == 1) {
+            repl.push_back(make(j.x0, j.m, !j.deg2));
+        } else if (kind == 2) {
+            if (j.m <= c.m_min) continue;
+            repl.push_back(make(j.x0, j.m - 1, j.deg2));
+            repl.push_back(make(j.x0 + j.len / 2, j.m - 1, j.deg2));
+        } else {
+            if (i + 1 >= p.jobs.size() || j.m >= c.m_max) continue;
+            const interval_job& nx = p.jobs[i + 1];
+            if (nx.y != j.y || nx.m != j.m || nx.x0 != j.x0 + j.len) continue;
+            if (j.x0 + 2 * j.len > segment_end(cuts_of(j.y), j.x0)) continue;
+            repl.push_back(make(j.x0, j.m + 1, j.deg2));
+        }
+        const std::size_t removed = kind == 3 ? 2 : 1;
+        double delta_error = 0.0;
+        for (std::size_t r = i; r < i + removed; ++r) delta_error -= priced(p.jobs[r]);
+        for (const auto& k : repl) delta_error += priced(k);
+        plan q = p;
+        q.jobs.erase(q.jobs.begin() + std::ptrdiff_t(i), q.jobs.begin() + std::ptrdiff_t(i + removed));
+        q.jobs.insert(q.jobs.begin() + std::ptrdiff_t(i), repl.begin(), repl.end());
+        const double delta_points = double(sample_pixels(q, c.set).size()) - points;
+        ++tried;
+        above += j.y > 0 && f.r.covered(j.x0, j.y - 1);
+        EXPECT_GE(delta_points + lambda * delta_error, -1e-6 * points)
+            << "change " << kind << " of job " << i << " (line " << j.y << ", x " << j.x0 << ", m " << j.m << ")";
+    }
+    EXPECT_GE(tried, 40u);
+    EXPECT_GE(above, 30u);
+    c.optimal_from_above = int(optimal_window_max) + 1;
+    EXPECT_THROW(make_plan(f.r, f.k, patent, c), scene::scene_error);
+}
