@@ -91,6 +91,12 @@ struct plan_config {
     // quadratic intervals of 2^(m-1) through its four samples and its check point (t = 0, 1/4, 1/2 and
     // 1/2, 3/4, 1): the point the decision paid for becomes a sample instead of being thrown away.
     bool split_at_check = false;
+    // Adaptive length, a yardstick (host only): each decision is taken on the true RMS error (8-bit
+    // levels per channel) of the pieces the policy would send, against per-pixel shading through the
+    // device, at most length_tol, instead of on its estimates; every candidate's estimates and check
+    // point are still computed and paid. What the policy's structure (growth, split, check points)
+    // reaches with every decision right.
+    bool perfect_decisions = false;
     // Adaptive and geometry length (ours): an interval may be at most `above_slack` levels longer than
     // the shortest interval the line above has over the same pixels (a line buffer of each pixel's
     // level, exact pixels 0; pixels the line above does not cover set no limit; 2^m_min is always

@@ -58,6 +58,8 @@ void validate(const plan_config& c) {
     if (!(c.degree_tol >= 0.0)) fail("the degree tolerance must be >= 0 (8-bit levels)");
     if (!(c.depth_step > 0.0)) fail("the depth step must be > 0 (world units)");
     if (!(c.lobe_tol > 0.0)) fail("the lobe tolerance must be > 0");
+    if (c.perfect_decisions && c.length != length_policy::adaptive)
+        fail("perfect decisions are the adaptive length policy's (the decision it takes on its estimates)");
     if (c.above_slack > int(interp::m_max))
         fail("the slack over the line above, " + std::to_string(c.above_slack) + ", exceeds m_max of the units (" +
              std::to_string(interp::m_max) + "); negative for no limit");
@@ -249,6 +251,17 @@ private:
         // polynomial against the exact colour at the check point, within length_tol.
         auto passes = [&](const interval_job& job) {
             const unsigned n = 1u << job.m;
+            if (c_.perfect_decisions) {
+                // Every estimate paid (the check point too, even where the cubic's own test would
+                // have stopped first), then the decision taken on the truth.
+                if (!job.deg2) quad_miss(lg, pos, n);
+                const unsigned check = pos + length_check(c_.set) * n / 8;
+                if (job.deg2)
+                    estimate(lg, pos, n, quad_points, w_len_quad_, check);
+                else
+                    estimate(lg, pos, n, cubic_, w_len_cubic_, check);
+                return true_rms(lg, job) <= c_.length_tol;
+            }
             if (!job.deg2) {
                 const double q = quad_miss(lg, pos, n);
                 if (cnum(q, &p_.decision) > cnum(2.0 * length_tol_, &p_.decision)) return false;
@@ -267,6 +280,38 @@ private:
             if (m == lowest) return std::nullopt;
         }
     }
+
+    // The RMS error (levels per channel) of what the policy would send for `job` (its halves if it
+    // splits) against per-pixel shading through the device: the perfect decisions' yardstick.
+    double true_rms(line_geometry& lg, const interval_job& job) {
+        if (per_pixel_.px.empty()) per_pixel_ = per_pixel_frame(r_, k_, dev_);
+        std::vector<interval_job> sent{job};
+        if (splits(job)) {
+            const unsigned half = job.len / 2;
+            sent.assign(2, job);
+            for (unsigned h = 0; h < 2; ++h) {
+                interval_job& q = sent[h];
+                q.x0 = job.x0 + h * half;
+                q.len = half;
+                q.m = job.m - 1;
+                q.deg2 = true;
+                for (unsigned i = 0; i < 3; ++i) q.s[i] = lg.sample(q.x0 + quad_points[i] * half / 8);
+                q.s[3] = q.s[2];
+            }
+        }
+        double e = 0.0;
+        for (const interval_job& q : sent) {
+            const std::vector<rgb_codes> px = interval_pixels(q, k_, dev_, c_.eval, c_.set, c_.div);
+            for (unsigned i = 0; i < q.len; ++i)
+                for (int ch = 0; ch < 3; ++ch) {
+                    const double d = (double(px[i][ch]) - double(per_pixel_.px[r_.index(q.x0 + i, q.y)][ch])) *
+                                     pixel_fmt.lsb();
+                    e += d * d;
+                }
+        }
+        return std::sqrt(e / (3.0 * job.len));
+    }
+    frame per_pixel_;  // with perfect_decisions: every pixel shaded through the device (uncounted)
 
     // The line-above limit: 2^m pixels from pos, each at most above_slack levels above the line
     // above's level there (a compare a pixel against the line buffer).

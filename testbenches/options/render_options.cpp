@@ -53,6 +53,9 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
     app.add_flag("--split-at-check,!--no-split-at-check", o.pc.split_at_check,
                  "adaptive and geometry length: send each accepted cubic above 2^m_min as two quadratics "
                  "through its samples and its check point (default off)");
+    app.add_flag("--perfect-decisions,!--no-perfect-decisions", o.pc.perfect_decisions,
+                 "adaptive length, a yardstick (host only): decide on the true RMS error of the pieces sent (at "
+                 "most --length-tol levels), still paying every estimate and check point (default off)");
     app.add_option("--above-slack", o.pc.above_slack,
                    "adaptive and geometry length: an interval at most K levels longer than the shortest the line "
                    "above has over its pixels (negative: no limit; default -1)")

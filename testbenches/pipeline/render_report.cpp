@@ -138,6 +138,7 @@ json report_json(const options& o, const render_data& d) {
                      {"split_at_check", cfg.split_at_check},
                      {"carry_samples", cfg.carry_samples},
                      {"above_slack", cfg.above_slack},
+                     {"perfect_decisions", cfg.perfect_decisions},
                      {"surface_breaks", cfg.surface_breaks},
                      {"degree", degree_policy_name(cfg.degree)},
                      {"degree_tol", cfg.degree_tol},

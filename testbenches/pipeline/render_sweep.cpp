@@ -195,6 +195,7 @@ int run_sweep(const options& o) {
                                       "--depth-step", num(o.pc.depth_step), "--unit", o.unit,
                                       o.pc.walk_edges ? "--walk-edges" : "--no-walk-edges",
                                       "--above-slack", std::to_string(o.pc.above_slack),
+                                      o.pc.perfect_decisions ? "--perfect-decisions" : "--no-perfect-decisions",
                                       o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
                                       sp.split || o.pc.split_at_check ? "--split-at-check" : "--no-split-at-check",
                                       sp.carry || o.pc.carry_samples ? "--carry-samples" : "--no-carry-samples",
