@@ -3,6 +3,7 @@
 // interval gets its degree by a degree policy, and the geometry (N.H, N.L) is computed once per
 // distinct pixel that any sample or decision needs, every operation counted.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -193,16 +194,22 @@ private:
         return c_.split_at_check && c_.length != length_policy::fixed && checked && job.m > interp::m_min &&
                !job.deg2 && job.len == (1u << job.m);
     }
-    void split_at_check(line_geometry& lg, const interval_job& whole) {
+    std::array<interval_job, 2> halves(line_geometry& lg, const interval_job& whole) {
         const unsigned half = 1u << (whole.m - 1);
+        std::array<interval_job, 2> out{whole, whole};
         for (unsigned h = 0; h < 2; ++h) {
-            interval_job job = whole;
+            interval_job& job = out[h];
             job.x0 = whole.x0 + h * half;
             job.len = half;
             job.m = whole.m - 1;
             job.deg2 = true;
             for (unsigned i = 0; i < 3; ++i) job.s[i] = lg.sample(job.x0 + quad_points[i] * half / 8);
             job.s[3] = job.s[2];
+        }
+        return out;
+    }
+    void split_at_check(line_geometry& lg, const interval_job& whole) {
+        for (interval_job job : halves(lg, whole)) {
             job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(job.x0)));
             p_.jobs.push_back(job);
         }
@@ -287,17 +294,8 @@ private:
         if (per_pixel_.px.empty()) per_pixel_ = per_pixel_frame(r_, k_, dev_);
         std::vector<interval_job> sent{job};
         if (splits(job)) {
-            const unsigned half = job.len / 2;
-            sent.assign(2, job);
-            for (unsigned h = 0; h < 2; ++h) {
-                interval_job& q = sent[h];
-                q.x0 = job.x0 + h * half;
-                q.len = half;
-                q.m = job.m - 1;
-                q.deg2 = true;
-                for (unsigned i = 0; i < 3; ++i) q.s[i] = lg.sample(q.x0 + quad_points[i] * half / 8);
-                q.s[3] = q.s[2];
-            }
+            const auto h = halves(lg, job);
+            sent.assign(h.begin(), h.end());
         }
         double e = 0.0;
         for (const interval_job& q : sent) {

@@ -183,6 +183,33 @@ inline std::set<std::pair<unsigned, unsigned>> sample_pixels(const plan& p, inte
     return s;
 }
 
+// Squared error (8-bit levels^2, three channels) of interval j (x0, m, len, deg2) placed on line y,
+// its samples the geometry at its documented points (recomputed from the rasteriser), its pixels
+// golden_interval's, against `exact` (per-pixel shading through the device).
+inline double interval_squared_error(const scene_fixture& f, const frame& exact, interval_job j, unsigned y,
+                                     const plan_config& c) {
+    j.y = y;
+    const auto pts = job_points(j, c.set);
+    for (std::size_t s = 0; s < 4; ++s)
+        j.s[s] = sample_of(scene::geometry_at(f.r, at(j, pts[std::min(s, pts.size() - 1)]), y, nullptr));
+    const auto px = golden_interval(j, f.k, patent, c.eval, c.set, c.div);
+    double e = 0.0;
+    for (unsigned i = 0; i < j.len; ++i)
+        for (int ch = 0; ch < 3; ++ch) {
+            const double d = (double(px[i][ch]) - double(exact.px[f.r.index(j.x0 + i, y)][ch])) / 256.0;
+            e += d * d;
+        }
+    return e;
+}
+inline interval_job interval_at(unsigned x0, unsigned m, bool deg2) {
+    interval_job j;
+    j.x0 = x0;
+    j.m = m;
+    j.len = 1u << m;
+    j.deg2 = deg2;
+    return j;
+}
+
 // Colour (Q8.8 codes) at pixel x of line y.
 inline rgb_codes colour(const scene_fixture& f, unsigned x, unsigned y) {
     return golden_sample(patent, f.k, sample_of(scene::geometry_at(f.r, x, y, nullptr)));

@@ -2,6 +2,7 @@
 // NMSE, recomputed from its frame, is within the allowed one; its geometry points counted from its
 // sample pixels; its Lagrangian certificate checked against every policy's plan and against plans
 // perturbed from it (none may beat points + lambda x error); the cheapest point hand-counted.
+#include <optional>
 #include <random>
 
 #include "plan_test_fixtures.h"
@@ -40,6 +41,57 @@ struct reference_image {
 // Squared error (8-bit levels^2) of a plan's frame against the reference: NMSE x energy.
 double squared_error(const scene_fixture& f, const plan& p, const plan_config& c, const reference_image& ref) {
     return compare(to_image(golden_frame(p, f.k, patent, c)), ref.img).nmse * ref.energy;
+}
+
+// A local change of interval job i of plan p, kind 0: its pixels made exact; 1: its degree flipped;
+// 2: split in two; 3: merged with the next job where that is an interval of the same length and the
+// doubled interval's t = 1 sample stays in the segment. The jobs it removes and inserts (samples from
+// the rasteriser) and the plan changed; nothing where the change does not apply.
+struct local_change {
+    std::vector<interval_job> removed, inserted;
+    plan changed;
+};
+std::optional<local_change> change_of(const scene_fixture& f, const plan& p, const plan_config& c, std::size_t i,
+                                      int kind) {
+    const interval_job& j = p.jobs[i];
+    auto sample = [&](unsigned x) { return sample_of(scene::geometry_at(f.r, x, j.y, nullptr)); };
+    auto make = [&](unsigned x0, unsigned m, bool deg2) {
+        interval_job k = j;
+        k.x0 = x0;
+        k.m = m;
+        k.len = 1u << m;
+        k.deg2 = m > 0 && deg2;
+        if (m == 0) {
+            k.s = {sample(x0), sample(x0), sample(x0), sample(x0)};
+        } else {
+            const auto pts = job_points(k, c.set);
+            for (std::size_t s = 0; s < 4; ++s) k.s[s] = sample(at(k, pts[std::min(s, pts.size() - 1)]));
+        }
+        k.zone = static_cast<uint8_t>(head_zone(f.r, scene::geometry_at(f.r, x0, j.y, nullptr)));
+        return k;
+    };
+    local_change ch;
+    if (kind == 0) {
+        for (unsigned x = j.x0; x < j.x0 + j.len; ++x) ch.inserted.push_back(make(x, 0, false));
+    } else if (kind == 1) {
+        ch.inserted.push_back(make(j.x0, j.m, !j.deg2));
+    } else if (kind == 2) {
+        if (j.m <= c.m_min) return std::nullopt;
+        ch.inserted.push_back(make(j.x0, j.m - 1, j.deg2));
+        ch.inserted.push_back(make(j.x0 + j.len / 2, j.m - 1, j.deg2));
+    } else {
+        if (i + 1 >= p.jobs.size() || j.m >= c.m_max) return std::nullopt;
+        const interval_job& nx = p.jobs[i + 1];
+        if (nx.y != j.y || nx.m != j.m || nx.x0 != j.x0 + j.len) return std::nullopt;
+        if (j.x0 + 2 * j.len > segment_end(cuts(f.r, j.y, c), j.x0)) return std::nullopt;
+        ch.inserted.push_back(make(j.x0, j.m + 1, j.deg2));
+    }
+    const std::size_t n_removed = kind == 3 ? 2 : 1;
+    ch.removed.assign(p.jobs.begin() + std::ptrdiff_t(i), p.jobs.begin() + std::ptrdiff_t(i + n_removed));
+    ch.changed = p;
+    ch.changed.jobs.erase(ch.changed.jobs.begin() + std::ptrdiff_t(i), ch.changed.jobs.begin() + std::ptrdiff_t(i + n_removed));
+    ch.changed.jobs.insert(ch.changed.jobs.begin() + std::ptrdiff_t(i), ch.inserted.begin(), ch.inserted.end());
+    return ch;
 }
 
 }  // namespace
@@ -128,50 +180,12 @@ TEST(PipelineOptimal, NoLocalChangeBeatsIt) {
         const std::size_t i = std::uniform_int_distribution<std::size_t>(0, best.jobs.size() - 1)(rng);
         const interval_job& j = best.jobs[i];
         if (j.m == 0) continue;
-        plan p = best;
-        std::vector<interval_job> repl;
-        auto sample = [&](unsigned x) { return sample_of(scene::geometry_at(f.r, x, j.y, nullptr)); };
-        auto make = [&](unsigned x0, unsigned m, bool deg2) {
-            interval_job k = j;
-            k.x0 = x0;
-            k.m = m;
-            k.len = 1u << m;
-            k.deg2 = deg2;
-            if (m == 0) {
-                k.deg2 = false;
-                k.s = {sample(x0), sample(x0), sample(x0), sample(x0)};
-            } else {
-                const auto pts = job_points(k, c.set);
-                for (std::size_t s = 0; s < 4; ++s) k.s[s] = sample(at(k, pts[std::min(s, pts.size() - 1)]));
-            }
-            k.zone = static_cast<uint8_t>(head_zone(f.r, scene::geometry_at(f.r, x0, j.y, nullptr)));
-            return k;
-        };
         const int kind = attempt % 4;
-        if (kind == 0) {
-            for (unsigned x = j.x0; x < j.x0 + j.len; ++x) repl.push_back(make(x, 0, false));
-        } else if (kind == 1) {
-            repl.push_back(make(j.x0, j.m, !j.deg2));
-        } else if (kind == 2) {
-            if (j.m <= c.m_min) continue;
-            repl.push_back(make(j.x0, j.m - 1, j.deg2));
-            repl.push_back(make(j.x0 + j.len / 2, j.m - 1, j.deg2));
-        } else {
-            // Merge with the next job when it is an interval of the same length and the doubled
-            // interval's t = 1 sample stays in the segment.
-            if (i + 1 >= best.jobs.size() || j.m >= c.m_max) continue;
-            const interval_job& nx = best.jobs[i + 1];
-            const auto lc = cuts(f.r, j.y, c);
-            if (nx.y != j.y || nx.m != j.m || nx.x0 != j.x0 + j.len) continue;
-            if (j.x0 + 2 * j.len > segment_end(lc, j.x0)) continue;
-            repl.push_back(make(j.x0, j.m + 1, j.deg2));
-        }
-        const std::size_t removed = kind == 3 ? 2 : 1;
-        p.jobs.erase(p.jobs.begin() + std::ptrdiff_t(i), p.jobs.begin() + std::ptrdiff_t(i + removed));
-        p.jobs.insert(p.jobs.begin() + std::ptrdiff_t(i), repl.begin(), repl.end());
+        const auto ch = change_of(f, best, c, i, kind);
+        if (!ch) continue;
         ++tried;
-        EXPECT_GE(objective(p), at_best - 1e-6 * at_best) << "change " << kind << " of job " << i << " (line " << j.y
-                                                           << ", x " << j.x0 << ", m " << j.m << ")";
+        EXPECT_GE(objective(ch->changed), at_best - 1e-6 * at_best)
+            << "change " << kind << " of job " << i << " (line " << j.y << ", x " << j.x0 << ", m " << j.m << ")";
     }
     EXPECT_GE(tried, 40u);
 }
@@ -227,23 +241,7 @@ TEST(PipelineOptimal, GreedyFollowsItsRule) {
     const frame exact = per_pixel_frame(f.r, f.k, patent);
     // RMS error (levels, per channel) of an interval at (y, x0) of 2^m pixels, recomputed.
     auto rms = [&](unsigned y, unsigned x0, unsigned m, bool deg2) {
-        interval_job j;
-        j.y = y;
-        j.x0 = x0;
-        j.m = m;
-        j.len = 1u << m;
-        j.deg2 = deg2;
-        const auto pts = job_points(j, c.set);
-        for (std::size_t s = 0; s < 4; ++s)
-            j.s[s] = sample_of(scene::geometry_at(f.r, at(j, pts[std::min(s, pts.size() - 1)]), y, nullptr));
-        const auto px = golden_interval(j, f.k, patent, c.eval, c.set, c.div);
-        double e = 0.0;
-        for (unsigned i = 0; i < j.len; ++i)
-            for (int ch = 0; ch < 3; ++ch) {
-                const double d = (double(px[i][ch]) - double(exact.px[f.r.index(x0 + i, y)][ch])) / 256.0;
-                e += d * d;
-            }
-        return std::sqrt(e / (3.0 * j.len));
+        return std::sqrt(interval_squared_error(f, exact, interval_at(x0, m, deg2), y, c) / (3.0 * double(1u << m)));
     };
     std::size_t longer_checked = 0;
     for (std::size_t i = 0; i < p.jobs.size(); ++i) {
@@ -293,22 +291,9 @@ TEST(PipelineOptimal, FromAboveChoosesOnTheLineAbovesErrors) {
         auto it = line_cuts.find(y);
         return it != line_cuts.end() ? it->second : line_cuts.emplace(y, cuts(f.r, y, c)).first->second;
     };
-    // Squared error (levels^2, three channels) of job j's interval placed on line y.
+    // Squared error of job j's interval placed on line y (an exact pixel is the reference itself).
     auto error_on = [&](const interval_job& j, unsigned y) {
-        if (j.m == 0) return 0.0;  // an exact pixel is the reference itself
-        interval_job k = j;
-        k.y = y;
-        const auto pts = job_points(k, c.set);
-        for (std::size_t s = 0; s < 4; ++s)
-            k.s[s] = sample_of(scene::geometry_at(f.r, at(k, pts[std::min(s, pts.size() - 1)]), y, nullptr));
-        const auto px = golden_interval(k, f.k, patent, c.eval, c.set, c.div);
-        double e = 0.0;
-        for (unsigned i = 0; i < k.len; ++i)
-            for (int ch = 0; ch < 3; ++ch) {
-                const double d = (double(px[i][ch]) - double(exact.px[f.r.index(k.x0 + i, y)][ch])) / 256.0;
-                e += d * d;
-            }
-        return e;
+        return j.m == 0 ? 0.0 : interval_squared_error(f, exact, j, y, c);
     };
     auto priced = [&](const interval_job& j) {
         if (j.m > 0 && j.y > 0 && f.r.covered(j.x0, j.y - 1)) {
@@ -324,39 +309,13 @@ TEST(PipelineOptimal, FromAboveChoosesOnTheLineAbovesErrors) {
         const std::size_t i = std::uniform_int_distribution<std::size_t>(0, p.jobs.size() - 1)(rng);
         const interval_job& j = p.jobs[i];
         if (j.m == 0) continue;
-        auto make = [&](unsigned x0, unsigned m, bool deg2) {
-            interval_job k = j;
-            k.x0 = x0;
-            k.m = m;
-            k.len = 1u << m;
-            k.deg2 = m > 0 && deg2;
-            return k;
-        };
-        std::vector<interval_job> repl;
         const int kind = attempt % 4;
-        if (kind == 0) {
-            for (unsigned x = j.x0; x < j.x0 + j.len; ++x) repl.push_back(make(x, 0, false));
-        } else if (kind == 1) {
-            repl.push_back(make(j.x0, j.m, !j.deg2));
-        } else if (kind == 2) {
-            if (j.m <= c.m_min) continue;
-            repl.push_back(make(j.x0, j.m - 1, j.deg2));
-            repl.push_back(make(j.x0 + j.len / 2, j.m - 1, j.deg2));
-        } else {
-            if (i + 1 >= p.jobs.size() || j.m >= c.m_max) continue;
-            const interval_job& nx = p.jobs[i + 1];
-            if (nx.y != j.y || nx.m != j.m || nx.x0 != j.x0 + j.len) continue;
-            if (j.x0 + 2 * j.len > segment_end(cuts_of(j.y), j.x0)) continue;
-            repl.push_back(make(j.x0, j.m + 1, j.deg2));
-        }
-        const std::size_t removed = kind == 3 ? 2 : 1;
+        const auto ch = change_of(f, p, c, i, kind);
+        if (!ch) continue;
         double delta_error = 0.0;
-        for (std::size_t r = i; r < i + removed; ++r) delta_error -= priced(p.jobs[r]);
-        for (const auto& k : repl) delta_error += priced(k);
-        plan q = p;
-        q.jobs.erase(q.jobs.begin() + std::ptrdiff_t(i), q.jobs.begin() + std::ptrdiff_t(i + removed));
-        q.jobs.insert(q.jobs.begin() + std::ptrdiff_t(i), repl.begin(), repl.end());
-        const double delta_points = double(sample_pixels(q, c.set).size()) - points;
+        for (const auto& k : ch->removed) delta_error -= priced(k);
+        for (const auto& k : ch->inserted) delta_error += priced(k);
+        const double delta_points = double(sample_pixels(ch->changed, c.set).size()) - points;
         ++tried;
         above += j.y > 0 && f.r.covered(j.x0, j.y - 1);
         EXPECT_GE(delta_points + lambda * delta_error, -1e-6 * points)

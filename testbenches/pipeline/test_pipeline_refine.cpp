@@ -182,34 +182,9 @@ TEST(PipelinePlan, PerfectDecisionsAreRight) {
     const frame exact = per_pixel_frame(f.r, f.k, patent);
     // RMS error (levels per channel) of what the policy sends for an interval of 2^m at (y, x0).
     auto sent_rms = [&](unsigned y, unsigned x0, unsigned m) {
-        std::vector<interval_job> sent;
-        auto piece = [&](unsigned xs, unsigned ms, bool deg2) {
-            interval_job j;
-            j.y = y;
-            j.x0 = xs;
-            j.m = ms;
-            j.len = 1u << ms;
-            j.deg2 = deg2;
-            const auto pts = job_points(j, c.set);
-            for (std::size_t s = 0; s < 4; ++s)
-                j.s[s] = sample_of(scene::geometry_at(f.r, at(j, pts[std::min(s, pts.size() - 1)]), y, nullptr));
-            sent.push_back(j);
-        };
-        if (m > c.m_min) {
-            piece(x0, m - 1, true);
-            piece(x0 + (1u << (m - 1)), m - 1, true);
-        } else {
-            piece(x0, m, false);
-        }
-        double e = 0.0;
-        for (const interval_job& j : sent) {
-            const auto px = golden_interval(j, f.k, patent, c.eval, c.set, c.div);
-            for (unsigned i = 0; i < j.len; ++i)
-                for (int ch = 0; ch < 3; ++ch) {
-                    const double d = (double(px[i][ch]) - double(exact.px[f.r.index(j.x0 + i, y)][ch])) / 256.0;
-                    e += d * d;
-                }
-        }
+        const double e = m > c.m_min ? interval_squared_error(f, exact, interval_at(x0, m - 1, true), y, c) +
+                                           interval_squared_error(f, exact, interval_at(x0 + (1u << (m - 1)), m - 1, true), y, c)
+                                     : interval_squared_error(f, exact, interval_at(x0, m, false), y, c);
         return std::sqrt(e / (3.0 * double(1u << m)));
     };
     std::size_t decisions = 0, longer = 0, misses = 0;
