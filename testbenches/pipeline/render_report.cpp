@@ -234,7 +234,9 @@ std::string report_md(const options& o, const render_data& d) {
         md << " (m = " << cfg.m << ", " << (1u << cfg.m) << " pixels)";
     else
         md << " (m " << cfg.m_min << ".." << cfg.m_max << ", tolerance " << cfg.length_tol << " levels, exact fallback "
-           << (cfg.exact_fallback ? "on" : "off") << (cfg.split_at_check ? ", split at the check point" : "") << ")";
+           << (cfg.exact_fallback ? "on" : "off") << (cfg.split_at_check ? ", split at the check point" : "")
+           << (cfg.above_slack >= 0 ? ", at most " + std::to_string(cfg.above_slack) + " levels over the line above" : "")
+           << (cfg.perfect_decisions ? ", perfect decisions (a yardstick: true errors, checks still paid)" : "") << ")";
     md << ", degree " << degree_policy_name(cfg.degree);
     if (cfg.degree == degree_policy::adaptive) md << " (tolerance " << cfg.degree_tol << ")";
     md << ", evaluator " << evaluator_name(cfg.eval) << ", sample set " << o.set << ", /3 " << o.div3
@@ -253,19 +255,23 @@ std::string report_md(const options& o, const render_data& d) {
            << fmt("%.3e", p.optimum.nmse) << "; no plan of these segments "
            << "meets the NMSE with fewer than " << fmt("%.1f", p.optimum.points_bound) << " ("
            << fmt("%.4f", opt["points_bound_per_pixel"].get<double>()) << " per pixel).";
+        const bool above = cfg.optimal_from_above >= 0;
         if (cfg.optimal_greedy)
-            md << " The plan here is not the optimum's but the adaptive policies' greedy structure with perfect "
-                  "estimates: RMS tolerance "
+            md << " The plan here is not the optimum's but the adaptive policies' greedy structure with "
+               << (above ? "the line above's errors as its estimates" : "perfect estimates") << ": RMS tolerance "
                << fmt("%.3f", p.optimum.greedy_tolerance) << " levels per interval, NMSE "
                << fmt("%.3e", p.optimum.greedy_nmse) << ", " << p.geometry_points << " geometry points.";
-        if (cfg.optimal_from_above >= 0)
-            md << " Its choices are priced not by the line's own errors but by the line above's (the largest over "
-                  "starts within "
-               << cfg.optimal_from_above << " pixels; "
-               << fmt("%.1f", 100.0 * p.optimum.above_fallback)
-               << " % of the candidates, with none above, by their own): NMSE " << fmt("%.3e", p.optimum.above_nmse)
+        else if (above)
+            md << " The plan here is not the optimum's but one chosen the optimum's way on the line above's errors, "
+                  "not each line's own: NMSE "
+               << fmt("%.3e", p.optimum.above_nmse)
                << (p.optimum.above_nmse <= cfg.optimal_nmse ? "" : ", above the NMSE allowed") << ", "
                << p.geometry_points << " geometry points.";
+        if (above)
+            md << " Each candidate is priced by the same candidate's largest error on the line above over starts "
+                  "within "
+               << cfg.optimal_from_above << " pixels; " << fmt("%.1f", 100.0 * p.optimum.above_fallback)
+               << " % of the candidates, with none above, by their own.";
         md << "\n\n";
     }
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";
