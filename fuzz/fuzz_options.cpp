@@ -213,6 +213,20 @@ std::optional<int> head_study(int argc, char** argv) {
     return std::nullopt;
 }
 
+std::optional<int> components_study(int argc, char** argv) {
+    components_study_options o;
+    if (auto rc = parse_components_study(argc, argv, o)) return rc;
+    FUZZ_CHECK(in({"head", "sphere", "torus"}, o.scene), "--scene '%s'", o.scene.c_str());
+    FUZZ_CHECK(device(o.device), "--device '%s'", o.device.c_str());
+    FUZZ_CHECK(within(o.size, 16u, 4096u), "--size %u", o.size);
+    FUZZ_CHECK(o.nmse > 0.0 && o.nmse <= 1.0, "--nmse %g", o.nmse);
+    for (const auto* tols : {&o.tol_sum, &o.tol_diffuse, &o.tol_specular})
+        for (double t : *tols) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a tolerance %g", t);
+    for (unsigned m : {o.m_max_sum, o.m_max_diffuse, o.m_max_specular})
+        FUZZ_CHECK(within(m, shading::interp::m_min, shading::interp::m_max), "an --m-max %u", m);
+    return std::nullopt;
+}
+
 std::optional<int> render_pipeline(int argc, char** argv) {
 #if SHADING_FUZZ_RENDER_OPTIONS
     namespace rp = shading::render_program;
@@ -262,7 +276,7 @@ const program programs[] = {
     {"render_reference", render_reference}, {"bench_specular_tlm", bench_specular_tlm},
     {"accuracy_study", accuracy_study},     {"generator_search", generator_search},
     {"head_study", head_study},             {"render_pipeline", render_pipeline},
-    {"bench_line_tlm", bench_line_tlm},
+    {"bench_line_tlm", bench_line_tlm},     {"components_study", components_study},
 };
 
 }  // namespace

@@ -9,7 +9,8 @@ OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus", "fuzz_o
 # fuzz_options.cpp's table, in its order.
 PROGRAMS = ["interp_coef_tb", "ua60553_tb", "interp_fd_tb", "ua22802_tb", "interp_horner_tb", "squared_tb",
             "interp_line_tb", "interp_study", "soak_pipeline", "render_reference", "bench_specular_tlm",
-            "accuracy_study", "generator_search", "head_study", "render_pipeline"]
+            "accuracy_study", "generator_search", "head_study", "render_pipeline", "bench_line_tlm",
+            "components_study"]
 BENCH = {  # what every bench's ctest entries pass (cmake/shading.cmake, shading_add_bench)
     "default": "--no-vcd",
     "inject": "--no-vcd --inject-mismatch 3",
@@ -42,6 +43,10 @@ SEEDS = {
                         "geometry": "--length geometry --lobe-tol 2 --eval fd --set case2 --div3 exact --unit scratch --abstraction fast",
                         "optimal": "--length optimal --optimal-nmse 1e-4 --optimal-reference total --optimal-greedy --optimal-from-above 1 --walk-edges --size 32",
                         "n": "--n ten", "available": "--sim-available"},
+    "bench_line_tlm": {"smoke": "--lt-pixels 200000 --pin-pixels 8192", "burst": "--lt-pixels 64000 --pin-pixels 3200 --burst 1",
+                       "usage": "--lt-pixels 12x"},
+    "components_study": {"short": "--size 48 --tol-sum 1,2 --tol-diffuse 1 --tol-specular 1,2 --m-max-specular 4",
+                         "scene": "--scene torus --device patent --nmse 1e-4", "usage": "--m-max-diffuse 7"},
 }
 
 

@@ -9,6 +9,7 @@
 
 #include "bench_options.h"
 #include "cli_parse.h"
+#include "formats/interp_formats.h"
 #include "tool_options.h"
 
 namespace shading::tb {
@@ -255,6 +256,25 @@ std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o
                    "(0: none)")
         ->check(CLI::Range(0u, 1000u));
     SHADING_CLI_PARSE(app, argc, argv);  // an n outside 1..1000 is bad usage (exit 2)
+    return std::nullopt;
+}
+
+std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o) {
+    CLI::App app{"the shading components interpolated apart (as the interpolation paper does) against their sum"};
+    app.add_option("--scene", o.scene, "built-in scene")->check(CLI::IsMember({"head", "sphere", "torus"}));
+    app.add_option("--size", o.size, "image width and height")->check(CLI::Range(16u, 4096u));
+    app.add_option("--data-dir", o.data_dir, "repository root holding data/head/");
+    app.add_option("--device", o.device, "specular device")->check(CLI::IsMember(device_names()));
+    app.add_option("--nmse", o.nmse, "the interpolation NMSE allowed (0..1]")->check(CLI::Range(1e-12, 1.0));
+    const auto tol = CLI::Range(1e-3, 64.0);
+    app.add_option("--tol-sum", o.tol_sum, "the sum's tolerances (8-bit levels, comma-separated)")->delimiter(',')->check(tol);
+    app.add_option("--tol-diffuse", o.tol_diffuse, "ambient + diffuse tolerances")->delimiter(',')->check(tol);
+    app.add_option("--tol-specular", o.tol_specular, "specular tolerances")->delimiter(',')->check(tol);
+    const auto m = CLI::Range(interp::m_min, interp::m_max);
+    app.add_option("--m-max-sum", o.m_max_sum, "the sum's longest interval 2^m")->check(m);
+    app.add_option("--m-max-diffuse", o.m_max_diffuse, "ambient + diffuse longest interval 2^m")->check(m);
+    app.add_option("--m-max-specular", o.m_max_specular, "specular longest interval 2^m")->check(m);
+    SHADING_CLI_PARSE(app, argc, argv);
     return std::nullopt;
 }
 

@@ -1,5 +1,6 @@
 // The command lines of the studies and tools that are not testbenches (interp_study, soak_pipeline,
-// render_reference, bench_specular_tlm, accuracy_study, generator_search, head_study) as plain
+// render_reference, bench_specular_tlm, accuracy_study, generator_search, head_study,
+// components_study) as plain
 // structs, and one parse function per program, as in bench_options.h: the struct filled, an exit
 // status returned when the program must stop (0 after --help, 2 for bad usage), nothing when it
 // runs. No side effect beyond printing help or the usage error (program_options.cpp, CLI11).
@@ -72,6 +73,18 @@ struct head_study_options {
     unsigned scan_max = 1000;  // 0..1000
 };
 
+// components_study: the built-in scene (head, sphere, torus), the tolerances tried per design (8-bit
+// levels, each > 0 and <= 64), the longest interval per design (interp::m_min..m_max: 2..6).
+struct components_study_options {
+    std::string scene = "head", data_dir = default_data_dir(), device = "squared";
+    unsigned size = 512;  // 16..4096
+    double nmse = 1e-5;   // (0, 1]
+    std::vector<double> tol_sum{1.5, 1.7, 1.9, 2.1};
+    std::vector<double> tol_diffuse{1.0, 1.2, 1.4, 1.6, 1.9};
+    std::vector<double> tol_specular{1.0, 1.3, 1.6, 1.9, 2.2, 2.5};
+    unsigned m_max_sum = 5, m_max_diffuse = 5, m_max_specular = 6;
+};
+
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);
 std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
 std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
@@ -80,5 +93,6 @@ std::optional<int> parse_bench_line_tlm(int argc, char** argv, bench_line_tlm_op
 std::optional<int> parse_accuracy_study(int argc, char** argv, accuracy_study_options& o);
 std::optional<int> parse_generator_search(int argc, char** argv, generator_search_options& o);
 std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o);
+std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o);
 
 }  // namespace shading::tb
