@@ -4,6 +4,7 @@
 
 #include "components.h"
 #include "scene/world.h"
+#include "testbenches/pipeline/plan_test_fixtures.h"  // interval_at
 
 namespace {
 
@@ -46,14 +47,7 @@ TEST(Components, AddSaturatesPerChannel) {
     EXPECT_EQ(add_saturated(a, b).px[0], (rgb_codes{0xFFFF, 30, 0xFFFF}));
 }
 
-interval_job job(unsigned x0, unsigned m, bool deg2) {
-    interval_job j;
-    j.x0 = x0;
-    j.m = m;
-    j.len = 1u << m;
-    j.deg2 = deg2;
-    return j;
-}
+const auto& job = plan_test::interval_at;
 
 // Sample pixels by hand: a quadratic of 4 at 0 (0, 2, 4), an exact pixel at 5, a cubic of 8 at 8
 // (case 1: 8, 10, 12, 16; case 2: 8, 12, 14, 16).
