@@ -8,7 +8,7 @@
 //  - the specular plan alone with an exact diffuse given for nothing: what apart could reach at best.
 // Each against per-pixel shading of the sum through the device (the interpolation NMSE), ratios
 // against the scan-line Phong. Prints Markdown tables and, per design, the cheapest meeting --nmse.
-//   build/bin/components_study                  (about 20 s)
+//   build/bin/components_study                  (about 1 s)
 //   build/bin/components_study --size 64 --tol-sum 1 --tol-diffuse 1 --tol-specular 1
 #include <cstdio>
 #include <exception>
@@ -41,6 +41,12 @@ part plan_part(const scene::rasterised& r, const frame_constants& k, const scene
     part out{tol, c, make_plan(r, k, dev, c), {}};
     out.g = golden_frame(out.p, k, dev, c);
     return out;
+}
+
+std::string fixed2(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.2f", v);
+    return b;
 }
 
 struct best {
@@ -98,7 +104,7 @@ int main(int argc, char* argv[]) {
             const part s = plan_part(r, k, dev, base, t, o.m_max_sum);
             const double cost = double(hardware_ops(s.p, s.c, dev, k.n).total().long_ops()) / pixels, e = nmse(s.g);
             std::printf("| %.2f | %.4f | %.3g | %.2f | %.2f |\n", t, s.p.geometry_points / pixels, e, cost, scanline / cost);
-            b_sum.offer(cost, e, o.nmse, "T = " + std::to_string(t));
+            b_sum.offer(cost, e, o.nmse, "T = " + fixed2(t));
         }
 
         std::vector<part> dif, spec;
@@ -115,7 +121,7 @@ int main(int argc, char* argv[]) {
                 const double cost = c.total() / pixels, e = nmse(add_saturated(d.g, s.g));
                 std::printf("| %.2f | %.2f | %.4f | %.3g | %.2f | %.2f |\n", d.tol, s.tol, c.diffuse_only / pixels, e, cost,
                             scanline / cost);
-                b_apart.offer(cost, e, o.nmse, "T diffuse = " + std::to_string(d.tol) + ", T specular = " + std::to_string(s.tol));
+                b_apart.offer(cost, e, o.nmse, "T diffuse = " + fixed2(d.tol) + ", T specular = " + fixed2(s.tol));
             }
 
         std::printf("\n## The specular plan alone, the diffuse exact for nothing: long operations at least\n\n");
@@ -124,7 +130,7 @@ int main(int argc, char* argv[]) {
             const double cost = apart_cost_bound(s.p, s.c, s.p, s.c, dev, k.n).specular / pixels,
                          e = nmse(add_saturated(pp_d, s.g));
             std::printf("| %.2f | %.3g | %.2f | %.2f |\n", s.tol, e, cost, scanline / cost);
-            b_spec.offer(cost, e, o.nmse, "T specular = " + std::to_string(s.tol));
+            b_spec.offer(cost, e, o.nmse, "T specular = " + fixed2(s.tol));
         }
 
         std::printf("\n## The cheapest with NMSE <= %.3g\n\n", o.nmse);
