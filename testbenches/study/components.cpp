@@ -34,7 +34,10 @@ std::vector<uint8_t> sample_pixels(const plan& p, interp::sample_set set) {
             eighths = j.deg2 ? std::vector<unsigned>{0, 4, 8}
                       : set == interp::sample_set::case1 ? std::vector<unsigned>{0, 2, 4, 8}
                                                          : std::vector<unsigned>{0, 4, 6, 8};
-        for (unsigned e : eighths) out[std::size_t(j.y) * p.width + j.x0 + e * (1u << j.m) / 8] = 1;
+        // A job shorter than 2^m (a fixed length near a segment's end) may name a t = 1 point past the
+        // line; it marks no pixel of this frame.
+        for (unsigned e : eighths)
+            if (const unsigned x = j.x0 + e * (1u << j.m) / 8; x < p.width) out[std::size_t(j.y) * p.width + x] = 1;
     }
     return out;
 }

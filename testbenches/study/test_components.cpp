@@ -64,6 +64,11 @@ TEST(Components, SamplePixelsByHand) {
     };
     EXPECT_EQ(on(sample_pixels(p, interp::sample_set::case1)), (std::vector<unsigned>{0, 2, 4, 5, 8, 10, 12, 16}));
     EXPECT_EQ(on(sample_pixels(p, interp::sample_set::case2)), (std::vector<unsigned>{0, 2, 4, 5, 8, 12, 14, 16}));
+    // A cubic of 8 at 16 cut to 4 pixels: its t = 1 point (24) lies past the 20-pixel line.
+    interval_job cut = job(16, 3, false);
+    cut.len = 4;
+    p.jobs.push_back(cut);
+    EXPECT_EQ(on(sample_pixels(p, interp::sample_set::case1)), (std::vector<unsigned>{0, 2, 4, 5, 8, 10, 12, 16, 18}));
 }
 
 // The diffuse plan samples 0, 2, 4 and computed 4 points (a check at 3); the specular plan samples
