@@ -1,5 +1,6 @@
 // Error measures of the shading pipeline (pipeline.h): a frame's codes as 8-bit values, and NMSE,
-// PSNR and the largest error against a reference image over its covered pixels, whole or per zone.
+// PSNR, the largest error and the pixels beyond error_levels against a reference image over its
+// covered pixels, whole or per zone.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -37,12 +38,16 @@ error_stats compare(const scene::shaded_image& a, const scene::shaded_image& ref
         if (!ref.covered[i]) continue;
         if (zone >= 0 && (*zones)[i] != zone) continue;
         ++st.pixels;
+        double worst = 0.0;
         for (int c = 0; c < 3; ++c) {
             const double d = a.value[i][c] - ref.value[i][c];
             sum_d2 += d * d;
             sum_r2 += ref.value[i][c] * ref.value[i][c];
-            st.max_abs = std::max(st.max_abs, std::abs(d));
+            worst = std::max(worst, std::abs(d));
         }
+        st.max_abs = std::max(st.max_abs, worst);
+        for (std::size_t k = 0; k < error_levels.size(); ++k)
+            if (worst > error_levels[k]) ++st.pixels_over[k];
     }
     const double inf = std::numeric_limits<double>::infinity();
     // A black (or empty) reference: NMSE 0 if a equals it, else unbounded.

@@ -265,11 +265,16 @@ hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::d
 hardware_counts hardware_ops(const plan& p, const plan_config& c);
 
 // ---- Error measures over covered pixels and the three channels, in 8-bit units ----
+// Levels beyond which error_stats counts pixels: the NMSE and the largest error alone cannot say
+// whether a large error is one pixel (a glint narrower than a pixel between two samples) or a region.
+inline constexpr std::array<double, 3> error_levels{4.0, 16.0, 64.0};
 struct error_stats {
     double nmse = 0.0;     // sum (a - ref)^2 / sum ref^2
     double psnr_db = 0.0;  // 10 log10(255^2 / MSE); +inf when equal
     double max_abs = 0.0;  // largest |a - ref|
     std::size_t pixels = 0;
+    // Pixels whose largest channel error |a - ref| exceeds error_levels[i] (strictly).
+    std::array<std::size_t, error_levels.size()> pixels_over{};
 };
 // The values of a frame's pixels in 8-bit units (code / 256).
 scene::shaded_image to_image(const frame& f);

@@ -32,7 +32,7 @@ if(TARGET shading_pipeline)
            COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 48 $2 --out \"$1\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/head48 ${rp_sim})
   add_test(NAME pipeline.render.head48.report
-           COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"scanline_phong_long_over_hardware_long\"' '\"displayed_8bit\"' '\"phong_scanline\"' '\"clocks_per_pixel\"' '\"forehead\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
+           COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"scanline_phong_long_over_hardware_long\"' '\"displayed_8bit\"' '\"phong_scanline\"' '\"clocks_per_pixel\"' '\"forehead\"' '\"pixels_over\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
                    ${rp_out}/head48)
   set_tests_properties(pipeline.render.head48.report PROPERTIES DEPENDS pipeline.render.head48)
   list(APPEND rp_tests pipeline.render.head48 pipeline.render.head48.report)

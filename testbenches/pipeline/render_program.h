@@ -93,6 +93,9 @@ int run_sweep(const options& o);
 
 // Report pieces.
 json stats_json(const error_stats& s);
+// "4 / 16 / 64" (error_levels) and a stats' pixels beyond them, "12 / 3 / 0": the report's columns.
+std::string over_levels_text();
+std::string over_counts_text(const error_stats& s);
 json ops_json(const scene::op_counts& c, double pixels);
 std::string fmt(const char* f, double v);
 std::string fmt_psnr(double db);

@@ -20,7 +20,22 @@ json stats_json(const error_stats& s) {
     j["psnr_db"] = std::isfinite(s.psnr_db) ? json(s.psnr_db) : json(nullptr);  // null: identical images
     j["max_abs"] = s.max_abs;
     j["pixels"] = s.pixels;
+    json over = json::object();  // {"4": n, "16": n, "64": n}: pixels beyond each level
+    for (std::size_t k = 0; k < error_levels.size(); ++k) over[fmt("%g", error_levels[k])] = s.pixels_over[k];
+    j["pixels_over"] = over;
     return j;
+}
+
+std::string over_levels_text() {
+    std::string t;
+    for (double l : error_levels) t += (t.empty() ? "" : " / ") + fmt("%g", l);
+    return t;
+}
+
+std::string over_counts_text(const error_stats& s) {
+    std::string t;
+    for (std::size_t n : s.pixels_over) t += (t.empty() ? "" : " / ") + std::to_string(n);
+    return t;
 }
 
 json ops_json(const scene::op_counts& c, double pixels) {
@@ -275,11 +290,11 @@ std::string report_md(const options& o, const render_data& d) {
         md << "\n\n";
     }
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";
-    md << "| pair | what | NMSE | PSNR dB | max |\n|---|---|---|---|---|\n";
+    md << "| pair | what | NMSE | PSNR dB | max | pixels beyond " << over_levels_text() << " |\n|---|---|---|---|---|---|\n";
     for (const auto& pd : pairs) {
         const error_stats& w = whole.at(pd.key);
         md << "| " << pd.key << " | " << pd.what << " | " << fmt("%.3e", w.nmse) << " | " << fmt_psnr(w.psnr_db)
-           << " | " << fmt("%.2f", w.max_abs) << " |\n";
+           << " | " << fmt("%.2f", w.max_abs) << " | " << over_counts_text(w) << " |\n";
     }
     md << "\nThe 8-bit displayed images (each value rounded to a level, as the PNGs): interpolation NMSE "
        << fmt("%.3e", d.interp_8bit.nmse) << " (max " << fmt("%.0f", d.interp_8bit.max_abs) << "), total NMSE "
@@ -367,8 +382,9 @@ void print_summary(const options& o, const render_data& d) {
                 p.jobs.size(), p.pixels, scene::device_name(dev.device), o.mode.c_str(), mat.n);
     for (const auto& pd : pairs) {
         const error_stats& w = whole.at(pd.key);
-        std::printf("  %-13s NMSE %.3e  PSNR %s dB  max %.2f  (%s)\n", pd.key, w.nmse, fmt_psnr(w.psnr_db).c_str(),
-                    w.max_abs, pd.what);
+        std::printf("  %-13s NMSE %.3e  PSNR %s dB  max %.2f  beyond %s: %s px  (%s)\n", pd.key, w.nmse,
+                    fmt_psnr(w.psnr_db).c_str(), w.max_abs, over_levels_text().c_str(), over_counts_text(w).c_str(),
+                    pd.what);
     }
     std::printf("  displayed 8-bit: interpolation NMSE %.3e, total NMSE %.3e\n", d.interp_8bit.nmse, d.total_8bit.nmse);
     std::printf("  long ops/pixel: Phong %.2f, scan-line Phong %.2f, hardware %.2f (geometry %s %.2f, sample stage "

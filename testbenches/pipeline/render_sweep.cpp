@@ -257,7 +257,7 @@ int run_sweep(const options& o) {
     // One CSV row per configuration, from each child's report.json.
     std::ostringstream csv;
     csv << "config,scene,size,n,device,mode,length,m,m_min,m_max,length_tol,degree,degree_tol,eval,set,"
-           "nmse_interp,psnr_interp,max_interp,nmse_phong,max_phong,nmse_brdf,"
+           "nmse_interp,psnr_interp,max_interp,px_over_16_interp,nmse_phong,max_phong,nmse_brdf,"
            "long_per_px,mul_per_px,div_per_px,sqrt_per_px,add_per_px,interp_long_per_px,clocks_per_px,"
            "phong_long_per_px,phong_add_per_px,ratio_long,intervals,mean_len,quadratic_px,cubic_px,exact_px,"
            "scanline_long_per_px,ratio_long_scanline,nmse_interp_8bit,nmse_phong_8bit,light,geometry_side,split,carry\n";
@@ -284,6 +284,7 @@ int run_sweep(const options& o) {
             << num(e["interpolation"]["image"]["nmse"].get<double>()) << ','
             << d(e["interpolation"]["image"]["psnr_db"]) << ','
             << num(e["interpolation"]["image"]["max_abs"].get<double>()) << ','
+            << e["interpolation"]["image"]["pixels_over"]["16"].get<std::size_t>() << ','
             << num(e["total"]["image"]["nmse"].get<double>()) << ',' << num(e["total"]["image"]["max_abs"].get<double>())
             << ',' << num(e["brdf"]["image"]["nmse"].get<double>()) << ','
             << num(hw["total"]["long"].get<double>()) << ',' << num(hw["total"]["mul"].get<double>()) << ','

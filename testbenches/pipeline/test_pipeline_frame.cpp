@@ -140,6 +140,26 @@ scene::shaded_image image2x2(std::vector<scene::rgb> v, std::vector<uint8_t> cov
 }
 }  // namespace
 
+// Hand-worked: the pixels beyond 4, 16 and 64 levels (error_levels), by each pixel's largest channel
+// error: 4 (not beyond 4: strictly), 4.5, 17 (on the second of three channels), 70.
+TEST(PipelineMetrics, PixelsBeyondLevelsHandWorked) {
+    ASSERT_EQ(error_levels, (std::array<double, 3>{4.0, 16.0, 64.0}));
+    const std::vector<scene::rgb> ref{{10, 20, 30}, {0, 0, 0}, {100, 100, 100}, {200, 200, 200}};
+    const std::vector<scene::rgb> a{{14, 20, 30}, {0, 0, 4.5}, {100, 83, 110}, {130, 200, 200}};
+    const error_stats all = compare(image2x2(a, {1, 1, 1, 1}), image2x2(ref, {1, 1, 1, 1}));
+    EXPECT_EQ(all.pixels_over, (std::array<std::size_t, 3>{3, 2, 1}));
+    EXPECT_DOUBLE_EQ(all.max_abs, 70.0);
+    // The reference's uncovered pixel (the 70) counts nowhere.
+    const error_stats three = compare(image2x2(a, {1, 1, 1, 1}), image2x2(ref, {1, 1, 1, 0}));
+    EXPECT_EQ(three.pixels_over, (std::array<std::size_t, 3>{2, 1, 0}));
+    // Zones 1, 2, 1, 1: zone 1 is the 4, the 17 and the 70; zone 2 the 4.5.
+    const std::vector<uint8_t> zones{1, 2, 1, 1};
+    EXPECT_EQ(compare(image2x2(a, {1, 1, 1, 1}), image2x2(ref, {1, 1, 1, 1}), &zones, 1).pixels_over,
+              (std::array<std::size_t, 3>{2, 2, 1}));
+    EXPECT_EQ(compare(image2x2(a, {1, 1, 1, 1}), image2x2(ref, {1, 1, 1, 1}), &zones, 2).pixels_over,
+              (std::array<std::size_t, 3>{1, 0, 0}));
+}
+
 // Hand-worked: over the reference's three covered pixels, differences 1, 2, -3 (one per pixel):
 // sum d^2 = 14, sum ref^2 = 100 + 400 + 900 + 3 x 10000 = 31400, MSE = 14 / 9. The uncovered pixel's
 // difference (50) is ignored.
