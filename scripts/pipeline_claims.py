@@ -67,8 +67,9 @@ def main():
         lines += ["", f"## {size}x{size}, device {dev} (scenes {', '.join(scenes)}; n {', '.join(map(str, ns))}; "
                   f"lights {', '.join(lights)})", "",
                   "| policy | hw | cases | NMSE interp worst / median | NMSE total worst / median | "
-                  "÷ Phong worst / median | ÷ scan-line Phong worst / median |",
-                  "|---|---|---|---|---|---|---|"]
+                  "÷ Phong worst / median | ÷ scan-line Phong worst / median | largest error interp worst / median "
+                  "(pixels > 16 levels, worst) |",
+                  "|---|---|---|---|---|---|---|---|"]
         for key in sorted(k for k in groups if k[:2] == (size, dev)):
             g = groups[key]
 
@@ -76,8 +77,10 @@ def main():
                 v = [float(r[name]) for r in g]
                 return f"{worst(v):.2e} / {statistics.median(v):.2e}" if "nmse" in name else \
                     f"{worst(v):.2f} / {statistics.median(v):.2f}"
+            over = max(int(r["px_over_16_interp"]) for r in g)
             lines.append(f"| {key[2]} | {key[3]} | {len(g)} | {col('nmse_interp', max)} | {col('nmse_phong', max)} | "
-                         f"{col('ratio_long', min)} | {col('ratio_long_scanline', min)} |")
+                         f"{col('ratio_long', min)} | {col('ratio_long_scanline', min)} | "
+                         f"{col('max_interp', max)} ({over}) |")
     text = "\n".join(lines) + "\n"
     with open(out, "w") as f:
         f.write(text)
