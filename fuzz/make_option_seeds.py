@@ -39,7 +39,7 @@ SEEDS = {
     "head_study": {"short": "--size 64 --n 2,20 --scan-max 30 --out .", "usage": "--size 64 --n 1001 --out ."},
     "render_pipeline": {"head48": "--scene head --size 48 --sim --out out/p",
                         "sweep": "--sweep --grid claims --scenes sphere torus --lights 0,30 --ns 20 --sizes 24 --device squared --jobs 2 --shard 1/2",
-                        "adaptive": "--length adaptive --m-min 2 --m-max 5 --length-tol 0.5 --degree adaptive --no-exact-fallback --above-slack 2 --perfect-decisions",
+                        "adaptive": "--length adaptive --m-min 2 --m-max 5 --length-tol 0.5 --degree adaptive --no-exact-fallback --above-slack 2 --perfect-decisions --lit-guard",
                         "geometry": "--length geometry --lobe-tol 2 --eval fd --set case2 --div3 exact --unit scratch --abstraction fast",
                         "optimal": "--length optimal --optimal-nmse 1e-4 --optimal-reference total --optimal-greedy --optimal-from-above 1 --walk-edges --size 32",
                         "n": "--n ten", "available": "--sim-available"},

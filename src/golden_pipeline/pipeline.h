@@ -104,6 +104,15 @@ struct plan_config {
     // jumped over by a long interval whose check misses it between its samples. Negative: no limit
     // (the default).
     int above_slack = -1;
+    // Adaptive and geometry length (ours): an interval above 2^m_min whose sample and check points are
+    // all unlit (N.L <= 0: only the ambient term) is rejected if one of its pixels is lit, so a lit
+    // patch between unlit points is not jumped over. The geometry side knows it without shading a
+    // pixel: inside a triangle N is a positive combination of its vertex normals with the rasteriser's
+    // plane values as weights, so N.L > 0 exactly where the plane sum_i (N_i.L) g_i is > 0, which is
+    // linear along the line (tested at each run's two ends; a triangle whose vertex normals all face
+    // away needs no test). Exact for a directional light; with a point light the vertices' own L stand
+    // in. Its arithmetic is charged to the decision (plan.cpp, lit_somewhere).
+    bool lit_guard = false;
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
     // Geometry length policy: 0 < lobe_tol; the spread of N.H an interval may span in the highlight,

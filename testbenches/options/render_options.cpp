@@ -60,6 +60,9 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
                    "adaptive and geometry length: an interval at most K levels longer than the shortest the line "
                    "above has over its pixels (negative: no limit; default -1)")
         ->check(CLI::Range(-1, static_cast<int>(interp::m_max)));
+    app.add_flag("--lit-guard,!--no-lit-guard", o.pc.lit_guard,
+                 "adaptive and geometry length: reject an interval whose samples and check point are all unlit "
+                 "but which covers a triangle with a vertex normal facing the light (default off)");
     app.add_flag("--carry-samples,!--no-carry-samples", o.pc.carry_samples,
                  "the sample stage takes a job's first colour from its last-sample registers where the codes "
                  "are the last sample's (default off)");

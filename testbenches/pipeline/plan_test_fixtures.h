@@ -27,9 +27,8 @@ struct scene_fixture {
     scene::world w;
     scene::rasterised r;
     frame_constants k;
-    scene_fixture(const std::string& name, unsigned size)
-        : w(scene::builtin_scene(name, SHADING_SOURCE_DIR, size, size)), r(scene::rasterise(w)),
-          k(frame_constants_of(w)) {}
+    scene_fixture(const std::string& name, unsigned size) : scene_fixture(scene::builtin_scene(name, SHADING_SOURCE_DIR, size, size)) {}
+    explicit scene_fixture(scene::world world) : w(std::move(world)), r(scene::rasterise(w)), k(frame_constants_of(w)) {}
     // rasterised points at the world: the fixture is neither copied nor moved.
     scene_fixture(const scene_fixture&) = delete;
 };

@@ -153,6 +153,7 @@ json report_json(const options& o, const render_data& d) {
                      {"split_at_check", cfg.split_at_check},
                      {"carry_samples", cfg.carry_samples},
                      {"above_slack", cfg.above_slack},
+                     {"lit_guard", cfg.lit_guard},
                      {"perfect_decisions", cfg.perfect_decisions},
                      {"surface_breaks", cfg.surface_breaks},
                      {"degree", degree_policy_name(cfg.degree)},
@@ -251,6 +252,7 @@ std::string report_md(const options& o, const render_data& d) {
         md << " (m " << cfg.m_min << ".." << cfg.m_max << ", tolerance " << cfg.length_tol << " levels, exact fallback "
            << (cfg.exact_fallback ? "on" : "off") << (cfg.split_at_check ? ", split at the check point" : "")
            << (cfg.above_slack >= 0 ? ", at most " + std::to_string(cfg.above_slack) + " levels over the line above" : "")
+           << (cfg.lit_guard ? ", lit guard (no all-unlit interval over a triangle that may be lit)" : "")
            << (cfg.perfect_decisions ? ", perfect decisions (a yardstick: true errors, checks still paid)" : "") << ")";
     md << ", degree " << degree_policy_name(cfg.degree);
     if (cfg.degree == degree_policy::adaptive) md << " (tolerance " << cfg.degree_tol << ")";

@@ -195,6 +195,7 @@ int run_sweep(const options& o) {
                                       "--depth-step", num(o.pc.depth_step), "--unit", o.unit,
                                       o.pc.walk_edges ? "--walk-edges" : "--no-walk-edges",
                                       "--above-slack", std::to_string(o.pc.above_slack),
+                                      o.pc.lit_guard ? "--lit-guard" : "--no-lit-guard",
                                       o.pc.perfect_decisions ? "--perfect-decisions" : "--no-perfect-decisions",
                                       o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
                                       sp.split || o.pc.split_at_check ? "--split-at-check" : "--no-split-at-check",

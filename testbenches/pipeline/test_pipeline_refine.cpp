@@ -163,6 +163,64 @@ TEST(PipelinePlan, AboveSlackLimitsByTheLineAbove) {
     }
 }
 
+// ---- The lit guard ----
+
+// The head at 256 lit from the side (azimuth -40, elevation 25, n = 5): much of it unlit, with lit
+// patches of a few pixels among the folds of the ear and the eye.
+const scene_fixture& head_side_lit() {
+    static const scene_fixture f([] {
+        scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 256, 256);
+        const double a = -40.0 * M_PI / 180.0, e = 25.0 * M_PI / 180.0;
+        w.lights.at(0).vector = {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+        for (auto& o : w.objects) o.mat.n = 5;
+        return w;
+    }());
+    return f;
+}
+
+// Jobs above 2^m_min whose samples and check point are all unlit (recomputed from the rasteriser's
+// geometry) but which cover a lit pixel (N.L > 0 there, from the same geometry).
+std::size_t lit_pixels_jumped(const scene_fixture& f, const plan& p, const plan_config& c) {
+    std::size_t jumped = 0;
+    auto lit = [&](unsigned x, unsigned y) { return sample_of(scene::geometry_at(f.r, x, y, nullptr)).cos_nl > 0; };
+    for (const interval_job& j : p.jobs) {
+        if (j.m <= c.m_min) continue;
+        std::vector<unsigned> pts = job_points(j, c.set);
+        pts.push_back(c.set == interp::sample_set::case1 ? 6 : 2);  // the length check
+        if (std::any_of(pts.begin(), pts.end(), [&](unsigned e) { return lit(at(j, e), j.y); })) continue;
+        for (unsigned x = j.x0; x < j.x0 + j.len; ++x)
+            if (lit(x, j.y)) {
+                ++jumped;
+                break;
+            }
+    }
+    return jumped;
+}
+
+// With the lit guard no interval above 2^m_min whose points are all unlit covers a lit pixel, under
+// either checking length policy and in either sample set; without it, on this scene, some do (the
+// guard is what keeps them out). The guard's arithmetic is the decision's: it costs more than without.
+TEST(PipelinePlan, LitGuardJumpsNoLitPixel) {
+    const auto& f = head_side_lit();
+    for (const auto length : {length_policy::adaptive, length_policy::geometry})
+        for (const auto set : {interp::sample_set::case1, interp::sample_set::case2}) {
+            SCOPED_TRACE(std::string(length_policy_name(length)) + (set == interp::sample_set::case1 ? " case1" : " case2"));
+            plan_config c;
+            c.length = length;
+            c.set = set;
+            c.m_min = 2;
+            c.m_max = 5;
+            c.length_tol = 1.5;
+            const plan free = make_plan(f.r, f.k, patent, c);
+            c.lit_guard = true;
+            const plan guarded = make_plan(f.r, f.k, patent, c);
+            expect_valid_plan(f.r, guarded, c);
+            EXPECT_GT(lit_pixels_jumped(f, free, c), 0u) << "no lit patch jumped without the guard";
+            EXPECT_EQ(lit_pixels_jumped(f, guarded, c), 0u);
+            EXPECT_GT(guarded.decision.mul, free.decision.mul);
+        }
+}
+
 // ---- Perfect decisions (a yardstick) ----
 
 // With perfect_decisions every decision is right: what the policy sends for each accepted interval (a
