@@ -36,6 +36,12 @@ if(TARGET shading_pipeline)
                    ${rp_out}/head48)
   set_tests_properties(pipeline.render.head48.report PROPERTIES DEPENDS pipeline.render.head48)
   list(APPEND rp_tests pipeline.render.head48 pipeline.render.head48.report)
+  # The lit guard from the command line, on a head lit from the side: the SystemC frame equal to the
+  # golden one (exit 0) and the option in the report's configuration.
+  add_test(NAME pipeline.render.lit_guard
+           COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 96 --light=-40,25 --n 5 --length adaptive --degree cubic --split-at-check --carry-samples --lit-guard --eval fd --no-images $2 --out \"$1\" && grep -q '\"lit_guard\": true' \"$1/report.json\""
+                   $<TARGET_FILE:render_pipeline> ${rp_out}/lit_guard ${rp_sim})
+  list(APPEND rp_tests pipeline.render.lit_guard)
   if(TARGET shading_pipeline_sim)
     # The bit-exact check can fail: one golden pixel corrupted (hidden --inject-mismatch) must give
     # exit 1 and no report.
