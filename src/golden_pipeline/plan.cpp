@@ -10,9 +10,8 @@
 #include <string>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 #include "golden_pipeline/line_geometry.h"
+#include "golden_pipeline/lit_planes.h"
 #include "golden_pipeline/pipeline.h"
 
 namespace shading::pipeline {
@@ -112,7 +111,7 @@ class planner {
 public:
     planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
             const plan_config& c, plan& p)
-        : r_(r), k_(k), dev_(dev), c_(c), p_(p), stepper_(r, c.walk_edges), cubic_(cubic_points(c.set)),
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), stepper_(r, c.walk_edges), lit_(r), cubic_(cubic_points(c.set)),
           w_deg_(lagrange(quad_points, degree_check(c.set))),
           w_len_cubic_(lagrange(cubic_, length_check(c.set))),
           w_len_quad_(lagrange(quad_points, length_check(c.set))),
@@ -326,8 +325,7 @@ private:
         return true;
     }
     // The lit guard (plan_config::lit_guard): false if every sample and check point of `job` is unlit
-    // but one of its pixels is lit. Only points the policy has computed; then per run of the
-    // interval's pixels on one triangle, the triangle's lit plane (lit_plane) at the run's two ends.
+    // but one of its pixels is lit (lit_planes.h). Only points the policy has computed.
     bool lit_guard_passes(line_geometry& lg, const interval_job& job) {
         if (!c_.lit_guard) return true;
         const unsigned n = 1u << job.m;
@@ -338,63 +336,8 @@ private:
             ++p_.decision.cmp;
             if (lg.sample(job.x0 + e * n / 8).cos_nl > 0) return true;  // a lit point: the checks see the light
         }
-        for (unsigned x = job.x0; x < job.x0 + n;) {
-            const int32_t t = r_.tri[r_.index(x, job.y)];
-            unsigned last = x;  // the run on triangle t: x..last
-            while (last + 1 < job.x0 + n && r_.tri[r_.index(last + 1, job.y)] == t) ++last;
-            p_.decision.cmp += last - x + 1;  // the rasteriser's triangle index compared along the run
-            if (lit_somewhere(t, x, last, job.y)) return false;
-            x = last + 1;
-        }
-        return true;
+        return !lit_.any_lit(job.x0, job.x0 + n - 1, job.y, p_.decision);
     }
-    // Triangle t's lit plane s = sum_i (N_i.L) g_i (g_i the rasteriser's planes of lambda_i / w_i):
-    // inside the triangle N = sum g_i N_i / |sum g_i N_i| with every g_i > 0, so a pixel is lit
-    // (N.L > 0) exactly where s > 0, and s is linear along a line: a run is lit somewhere iff s > 0 at
-    // one of its ends. A triangle whose vertex normals all face away (N_i.L <= 0) is lit nowhere and
-    // needs no plane. With a point light the vertices' own L stand in (an approximation). Per triangle
-    // consulted: the three vertex dot products (9 mul, 6 add, 3 cmp), and if one faces the light the
-    // plane (9 mul, 6 add); per run end a x + b y + c (2 mul, 2 add) and its sign.
-    bool lit_somewhere(int32_t t, unsigned xa, unsigned xb, unsigned y) {
-        if (lit_.empty()) lit_.resize(r_.setups.size());
-        lit_state& st = lit_[std::size_t(t)];
-        if (!st.known) {
-            const scene::triangle_setup& ts = r_.setups[std::size_t(t)];
-            const scene::world& w = *r_.src;
-            const scene::mesh& mesh = w.objects[ts.object].geometry;
-            const scene::light& l = w.lights.at(0);
-            std::array<double, 3> nl{};
-            for (int i = 0; i < 3; ++i) {
-                const uint32_t vi = mesh.triangles[ts.triangle][std::size_t(i)];
-                const glm::dvec3 to_light = l.type == scene::light::kind::directional ? l.vector
-                                                                                     : l.vector - mesh.positions[vi];
-                nl[std::size_t(i)] = glm::dot(mesh.normals[vi], to_light);  // its sign: no normalising
-            }
-            p_.decision.mul += 9;
-            p_.decision.add += 6;
-            p_.decision.cmp += 3;
-            st.known = true;
-            st.may_be_lit = nl[0] > 0.0 || nl[1] > 0.0 || nl[2] > 0.0;
-            if (st.may_be_lit) {
-                st.plane = nl[0] * ts.plane[0] + nl[1] * ts.plane[1] + nl[2] * ts.plane[2];
-                p_.decision.mul += 9;
-                p_.decision.add += 6;
-            }
-        }
-        if (!st.may_be_lit) return false;
-        auto lit_at = [&](unsigned x) {
-            p_.decision.mul += 2;
-            p_.decision.add += 2;
-            ++p_.decision.cmp;
-            return st.plane.x * (x + 0.5) + st.plane.y * (y + 0.5) + st.plane.z > 0.0;
-        };
-        return lit_at(xa) || (xb != xa && lit_at(xb));
-    }
-    struct lit_state {
-        bool known = false, may_be_lit = false;
-        glm::dvec3 plane{0.0};  // a, b, c of the lit plane s = a x + b y + c (pixel centres)
-    };
-    std::vector<lit_state> lit_;  // per triangle setup, filled as the guard consults them
 
     static constexpr uint8_t no_level = 0xFF;
     std::vector<uint8_t> above_;  // the line above's level at each pixel (no_level: no interval there)
@@ -575,6 +518,7 @@ private:
     const plan_config& c_;
     plan& p_;
     scene::span_stepper stepper_;
+    lit_planes lit_;  // the lit guard's planes, per triangle as consulted
     std::array<unsigned, 4> cubic_;
     std::array<double, 3> w_deg_;
     std::array<double, 4> w_len_cubic_;
