@@ -111,7 +111,7 @@ struct plan_config {
     // plane values as weights, so N.L > 0 exactly where the plane sum_i (N_i.L) g_i is > 0, which is
     // linear along the line (tested at each run's two ends; a triangle whose vertex normals all face
     // away needs no test). Exact for a directional light; with a point light the vertices' own L stand
-    // in. Its arithmetic is charged to the decision (plan.cpp, lit_somewhere).
+    // in. Its arithmetic is charged to the decision (lit_planes.h).
     bool lit_guard = false;
     degree_policy degree = degree_policy::cubic;
     double degree_tol = 0.5;               // adaptive degree: largest accepted quadratic error estimate
