@@ -165,12 +165,13 @@ TEST(PipelinePlan, AboveSlackLimitsByTheLineAbove) {
 
 // ---- The lit guard ----
 
+namespace {
 // The head at 256 lit from the side (azimuth -40, elevation 25, n = 5): much of it unlit, with lit
 // patches of a few pixels among the folds of the ear and the eye.
 const scene_fixture& head_side_lit() {
     static const scene_fixture f([] {
         scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 256, 256);
-        const double a = -40.0 * M_PI / 180.0, e = 25.0 * M_PI / 180.0;
+        const double deg = std::acos(-1.0) / 180.0, a = -40.0 * deg, e = 25.0 * deg;
         w.lights.at(0).vector = {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
         for (auto& o : w.objects) o.mat.n = 5;
         return w;
@@ -196,6 +197,7 @@ std::size_t lit_pixels_jumped(const scene_fixture& f, const plan& p, const plan_
     }
     return jumped;
 }
+}  // namespace
 
 // With the lit guard no interval above 2^m_min whose points are all unlit covers a lit pixel, under
 // either checking length policy and in either sample set; without it, on this scene, some do (the
