@@ -7,7 +7,7 @@
 # model only, then each policy's worst case and median (scripts/pipeline_claims.py).
 #   scripts/pipeline_claims.sh [OUT] [render_pipeline options...]
 #   e.g. scripts/pipeline_claims.sh out/claims --device squared --sizes 512
-# The whole grid is 5 760 configurations (37 min on 2 quiet cores, 2026-12-03). To spread
+# The whole grid is 5 760 configurations (18 min on 2 quiet cores, 2026-12-03). To spread
 # it over machines: add --shard I/N to each of N runs (same options), or --emit-jobs for one command
 # line per configuration (GNU parallel, a Slurm array), then pipeline_claims.py OUT.md their CSVs.
 set -euo pipefail
