@@ -227,6 +227,18 @@ std::optional<int> components_study(int argc, char** argv) {
     return std::nullopt;
 }
 
+std::optional<int> edge_study(int argc, char** argv) {
+    edge_study_options o;
+    if (auto rc = parse_edge_study(argc, argv, o)) return rc;
+    FUZZ_CHECK(in({"head", "sphere", "torus"}, o.scene), "--scene '%s'", o.scene.c_str());
+    FUZZ_CHECK(device(o.device), "--device '%s'", o.device.c_str());
+    FUZZ_CHECK(within(o.size, 16u, 4096u), "--size %u", o.size);
+    FUZZ_CHECK(!o.spacings.empty(), "no --spacing");
+    for (unsigned h : o.spacings)
+        FUZZ_CHECK(h >= 1 && h <= 64 && (h & (h - 1)) == 0, "--spacing %u", h);
+    return std::nullopt;
+}
+
 std::optional<int> render_pipeline(int argc, char** argv) {
 #if SHADING_FUZZ_RENDER_OPTIONS
     namespace rp = shading::render_program;
@@ -277,6 +289,7 @@ const program programs[] = {
     {"accuracy_study", accuracy_study},     {"generator_search", generator_search},
     {"head_study", head_study},             {"render_pipeline", render_pipeline},
     {"bench_line_tlm", bench_line_tlm},     {"components_study", components_study},
+    {"edge_study", edge_study},
 };
 
 }  // namespace

@@ -10,7 +10,7 @@ OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus", "fuzz_o
 PROGRAMS = ["interp_coef_tb", "ua60553_tb", "interp_fd_tb", "ua22802_tb", "interp_horner_tb", "squared_tb",
             "interp_line_tb", "interp_study", "soak_pipeline", "render_reference", "bench_specular_tlm",
             "accuracy_study", "generator_search", "head_study", "render_pipeline", "bench_line_tlm",
-            "components_study"]
+            "components_study", "edge_study"]
 BENCH = {  # what every bench's ctest entries pass (cmake/shading.cmake, shading_add_bench)
     "default": "--no-vcd",
     "inject": "--no-vcd --inject-mismatch 3",
@@ -47,6 +47,8 @@ SEEDS = {
                        "usage": "--lt-pixels 12x"},
     "components_study": {"short": "--size 48 --tol-sum 1,2 --tol-diffuse 1 --tol-specular 1,2 --m-max-specular 4",
                          "scene": "--scene torus --device patent --nmse 1e-4", "usage": "--m-max-diffuse 7"},
+    "edge_study": {"short": "--size 48 --spacing 2,4", "scene": "--scene sphere --device ua22802 --spacing 64",
+                   "usage": "--spacing 3"},
 }
 
 

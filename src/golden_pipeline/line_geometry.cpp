@@ -21,7 +21,7 @@ bool surface_break(const scene::rasterised& r, std::size_t a, std::size_t b, sce
     const auto& vb = m.triangles[sb.triangle];
     for (uint32_t i : va)
         for (uint32_t j : vb) {
-            ++decision->cmp;
+            if (decision) ++decision->cmp;
             if (i == j) return false;
         }
     return true;

@@ -19,12 +19,6 @@ inline std::array<unsigned, 4> cubic_points(interp::sample_set set) {
 }
 inline constexpr std::array<unsigned, 3> quad_points{0, 4, 8};
 
-// Pixels xa..xb (inclusive, as {xa, xb}) of line y with no discontinuity inside, left to right: the
-// spans cut at every discontinuity (raster.h: coverage edges, object changes, depth steps of
-// c.depth_step) and, with c.surface_breaks, at folds; the fold test's compares charged to `decision`.
-std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, unsigned y, const plan_config& c,
-                                                   scene::op_counts* decision);
-
 // One raster line's geometry, computed once per pixel and counted once.
 class line_geometry {
     using cnum = scene::cnum;

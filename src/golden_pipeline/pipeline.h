@@ -201,6 +201,13 @@ struct plan {
     };
     optimum_certificate optimum;
 };
+// Pixels xa..xb (inclusive, as {xa, xb}) of line y with no discontinuity inside, left to right: the
+// spans cut at every discontinuity (raster.h: coverage edges, object changes, depth steps of
+// c.depth_step) and, with c.surface_breaks, at folds; the fold test's compares charged to `decision`
+// (null: uncounted). Every length policy plans segment by segment.
+std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, unsigned y, const plan_config& c,
+                                                   scene::op_counts* decision);
+
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c);
 // The optimum over every plan the pipeline can express for these segments (intervals of 2^m_min ..

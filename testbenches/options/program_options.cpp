@@ -3,6 +3,7 @@
 // App. One source for all of them: each source that includes CLI11 pays its inline classes and
 // global validators again (render_options.cpp is the only other one).
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -275,6 +276,23 @@ std::optional<int> parse_components_study(int argc, char** argv, components_stud
     app.add_option("--m-max-diffuse", o.m_max_diffuse, "ambient + diffuse longest interval 2^m")->check(m);
     app.add_option("--m-max-specular", o.m_max_specular, "specular longest interval 2^m")->check(m);
     SHADING_CLI_PARSE(app, argc, argv);
+    return std::nullopt;
+}
+
+std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o) {
+    CLI::App app{"where a polynomial through a raster line's samples misses: inside one triangle or across an edge"};
+    app.add_option("--scene", o.scene, "built-in scene")->check(CLI::IsMember({"head", "sphere", "torus"}));
+    app.add_option("--size", o.size, "image width and height")->check(CLI::Range(16u, 4096u));
+    app.add_option("--data-dir", o.data_dir, "repository root holding data/head/");
+    app.add_option("--device", o.device, "specular device")->check(CLI::IsMember(device_names()));
+    app.add_option("--spacing", o.spacings, "sample spacings in pixels (powers of two 1..64, comma-separated)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u, 32u, 64u}));
+    SHADING_CLI_PARSE(app, argc, argv);
+    if (o.spacings.empty()) {
+        std::fprintf(stderr, "edge_study: --spacing needs at least one value\n");
+        return 2;
+    }
     return std::nullopt;
 }
 

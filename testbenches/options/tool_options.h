@@ -85,6 +85,14 @@ struct components_study_options {
     unsigned m_max_sum = 5, m_max_diffuse = 5, m_max_specular = 6;
 };
 
+// edge_study: the built-in scene (head, sphere, torus), the sample spacings (pixels, powers of two
+// 1..64, at least one).
+struct edge_study_options {
+    std::string scene = "head", data_dir = default_data_dir(), device = "squared";
+    unsigned size = 512;  // 16..4096
+    std::vector<unsigned> spacings{2, 4, 8, 16};
+};
+
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);
 std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
 std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
@@ -94,5 +102,6 @@ std::optional<int> parse_accuracy_study(int argc, char** argv, accuracy_study_op
 std::optional<int> parse_generator_search(int argc, char** argv, generator_search_options& o);
 std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o);
 std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o);
+std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o);
 
 }  // namespace shading::tb

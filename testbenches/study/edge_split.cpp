@@ -1,0 +1,110 @@
+// Interpolation error inside a triangle and across its edges (edge_split.h).
+#include "edge_split.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace shading::study {
+
+const char* reconstruction_name(reconstruction k) {
+    switch (k) {
+        case reconstruction::linear: return "linear";
+        case reconstruction::quadratic: return "quadratic";
+        case reconstruction::cubic: return "cubic";
+    }
+    return "?";
+}
+
+namespace {
+
+// The polynomial through samples s[first .. first + count - 1] (at nodes first .. in units of h),
+// evaluated at u (same units).
+rgb_levels lagrange(const std::vector<rgb_levels>& s, std::size_t first, std::size_t count, double u) {
+    rgb_levels out{0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i < count; ++i) {
+        double w = 1.0;
+        for (std::size_t j = 0; j < count; ++j)
+            if (j != i) w *= (u - double(first + j)) / (double(first + i) - double(first + j));
+        for (int ch = 0; ch < 3; ++ch) out[ch] += w * s[first + i][ch];
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<rgb_levels> reconstruct(const std::vector<rgb_levels>& v, unsigned h, reconstruction k,
+                                    std::size_t* points) {
+    if (h == 0) throw std::invalid_argument("edge_split: the sample spacing must be at least 1 pixel");
+    std::vector<rgb_levels> out = v;  // exact unless rebuilt below
+    const std::size_t len = v.size();
+    if (len == 0) {
+        if (points) *points = 0;
+        return out;
+    }
+    const std::size_t gaps = (len - 1) / h;  // samples at 0, h, .., gaps h
+    std::vector<rgb_levels> s;
+    for (std::size_t i = 0; i <= gaps; ++i) s.push_back(v[i * h]);
+    // Gap g (pixels g h .. g h + h - 1) from samples first .. first + count - 1.
+    auto fill = [&](std::size_t g, std::size_t first, std::size_t count) {
+        for (unsigned p = 0; p < h; ++p) out[g * h + p] = lagrange(s, first, count, double(g) + double(p) / h);
+    };
+    for (std::size_t g = 0; g < gaps; ++g) {
+        switch (k) {
+            case reconstruction::linear: fill(g, g, 2); break;
+            case reconstruction::quadratic: {
+                const std::size_t pair = g - g % 2;  // the pair of gaps g belongs to
+                if (pair + 2 <= gaps)
+                    fill(g, pair, 3);
+                else if (g >= 1)
+                    fill(g, g - 1, 3);  // a last single gap: the sample before it as the third
+                else
+                    fill(g, g, 2);
+                break;
+            }
+            case reconstruction::cubic: {
+                const std::size_t count = std::min<std::size_t>(4, gaps + 1);
+                const std::size_t first = std::min(g > 0 ? g - 1 : 0, gaps + 1 - count);
+                fill(g, first, count);
+                break;
+            }
+        }
+    }
+    if (points) *points = (gaps + 1) + (len - 1 - gaps * h);
+    return out;
+}
+
+edge_split& edge_split::operator+=(const edge_split& o) {
+    pixels_within += o.pixels_within;
+    pixels_crossing += o.pixels_crossing;
+    pixels_exact += o.pixels_exact;
+    points += o.points;
+    se_within += o.se_within;
+    se_crossing += o.se_crossing;
+    ref2 += o.ref2;
+    return *this;
+}
+
+edge_split split_errors(const std::vector<rgb_levels>& v, const std::vector<int32_t>& tri, unsigned h,
+                        reconstruction k) {
+    if (tri.size() != v.size()) throw std::invalid_argument("edge_split: one triangle per pixel");
+    edge_split out;
+    const std::vector<rgb_levels> r = reconstruct(v, h, k, &out.points);
+    const std::size_t len = v.size();
+    const std::size_t gaps = len > 0 ? (len - 1) / h : 0;
+    for (std::size_t i = 0; i < len; ++i)
+        for (int ch = 0; ch < 3; ++ch) out.ref2 += v[i][ch] * v[i][ch];
+    for (std::size_t g = 0; g < gaps; ++g) {
+        const auto first = tri.begin() + long(g * h);
+        const bool within = std::all_of(first, first + long(h) + 1, [&](int32_t t) { return t == *first; });
+        for (std::size_t i = g * h; i < g * h + h; ++i) {
+            double e = 0.0;
+            for (int ch = 0; ch < 3; ++ch) e += (r[i][ch] - v[i][ch]) * (r[i][ch] - v[i][ch]);
+            (within ? out.se_within : out.se_crossing) += e;
+            ++(within ? out.pixels_within : out.pixels_crossing);
+        }
+    }
+    out.pixels_exact = len - gaps * h;
+    return out;
+}
+
+}  // namespace shading::study

@@ -1,0 +1,51 @@
+// Where a polynomial through a raster line's samples misses: inside one triangle, or across a
+// triangle's edge. Within a triangle the Phong normal (its vertex normals interpolated, then
+// normalised) is a smooth function of x along the line, so the colour is too; across an edge the
+// normal is continuous but its slope jumps, and so does the colour's. A polynomial over a gap that
+// spans an edge meets that kink whatever its degree.
+//
+// Samples every h pixels along a segment (pipeline::line_segments: no discontinuity inside), each
+// gap between two samples reconstructed by one of three real-valued rules through the same samples,
+// so every rule costs the same geometry points:
+//  - linear: the two samples of the gap;
+//  - quadratic: the samples in pairs of gaps, t = 0, 1/2, 1 (the interpolation paper's quadratic
+//    with the shared sample carried: 2 new points per 2h pixels); a last single gap takes the
+//    quadratic through the sample before it (the linear one if there is none);
+//  - cubic: the four samples nearest the gap (one either side where the segment has them).
+// Pixels after the last sample are exact (each its own point). Real-valued: the hardware's rounding
+// (below 0.01 levels) is not modelled; it changes none of the shares this measures.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace shading::study {
+
+enum class reconstruction { linear, quadratic, cubic };
+const char* reconstruction_name(reconstruction k);
+
+using rgb_levels = std::array<double, 3>;
+
+// One segment's pixels rebuilt from samples every h pixels (h >= 1), and the points it used (the
+// samples and the exact pixels).
+std::vector<rgb_levels> reconstruct(const std::vector<rgb_levels>& v, unsigned h, reconstruction k,
+                                    std::size_t* points);
+
+// The squared error of a reconstruction, split by where it lies. The pixels of gap g (g h .. g h +
+// h - 1) are "within" when they and the gap's closing sample (g h + h) lie on one triangle, else
+// "crossing"; the last sample and the pixels after it are exact (no error, in neither part).
+struct edge_split {
+    std::size_t pixels_within = 0, pixels_crossing = 0, pixels_exact = 0, points = 0;
+    double se_within = 0.0, se_crossing = 0.0;  // squared error, 8-bit levels squared, three channels
+    double ref2 = 0.0;                          // the reference's sum of squares (the NMSE's denominator)
+    edge_split& operator+=(const edge_split& o);
+    std::size_t interpolated() const { return pixels_within + pixels_crossing; }
+    std::size_t pixels() const { return interpolated() + pixels_exact; }
+};
+// v: the segment's reference colours (levels), tri: its pixels' triangles (the same length).
+edge_split split_errors(const std::vector<rgb_levels>& v, const std::vector<int32_t>& tri, unsigned h,
+                        reconstruction k);
+
+}  // namespace shading::study

@@ -1,0 +1,107 @@
+// The edge study's pieces (edge_split.h) against hand-worked segments: which rule reproduces which
+// polynomial, the quadratic's error on a cubic worked out by hand, the points counted, the chunks
+// classified by their triangles.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "edge_split.h"
+
+namespace {
+
+using namespace shading::study;
+
+std::vector<rgb_levels> grey(const std::vector<double>& v) {
+    std::vector<rgb_levels> out;
+    for (double x : v) out.push_back({x, 2.0 * x, 0.0});
+    return out;
+}
+std::vector<double> of(std::size_t len, double (*f)(double)) {
+    std::vector<double> v;
+    for (std::size_t i = 0; i < len; ++i) v.push_back(f(double(i)));
+    return v;
+}
+double squared_error(const std::vector<rgb_levels>& a, const std::vector<rgb_levels>& b) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) e += (a[i][ch] - b[i][ch]) * (a[i][ch] - b[i][ch]);
+    return e;
+}
+
+// (i - 3)^2 over 9 pixels, h = 2: samples at 0, 2, 4, 6, 8 (5 points, no tail). The quadratic pairs
+// and the cubic reproduce it; the linear rule misses each odd pixel by 1 (the parabola's midpoint
+// gap: ((a)^2 + (a + 2)^2) / 2 - (a + 1)^2 = 1): 4 pixels x (1 + 2^2) over the two lit channels.
+TEST(EdgeSplit, ParabolaByHand) {
+    const auto v = grey(of(9, [](double x) { return (x - 3.0) * (x - 3.0); }));
+    std::size_t pts = 0;
+    EXPECT_NEAR(squared_error(reconstruct(v, 2, reconstruction::quadratic, &pts), v), 0.0, 1e-18);
+    EXPECT_EQ(pts, 5u);
+    EXPECT_NEAR(squared_error(reconstruct(v, 2, reconstruction::cubic, &pts), v), 0.0, 1e-18);
+    EXPECT_NEAR(squared_error(reconstruct(v, 2, reconstruction::linear, &pts), v), 4.0 * (1.0 + 4.0), 1e-12);
+}
+
+// x^3 over 13 pixels, h = 4: samples at 0, 4, 8, 12. The cubic through all four reproduces it. The
+// quadratic through 0, 4, 8 misses by x (x - 4)(x - 8) (x^3's third derivative over 3!), the last
+// single gap's (through 4, 8, 12) by (x - 4)(x - 8)(x - 12): at 1..3 and 5..7: 21, 24, 15, 15, 24,
+// 21; at 9..11: 15, 24, 21. Sum of squares 3 726, times (1 + 2^2) for the two lit channels.
+TEST(EdgeSplit, CubicByHand) {
+    const auto v = grey(of(13, [](double x) { return x * x * x; }));
+    std::size_t pts = 0;
+    EXPECT_NEAR(squared_error(reconstruct(v, 4, reconstruction::cubic, &pts), v), 0.0, 1e-12);
+    EXPECT_EQ(pts, 4u);
+    const auto q = reconstruct(v, 4, reconstruction::quadratic, &pts);
+    EXPECT_NEAR(q[1][0], 1.0 - 21.0, 1e-9);   // x(x-4)(x-8) at 1 is 21: the quadratic lies below
+    EXPECT_NEAR(q[10][0], 1000.0 + 24.0, 1e-9);  // (x-4)(x-8)(x-12) at 10 is -24: above
+    EXPECT_NEAR(squared_error(q, v), 3726.0 * 5.0, 1e-6);
+}
+
+// The tail: 11 pixels, h = 4: samples at 0, 4, 8; pixels 9 and 10 exact (2 points more); the
+// reconstruction leaves them as they are, whatever the rule.
+TEST(EdgeSplit, TailPixelsAreExactPoints) {
+    const auto v = grey(of(11, [](double x) { return x * x * x * x; }));
+    for (reconstruction k : {reconstruction::linear, reconstruction::quadratic, reconstruction::cubic}) {
+        std::size_t pts = 0;
+        const auto r = reconstruct(v, 4, k, &pts);
+        EXPECT_EQ(pts, 5u) << reconstruction_name(k);
+        EXPECT_EQ(r[9], v[9]);
+        EXPECT_EQ(r[10], v[10]);
+        EXPECT_EQ(r[8], v[8]);
+        EXPECT_NE(r[6], v[6]) << reconstruction_name(k);  // x^4 is no cubic
+    }
+    // A segment shorter than one gap is all exact pixels.
+    std::size_t pts = 0;
+    EXPECT_EQ(reconstruct(grey({1.0, 5.0, 2.0}), 4, reconstruction::cubic, &pts), grey({1.0, 5.0, 2.0}));
+    EXPECT_EQ(pts, 3u);
+}
+
+// Gaps by triangle, h = 4, 9 pixels on triangles 0 0 0 0 0 1 1 1 1: gap 0 (pixels 0..3, its closing
+// sample 4 on triangle 0) within; gap 1 (4..7, closing sample 8 on 1) crossing; pixel 8, the last
+// sample, exact. A kink |x - 4.5| puts the linear rule's whole error in gap 1.
+TEST(EdgeSplit, ChunksByTriangle) {
+    const auto v = grey(of(9, [](double x) { return x < 4.5 ? 4.5 - x : x - 4.5; }));
+    const std::vector<int32_t> tri{0, 0, 0, 0, 0, 1, 1, 1, 1};
+    const edge_split s = split_errors(v, tri, 4, reconstruction::linear);
+    EXPECT_EQ(s.pixels_within, 4u);
+    EXPECT_EQ(s.pixels_crossing, 4u);
+    EXPECT_EQ(s.pixels_exact, 1u);
+    EXPECT_EQ(s.points, 3u);
+    EXPECT_EQ(s.se_within, 0.0);
+    // Linear from 0.5 (at 4) to 3.5 (at 8): 0.5 + 0.75 i against |i - 0.5| at i = 1..3: 1.25 - 0.5,
+    // 2 - 1.5, 2.75 - 2.5 = 0.75, 0.5, 0.25 (pixel 4 is the sample).
+    EXPECT_NEAR(s.se_crossing, (0.75 * 0.75 + 0.5 * 0.5 + 0.25 * 0.25) * 5.0, 1e-12);
+    double ref2 = 0.0;
+    for (const auto& c : v) ref2 += c[0] * c[0] + c[1] * c[1];
+    EXPECT_NEAR(s.ref2, ref2, 1e-12);
+    // Summed as the study sums segments: every count and sum adds.
+    edge_split two = s;
+    two += s;
+    EXPECT_EQ(two.pixels(), 18u);
+    EXPECT_EQ(two.pixels_exact, 2u);
+    EXPECT_EQ(two.points, 6u);
+    EXPECT_DOUBLE_EQ(two.se_crossing, 2.0 * s.se_crossing);
+    EXPECT_DOUBLE_EQ(two.ref2, 2.0 * s.ref2);
+    EXPECT_THROW(split_errors(v, {0, 1}, 4, reconstruction::linear), std::invalid_argument);
+    EXPECT_THROW(reconstruct(v, 0, reconstruction::linear, nullptr), std::invalid_argument);
+}
+
+}  // namespace
