@@ -213,12 +213,17 @@ std::optional<int> head_study(int argc, char** argv) {
     return std::nullopt;
 }
 
+// The scene options of the studies that render one (components_study, edge_study).
+void check_study_scene(const std::string& scene, const std::string& dev, unsigned size) {
+    FUZZ_CHECK(in({"head", "sphere", "torus"}, scene), "--scene '%s'", scene.c_str());
+    FUZZ_CHECK(device(dev), "--device '%s'", dev.c_str());
+    FUZZ_CHECK(within(size, 16u, 4096u), "--size %u", size);
+}
+
 std::optional<int> components_study(int argc, char** argv) {
     components_study_options o;
     if (auto rc = parse_components_study(argc, argv, o)) return rc;
-    FUZZ_CHECK(in({"head", "sphere", "torus"}, o.scene), "--scene '%s'", o.scene.c_str());
-    FUZZ_CHECK(device(o.device), "--device '%s'", o.device.c_str());
-    FUZZ_CHECK(within(o.size, 16u, 4096u), "--size %u", o.size);
+    check_study_scene(o.scene, o.device, o.size);
     FUZZ_CHECK(o.nmse > 0.0 && o.nmse <= 1.0, "--nmse %g", o.nmse);
     for (const auto* tols : {&o.tol_sum, &o.tol_diffuse, &o.tol_specular})
         for (double t : *tols) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a tolerance %g", t);
@@ -230,9 +235,7 @@ std::optional<int> components_study(int argc, char** argv) {
 std::optional<int> edge_study(int argc, char** argv) {
     edge_study_options o;
     if (auto rc = parse_edge_study(argc, argv, o)) return rc;
-    FUZZ_CHECK(in({"head", "sphere", "torus"}, o.scene), "--scene '%s'", o.scene.c_str());
-    FUZZ_CHECK(device(o.device), "--device '%s'", o.device.c_str());
-    FUZZ_CHECK(within(o.size, 16u, 4096u), "--size %u", o.size);
+    check_study_scene(o.scene, o.device, o.size);
     FUZZ_CHECK(!o.spacings.empty(), "no --spacing");
     for (unsigned h : o.spacings)
         FUZZ_CHECK(h >= 1 && h <= 64 && (h & (h - 1)) == 0, "--spacing %u", h);

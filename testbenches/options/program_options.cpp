@@ -17,6 +17,15 @@ namespace shading::tb {
 
 namespace {
 
+// The built-in scene a study renders (components_study, edge_study): its name, size, where the head
+// scan lies and the specular device.
+void add_study_scene(CLI::App& app, std::string& scene, unsigned& size, std::string& data_dir, std::string& device) {
+    app.add_option("--scene", scene, "built-in scene")->check(CLI::IsMember({"head", "sphere", "torus"}));
+    app.add_option("--size", size, "image width and height")->check(CLI::Range(16u, 4096u));
+    app.add_option("--data-dir", data_dir, "repository root holding data/head/");
+    app.add_option("--device", device, "specular device")->check(CLI::IsMember(device_names()));
+}
+
 // The common options, added before the program's own (their order in --help).
 void add_bench_options(CLI::App& app, bench_options& b, const std::string& default_vcd, bool with_mode) {
     b.vcd = default_vcd;
@@ -262,10 +271,7 @@ std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o
 
 std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o) {
     CLI::App app{"the shading components interpolated apart (as the interpolation paper does) against their sum"};
-    app.add_option("--scene", o.scene, "built-in scene")->check(CLI::IsMember({"head", "sphere", "torus"}));
-    app.add_option("--size", o.size, "image width and height")->check(CLI::Range(16u, 4096u));
-    app.add_option("--data-dir", o.data_dir, "repository root holding data/head/");
-    app.add_option("--device", o.device, "specular device")->check(CLI::IsMember(device_names()));
+    add_study_scene(app, o.scene, o.size, o.data_dir, o.device);
     app.add_option("--nmse", o.nmse, "the interpolation NMSE allowed (0..1]")->check(CLI::Range(1e-12, 1.0));
     const auto tol = CLI::Range(1e-3, 64.0);
     app.add_option("--tol-sum", o.tol_sum, "the sum's tolerances (8-bit levels, comma-separated)")->delimiter(',')->check(tol);
@@ -281,10 +287,7 @@ std::optional<int> parse_components_study(int argc, char** argv, components_stud
 
 std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o) {
     CLI::App app{"where a polynomial through a raster line's samples misses: inside one triangle or across an edge"};
-    app.add_option("--scene", o.scene, "built-in scene")->check(CLI::IsMember({"head", "sphere", "torus"}));
-    app.add_option("--size", o.size, "image width and height")->check(CLI::Range(16u, 4096u));
-    app.add_option("--data-dir", o.data_dir, "repository root holding data/head/");
-    app.add_option("--device", o.device, "specular device")->check(CLI::IsMember(device_names()));
+    add_study_scene(app, o.scene, o.size, o.data_dir, o.device);
     app.add_option("--spacing", o.spacings, "sample spacings in pixels (powers of two 1..64, comma-separated)")
         ->delimiter(',')
         ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u, 32u, 64u}));

@@ -1,8 +1,9 @@
 // The edge study's pieces (edge_split.h) against hand-worked segments: which rule reproduces which
-// polynomial, the quadratic's error on a cubic worked out by hand, the points counted, the chunks
+// polynomial, the quadratic's error on a cubic worked out by hand, the points counted, the gaps
 // classified by their triangles.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <vector>
 
 #include "edge_split.h"
