@@ -296,6 +296,12 @@ std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o
         std::fprintf(stderr, "edge_study: --spacing needs at least one value\n");
         return 2;
     }
+    // CLI11 reads an empty value ("--spacing ''") as 0 without asking the check above.
+    for (unsigned h : o.spacings)
+        if (h < 1 || h > 64 || (h & (h - 1)) != 0) {
+            std::fprintf(stderr, "edge_study: --spacing: %u is not a power of two 1..64\n", h);
+            return 2;
+        }
     return std::nullopt;
 }
 
