@@ -16,14 +16,38 @@ constexpr double pi = 3.14159265358979323846;
 double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
+
+double max_abs(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+// The power of two at or above x > 0 (finite): scaling by its inverse is exact, so a model of
+// ordinary size gets the same bits as unscaled.
+double pow2_above(double x) {
+    int e = 0;
+    std::frexp(x, &e);  // x = f 2^e, f in [0.5, 1)
+    return std::ldexp(1.0, e);
+}
+
+// v / |v|, or +z where v has no direction (zero, or not finite). Scaled by a power of two near its
+// largest component first, so |v| neither overflows (components near 1e200) nor underflows (1e-200).
+glm::dvec3 unit_or_z(const glm::dvec3& v) {
+    const double s = max_abs(v);
+    if (!(s > 0.0) || !std::isfinite(s)) return glm::dvec3(0.0, 0.0, 1.0);
+    const glm::dvec3 u = v / pow2_above(s);
+    return u / glm::length(u);
+}
 }  // namespace
 
 void compute_normals(mesh& m, normal_weighting w) {
+    // The normals do not depend on the model's scale: positions divided by a power of two at or above
+    // the largest coordinate, so the cross products of any finite model neither overflow nor underflow.
+    double largest = 0.0;
+    for (const auto& p : m.positions) largest = std::max(largest, max_abs(p));
+    const double scale = largest > 0.0 ? pow2_above(largest) : 1.0;
     std::vector<glm::dvec3> sum(m.positions.size(), glm::dvec3(0.0));
     for (const auto& t : m.triangles) {
-        const glm::dvec3& p0 = m.positions[t[0]];
-        const glm::dvec3& p1 = m.positions[t[1]];
-        const glm::dvec3& p2 = m.positions[t[2]];
+        const glm::dvec3 p0 = m.positions[t[0]] / scale;
+        const glm::dvec3 p1 = m.positions[t[1]] / scale;
+        const glm::dvec3 p2 = m.positions[t[2]] / scale;
         const glm::dvec3 c = glm::cross(p1 - p0, p2 - p0);  // length = 2 * area
         if (w == normal_weighting::area) {
             for (uint32_t v : t) sum[v] += c;
@@ -37,10 +61,7 @@ void compute_normals(mesh& m, normal_weighting w) {
         sum[t[2]] += angle_between(p0 - p2, p1 - p2) * n;
     }
     m.normals.resize(m.positions.size());
-    for (std::size_t i = 0; i < sum.size(); ++i) {
-        const double len = glm::length(sum[i]);
-        m.normals[i] = len > 0.0 ? sum[i] / len : glm::dvec3(0.0, 0.0, 1.0);
-    }
+    for (std::size_t i = 0; i < sum.size(); ++i) m.normals[i] = unit_or_z(sum[i]);
 }
 
 mesh load_obj(const std::string& path, normal_weighting w) {
@@ -103,10 +124,7 @@ mesh load_obj(const std::string& path, normal_weighting w) {
     m.file_had_normals = all_normals;
     if (all_normals) {
         m.normals.resize(nv);
-        for (std::size_t i = 0; i < nv; ++i) {
-            const double len = glm::length(file_normals[i]);
-            m.normals[i] = len > 0.0 ? file_normals[i] / len : glm::dvec3(0.0, 0.0, 1.0);
-        }
+        for (std::size_t i = 0; i < nv; ++i) m.normals[i] = unit_or_z(file_normals[i]);
     } else {
         compute_normals(m, w);
     }

@@ -152,6 +152,28 @@ TEST(SceneObj, RidgeNormalBisects) {
     }
 }
 
+// The same ridge drawn near the largest and the smallest doubles: its normals are the hand-worked
+// (1, 0, 1)/sqrt(2) still (cross products of 1e200 coordinates overflow, of 1e-200 ones underflow to
+// a degenerate face, unless the loader scales them). File normals of such a length are unit too.
+TEST(SceneObj, NormalsDoNotDependOnTheModelsScale) {
+    for (const std::string s : {"1e200", "1e-200", "3"}) {
+        const std::string path = write_temp("ridge_" + s + ".obj", "v 0 0 0\nv 0 " + s + " 0\nv -" + s + " 0 0\nv 0 0 -" +
+                                                                       s + "\nf 1 2 3\nf 1 4 2\n");
+        for (auto w : {normal_weighting::area, normal_weighting::angle}) {
+            const mesh m = load_obj(path, w);
+            for (int v : {0, 1}) {
+                EXPECT_NEAR(m.normals[v].x, std::sqrt(0.5), 1e-12) << s << " vertex " << v;
+                EXPECT_NEAR(m.normals[v].y, 0.0, 1e-12) << s;
+                EXPECT_NEAR(m.normals[v].z, std::sqrt(0.5), 1e-12) << s;
+            }
+        }
+    }
+    for (const std::string vn : {"0 6e250 8e250", "0 6e-250 8e-250"}) {
+        const mesh m = load_obj(write_temp("vn_scale.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn " + vn + "\nf 1//1 2//1 3//1\n"));
+        for (const auto& n : m.normals) EXPECT_NEAR(glm::length(n - glm::dvec3(0.0, 0.6, 0.8)), 0.0, 1e-12) << vn;
+    }
+}
+
 // Normals given in the file are used (not recomputed from the faces).
 TEST(SceneObj, FileNormalsAreUsed) {
     const std::string path =
