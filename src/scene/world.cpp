@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "formats/ua60553_formats.h"
 
@@ -111,6 +112,20 @@ world obj_scene(const std::string& path, unsigned width, unsigned height) {
     // Front three-quarter view: 30 degrees to the model's left of the face (+z), 8 degrees above,
     // framing the top 60 % of the model's height (a bust's head, not its shoulders).
     const bounds all = mesh_bounds(o.geometry);
+    // The framing and the rasteriser square coordinates and extents: beyond these limits they
+    // overflow (an empty picture) or underflow (a camera on its target), so the model is refused.
+    const double largest = std::max({std::abs(all.lo.x), std::abs(all.lo.y), std::abs(all.lo.z), std::abs(all.hi.x),
+                                     std::abs(all.hi.y), std::abs(all.hi.z)});
+    const glm::dvec3 e = all.hi - all.lo;
+    const double extent = std::max({e.x, e.y, e.z});
+    if (!(largest <= obj_coordinate_max) || !(extent >= obj_extent_min)) {
+        char msg[200];
+        std::snprintf(msg, sizeof msg,
+                      "a coordinate of magnitude %.3g and an extent of %.3g: the framing needs coordinates "
+                      "within +-%.0e and an extent of at least %.0e (scale the model)",
+                      largest, extent, obj_coordinate_max, obj_extent_min);
+        throw scene_error("scene '" + path + "': " + msg);
+    }
     const double y_cut = all.hi.y - 0.6 * (all.hi.y - all.lo.y);
     bounds b{all.hi, all.lo};
     for (const auto& p : o.geometry.positions)

@@ -84,8 +84,13 @@ std::vector<std::string> builtin_scene_names();
 // scan cannot be read.
 world builtin_scene(const std::string& name, const std::string& data_dir, unsigned width, unsigned height);
 
+// The range of models obj_scene frames: every coordinate within +-obj_coordinate_max and the
+// bounding box at least obj_extent_min along its longest side (the framing squares both).
+inline constexpr double obj_coordinate_max = 1e100, obj_extent_min = 1e-100;
+
 // A scene around a user's OBJ file: the mesh framed by a front three-quarter camera (looking
-// along -z, +y up), one white light from the upper left front, the head's skin material.
+// along -z, +y up), one white light from the upper left front, the head's skin material. Throws
+// obj_error for a file load_obj refuses, scene_error for a model outside the range above.
 world obj_scene(const std::string& path, unsigned width, unsigned height);
 
 // The defaults for the head (and for user OBJ files).

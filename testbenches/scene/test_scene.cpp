@@ -204,6 +204,47 @@ TEST(SceneWorld, UnknownSceneAndBadMaterialAreErrors) {
     EXPECT_THROW(rasterise(s), scene_error);
 }
 
+// An octahedron of half-diagonal `s` (an OBJ the framing can see from any side).
+std::string octahedron(const std::string& s) {
+    const std::string path = write_temp("octahedron_" + s + ".obj", "");
+    std::ofstream f(path);
+    for (const char* v : {"v S 0 0", "v -S 0 0", "v 0 S 0", "v 0 -S 0", "v 0 0 S", "v 0 0 -S"}) {
+        std::string line = v;
+        for (std::size_t i; (i = line.find('S')) != std::string::npos;) line.replace(i, 1, s);
+        f << line << "\n";
+    }
+    f << "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+    return path;
+}
+
+std::size_t covered_pixels(const world& s) {
+    const rasterised r = rasterise(s);
+    std::size_t n = 0;
+    for (unsigned y = 0; y < r.height; ++y)
+        for (unsigned x = 0; x < r.width; ++x) n += r.covered(x, y);
+    return n;
+}
+
+// The framing squares coordinates and extents: a model at 1e200 framed to an empty picture and one at
+// 1e-200 to a camera on its target. Outside +-1e100 and 1e-100 the model is refused with both
+// figures and what to do; at the limits it frames as at size 1 (the same view, scaled).
+TEST(SceneWorld, ObjOutsideTheFramingRangeIsAClearError) {
+    for (const std::string s : {"1e200", "1e-200", "3e100"}) {
+        try {
+            (void)obj_scene(octahedron(s), 32, 32);
+            ADD_FAILURE() << "no error at " << s;
+        } catch (const scene_error& e) {
+            EXPECT_NE(std::string(e.what()).find("scale the model"), std::string::npos) << e.what();
+        }
+    }
+    const std::size_t unit = covered_pixels(obj_scene(octahedron("1"), 32, 32));
+    EXPECT_GT(unit, 100u);  // the octahedron fills about a sixth of the frame
+    for (const std::string s : {"1e100", "1e-100"}) {
+        const std::size_t n = covered_pixels(obj_scene(octahedron(s), 32, 32));
+        EXPECT_NEAR(double(n), double(unit), 2.0) << s;
+    }
+}
+
 // ---- Rasteriser --------------------------------------------------------------------------------
 
 // Screen triangle (0,0), (8,0), (0,8): a centre (x + 0.5, y + 0.5) lies inside when x + y < 7,
