@@ -17,6 +17,22 @@ struct screen_vertex {
     double q;     // 1 / w
     double d;     // view depth
 };
+
+bool finite(const screen_vertex& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.q) && std::isfinite(v.d);
+}
+
+// The pixels whose centres lie in [lo, hi): ceil(lo - 0.5) .. ceil(hi - 0.5) - 1, clipped to 0..n-1
+// before the conversion to int. A vertex near the camera plane far to the side has screen
+// coordinates no int holds (1e14 pixels from an OBJ vertex 1e12 units aside). False if none.
+bool pixel_range(double lo, double hi, unsigned n, int& first, int& last) {
+    const double f = std::max(0.0, std::ceil(lo - 0.5));
+    const double l = std::min(double(n) - 1.0, std::ceil(hi - 0.5) - 1.0);
+    if (!(f <= l)) return false;
+    first = static_cast<int>(f);
+    last = static_cast<int>(l);
+    return true;
+}
 }  // namespace
 
 std::size_t rasterised::covered_pixels() const {
@@ -57,6 +73,8 @@ rasterised rasterise(const world& s) {
             const screen_vertex v[3] = {sv[t[0]], sv[t[1]], sv[t[2]]};
             if (v[0].d < cam.z_near || v[1].d < cam.z_near || v[2].d < cam.z_near) continue;
             if (v[0].d > cam.z_far && v[1].d > cam.z_far && v[2].d > cam.z_far) continue;
+            // Not placed on the screen (a projection of a vertex beyond double's range): nothing to draw.
+            if (!finite(v[0]) || !finite(v[1]) || !finite(v[2])) continue;
             // Screen-space barycentrics lambda_i = a x + b y + c (edge functions over twice the area).
             triangle_setup ts{oi, ti, {}};
             bool degenerate = false;
@@ -75,8 +93,8 @@ rasterised rasterise(const world& s) {
             if (degenerate) continue;
             const double ymin = std::min({v[0].y, v[1].y, v[2].y});
             const double ymax = std::max({v[0].y, v[1].y, v[2].y});
-            const int y0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
-            const int y1 = std::min(static_cast<int>(H) - 1, static_cast<int>(std::ceil(ymax - 0.5)) - 1);
+            int y0 = 0, y1 = -1;
+            if (!pixel_range(ymin, ymax, cam.height, y0, y1)) continue;
             const auto setup_index = static_cast<int32_t>(r.setups.size());
             bool used = false;
             for (int y = y0; y <= y1; ++y) {
@@ -94,9 +112,8 @@ rasterised rasterise(const world& s) {
                     xl = std::min(xl, x);
                     xr = std::max(xr, x);
                 }
-                if (!(xl < xr)) continue;
-                const int x0 = std::max(0, static_cast<int>(std::ceil(xl - 0.5)));
-                const int x1 = std::min(static_cast<int>(W) - 1, static_cast<int>(std::ceil(xr - 0.5)) - 1);
+                int x0 = 0, x1 = -1;
+                if (!(xl < xr) || !pixel_range(xl, xr, cam.width, x0, x1)) continue;
                 for (int x = x0; x <= x1; ++x) {
                     const glm::dvec3 pc(x + 0.5, yc, 1.0);
                     double sq = 0.0, sdq = 0.0;

@@ -273,6 +273,18 @@ TEST(SceneRaster, OneTriangleCoversKnownPixels) {
         for (unsigned x = 0; x < 8; ++x) EXPECT_EQ(rb.setups[rb.tri[rb.index(x, y)]].triangle, x + y <= 6 ? 0u : 1u);
 }
 
+// A vertex 1e15 pixels off the screen (as an OBJ vertex 1e12 units aside, near the camera plane,
+// projects): the triangle is clipped to the screen before any pixel index is formed. Each triangle
+// below has two edges within a hair of the screen's own and so covers all 64 pixels.
+TEST(SceneRaster, VertexFarOffScreenIsClipped) {
+    using tri = std::array<glm::dvec2, 3>;
+    for (const tri& t : {tri{{{0, 0}, {0, 8}, {1e15, 4}}}, tri{{{8, 0}, {8, 8}, {-1e15, 4}}},
+                         tri{{{0, 0}, {8, 0}, {4, 1e15}}}, tri{{{0, 8}, {8, 8}, {4, -1e15}}}}) {
+        const rasterised r = rasterise(ortho_scene({screen_object("far", {t}, 0.0)}));
+        EXPECT_EQ(r.covered_pixels(), 64u) << t[2].x << "," << t[2].y;
+    }
+}
+
 // A far square (depth 10) and a nearer triangle (depth 8) over its top-left corner: the nearer one
 // wins where both cover, whichever is drawn first.
 TEST(SceneRaster, DepthBufferKeepsTheNearer) {
