@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "testbenches/common/exit_status.h"
@@ -15,6 +17,14 @@ namespace shading::tb {
 // --help exits 0 (the help printed), every parse or validation error 2 (CLI11's message printed).
 inline int cli_exit(const CLI::App& app, const CLI::ParseError& e) {
     return app.exit(e) == 0 ? exit_success : exit_usage;
+}
+
+// A value CLI11 could not convert and did not report itself (std::out_of_range or
+// std::invalid_argument from the standard library's conversions): bad usage, said on stderr.
+inline int cli_value_exit(const std::logic_error& e) {
+    std::fprintf(stderr, "a value on the command line cannot be converted (%s)\nRun with --help for more information.\n",
+                 e.what());
+    return exit_usage;
 }
 
 // CLI11's numeric checks (Range, PositiveNumber) compare, and every comparison with NaN is false, so
@@ -33,12 +43,16 @@ inline CLI::Validator not_nan() {
 }  // namespace shading::tb
 
 // As CLI11_PARSE (which returns CLI11's own statuses), in a function returning the exit status
-// (an int, or a std::optional<int> holding it).
+// (an int, or a std::optional<int> holding it). CLI11 2.1 lets std::stoll's exceptions out of a
+// flag given a number no long long holds ("--no-sim=433433333334433333333", found by
+// fuzz_options): bad usage too, not a terminate.
 #define SHADING_CLI_PARSE(app, argc, argv)                          \
     do {                                                            \
         try {                                                       \
             (app).parse((argc), (argv));                            \
         } catch (const CLI::ParseError& shading_parse_error_) {     \
             return ::shading::tb::cli_exit((app), shading_parse_error_); \
+        } catch (const std::logic_error& shading_value_error_) {    \
+            return ::shading::tb::cli_value_exit(shading_value_error_); \
         }                                                           \
     } while (0)
