@@ -206,23 +206,9 @@ TEST(SceneWorld, UnknownSceneAndBadMaterialAreErrors) {
 
 // An octahedron of half-diagonal `s` (an OBJ the framing can see from any side).
 std::string octahedron(const std::string& s) {
-    const std::string path = write_temp("octahedron_" + s + ".obj", "");
-    std::ofstream f(path);
-    for (const char* v : {"v S 0 0", "v -S 0 0", "v 0 S 0", "v 0 -S 0", "v 0 0 S", "v 0 0 -S"}) {
-        std::string line = v;
-        for (std::size_t i; (i = line.find('S')) != std::string::npos;) line.replace(i, 1, s);
-        f << line << "\n";
-    }
-    f << "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
-    return path;
-}
-
-std::size_t covered_pixels(const world& s) {
-    const rasterised r = rasterise(s);
-    std::size_t n = 0;
-    for (unsigned y = 0; y < r.height; ++y)
-        for (unsigned x = 0; x < r.width; ++x) n += r.covered(x, y);
-    return n;
+    const std::string text = "v " + s + " 0 0\nv -" + s + " 0 0\nv 0 " + s + " 0\nv 0 -" + s + " 0\nv 0 0 " + s +
+                             "\nv 0 0 -" + s + "\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+    return write_temp("octahedron_" + s + ".obj", text);
 }
 
 // The framing squares coordinates and extents: a model at 1e200 framed to an empty picture and one at
@@ -237,10 +223,10 @@ TEST(SceneWorld, ObjOutsideTheFramingRangeIsAClearError) {
             EXPECT_NE(std::string(e.what()).find("scale the model"), std::string::npos) << e.what();
         }
     }
-    const std::size_t unit = covered_pixels(obj_scene(octahedron("1"), 32, 32));
+    const std::size_t unit = rasterise(obj_scene(octahedron("1"), 32, 32)).covered_pixels();
     EXPECT_GT(unit, 100u);  // the octahedron fills about a sixth of the frame
     for (const std::string s : {"1e100", "1e-100"}) {
-        const std::size_t n = covered_pixels(obj_scene(octahedron(s), 32, 32));
+        const std::size_t n = rasterise(obj_scene(octahedron(s), 32, 32)).covered_pixels();
         EXPECT_NEAR(double(n), double(unit), 2.0) << s;
     }
 }
