@@ -73,6 +73,22 @@ std::vector<rgb_levels> reconstruct(const std::vector<rgb_levels>& v, unsigned h
     return out;
 }
 
+std::vector<rgb_levels> reconstruct_ramped(const std::vector<rgb_levels>& v, const std::vector<slope_jump>& jumps,
+                                           unsigned h, reconstruction k, std::size_t* points) {
+    std::vector<rgb_levels> ramps(v.size(), rgb_levels{0.0, 0.0, 0.0});
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (const slope_jump& j : jumps)
+            if (double(i) > j.e)
+                for (int ch = 0; ch < 3; ++ch) ramps[i][ch] += j.s[ch] * (double(i) - j.e);
+    std::vector<rgb_levels> rest = v;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) rest[i][ch] -= ramps[i][ch];
+    std::vector<rgb_levels> out = reconstruct(rest, h, k, points);
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) out[i][ch] += ramps[i][ch];
+    return out;
+}
+
 edge_split& edge_split::operator+=(const edge_split& o) {
     pixels_within += o.pixels_within;
     pixels_crossing += o.pixels_crossing;
@@ -80,15 +96,21 @@ edge_split& edge_split::operator+=(const edge_split& o) {
     points += o.points;
     se_within += o.se_within;
     se_crossing += o.se_crossing;
+    pixels_past_vertex += o.pixels_past_vertex;
+    se_past_vertex += o.se_past_vertex;
     ref2 += o.ref2;
     return *this;
 }
 
 edge_split split_errors(const std::vector<rgb_levels>& v, const std::vector<int32_t>& tri, unsigned h,
-                        reconstruction k) {
+                        reconstruction k, const std::vector<uint8_t>& vertex_pass,
+                        const std::vector<slope_jump>* jumps) {
     if (tri.size() != v.size()) throw std::invalid_argument("edge_split: one triangle per pixel");
+    if (!vertex_pass.empty() && vertex_pass.size() != v.size())
+        throw std::invalid_argument("edge_split: one vertex-pass flag per pixel, or none");
     edge_split out;
-    const std::vector<rgb_levels> r = reconstruct(v, h, k, &out.points);
+    const std::vector<rgb_levels> r = jumps ? reconstruct_ramped(v, *jumps, h, k, &out.points)
+                                            : reconstruct(v, h, k, &out.points);
     const std::size_t len = v.size();
     const std::size_t gaps = len > 0 ? (len - 1) / h : 0;
     for (std::size_t i = 0; i < len; ++i)
@@ -96,11 +118,17 @@ edge_split split_errors(const std::vector<rgb_levels>& v, const std::vector<int3
     for (std::size_t g = 0; g < gaps; ++g) {
         const auto first = tri.begin() + long(g * h);
         const bool within = std::all_of(first, first + long(h) + 1, [&](int32_t t) { return t == *first; });
+        bool past_vertex = false;
+        for (std::size_t i = g * h + 1; i <= g * h + h && !vertex_pass.empty(); ++i) past_vertex |= vertex_pass[i] != 0;
         for (std::size_t i = g * h; i < g * h + h; ++i) {
             double e = 0.0;
             for (int ch = 0; ch < 3; ++ch) e += (r[i][ch] - v[i][ch]) * (r[i][ch] - v[i][ch]);
             (within ? out.se_within : out.se_crossing) += e;
             ++(within ? out.pixels_within : out.pixels_crossing);
+            if (past_vertex && !within) {
+                out.se_past_vertex += e;
+                ++out.pixels_past_vertex;
+            }
         }
     }
     out.pixels_exact = len - gaps * h;

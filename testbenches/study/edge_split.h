@@ -33,19 +33,38 @@ using rgb_levels = std::array<double, 3>;
 std::vector<rgb_levels> reconstruct(const std::vector<rgb_levels>& v, unsigned h, reconstruction k,
                                     std::size_t* points);
 
+// A kink: the colour's slope jumps by s (levels per pixel, per channel) at e (pixel units of the
+// segment, pixel 0 at 0; between two pixels), where the line crosses a triangle edge.
+struct slope_jump {
+    double e;
+    rgb_levels s;
+};
+// The same reconstruction with the kinks taken out first: v - sum_j s_j max(0, x - e_j) rebuilt from
+// its samples, the ramps added back. With every slope jump known, what is left to a polynomial is
+// the colour's curvature.
+std::vector<rgb_levels> reconstruct_ramped(const std::vector<rgb_levels>& v, const std::vector<slope_jump>& jumps,
+                                           unsigned h, reconstruction k, std::size_t* points);
+
 // The squared error of a reconstruction, split by where it lies. The pixels of gap g (g h .. g h +
 // h - 1) are "within" when they and the gap's closing sample (g h + h) lie on one triangle, else
-// "crossing"; the last sample and the pixels after it are exact (no error, in neither part).
+// "crossing"; crossing gaps in which the line passes a mesh vertex (vertex_pass[i]: pixels i - 1 and
+// i lie on triangles that share one vertex, not an edge, for some i in g h + 1 .. g h + h) are also
+// counted "past a vertex". The last sample and the pixels after it are exact (no error, in no part).
 struct edge_split {
     std::size_t pixels_within = 0, pixels_crossing = 0, pixels_exact = 0, points = 0;
+    std::size_t pixels_past_vertex = 0;  // part of pixels_crossing
     double se_within = 0.0, se_crossing = 0.0;  // squared error, 8-bit levels squared, three channels
+    double se_past_vertex = 0.0;                // part of se_crossing
     double ref2 = 0.0;                          // the reference's sum of squares (the NMSE's denominator)
     edge_split& operator+=(const edge_split& o);
     std::size_t interpolated() const { return pixels_within + pixels_crossing; }
     std::size_t pixels() const { return interpolated() + pixels_exact; }
 };
-// v: the segment's reference colours (levels), tri: its pixels' triangles (the same length).
+// v: the segment's reference colours (levels), tri: its pixels' triangles (the same length);
+// vertex_pass: empty (no pass) or the same length; jumps: null, or the kinks to take out first
+// (reconstruct_ramped).
 edge_split split_errors(const std::vector<rgb_levels>& v, const std::vector<int32_t>& tri, unsigned h,
-                        reconstruction k);
+                        reconstruction k, const std::vector<uint8_t>& vertex_pass = {},
+                        const std::vector<slope_jump>* jumps = nullptr);
 
 }  // namespace shading::study

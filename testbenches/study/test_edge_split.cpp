@@ -105,4 +105,50 @@ TEST(EdgeSplit, ChunksByTriangle) {
     EXPECT_THROW(reconstruct(v, 0, reconstruction::linear, nullptr), std::invalid_argument);
 }
 
+// A kink worked by hand: v(x) = x up to e = 2.5, then slope 3 (a jump of 2), 9 pixels, h = 4.
+// Samples 0, 7, 19 (v(4) = 2.5 + 3 * 1.5, v(8) = 2.5 + 3 * 5.5). The linear rule's first gap reads
+// 1.75, 3.5, 5.25 at pixels 1..3 against 1, 2, 4: errors 0.75, 1.5, 1.25; its second gap is exact.
+// Taken out first, the kink leaves a straight line: no error anywhere.
+TEST(EdgeSplit, RampedReconstructionTakesOutAKnownKink) {
+    const auto v = grey(of(9, [](double x) { return x <= 2.5 ? x : 2.5 + 3.0 * (x - 2.5); }));
+    const std::vector<int32_t> tri{0, 0, 0, 1, 1, 1, 1, 1, 1};
+    const edge_split plain = split_errors(v, tri, 4, reconstruction::linear);
+    EXPECT_NEAR(plain.se_crossing, (0.75 * 0.75 + 1.5 * 1.5 + 1.25 * 1.25) * 5.0, 1e-12);
+    EXPECT_EQ(plain.se_within, 0.0);
+    const std::vector<slope_jump> jumps{{2.5, {2.0, 4.0, 0.0}}};
+    std::size_t points = 0;
+    EXPECT_LT(squared_error(reconstruct_ramped(v, jumps, 4, reconstruction::linear, &points), v), 1e-24);
+    EXPECT_EQ(points, 3u);
+    const edge_split ramped = split_errors(v, tri, 4, reconstruction::linear, {}, &jumps);
+    EXPECT_LT(ramped.se_crossing, 1e-24);
+    EXPECT_EQ(ramped.pixels_crossing, 4u);
+    // A jump of the wrong size leaves its own ramp's error: half the jump, the same gap.
+    const std::vector<slope_jump> half{{2.5, {1.0, 2.0, 0.0}}};
+    EXPECT_NEAR(split_errors(v, tri, 4, reconstruction::linear, {}, &half).se_crossing, plain.se_crossing / 4.0,
+                1e-12);
+}
+
+// Gaps past a vertex are the crossing gaps with a vertex pass at one of their pixels after the
+// first, up to the closing sample: 13 pixels, h = 4, triangles change at 3 (an edge), 6 (a vertex)
+// and 12 (a vertex, the closing sample of gap 2).
+TEST(EdgeSplit, GapsPastAVertex) {
+    const auto v = grey(of(13, [](double x) { return x * x; }));
+    const std::vector<int32_t> tri{0, 0, 0, 1, 1, 1, 2, 2, 2, 2, 2, 2, 3};
+    std::vector<uint8_t> pass(13, 0);
+    pass[6] = pass[12] = 1;
+    const edge_split s = split_errors(v, tri, 4, reconstruction::linear, pass);
+    EXPECT_EQ(s.pixels_within, 0u);
+    EXPECT_EQ(s.pixels_crossing, 12u);
+    EXPECT_EQ(s.pixels_past_vertex, 8u);  // gaps 1 (pixels 4..7) and 2 (8..11)
+    // x^2 by a chord over [a, a + 4]: error (x - a)(a + 4 - x) at 1, 2, 3 = 3, 4, 3 in every gap.
+    const double gap = (9.0 + 16.0 + 9.0) * 5.0;
+    EXPECT_NEAR(s.se_crossing, 3.0 * gap, 1e-9);
+    EXPECT_NEAR(s.se_past_vertex, 2.0 * gap, 1e-9);
+    edge_split two = s;
+    two += s;
+    EXPECT_EQ(two.pixels_past_vertex, 16u);
+    EXPECT_DOUBLE_EQ(two.se_past_vertex, 2.0 * s.se_past_vertex);
+    EXPECT_THROW(split_errors(v, tri, 4, reconstruction::linear, std::vector<uint8_t>(3, 0)), std::invalid_argument);
+}
+
 }  // namespace

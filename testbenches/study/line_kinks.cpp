@@ -1,0 +1,71 @@
+// A segment's triangle changes and the colour's slope jumps at shared edges (line_kinks.h).
+#include "line_kinks.h"
+
+#include <algorithm>
+
+#include "scene/shade.h"
+
+namespace shading::study {
+
+rgb_levels colour_on(const scene::rasterised& r, int32_t t, double xs, double ys) {
+    const scene::triangle_setup& ts = r.setups[static_cast<std::size_t>(t)];
+    const scene::object& obj = r.src->objects[ts.object];
+    const auto& tri = obj.geometry.triangles[ts.triangle];
+    glm::dvec3 un(0.0), up(0.0);
+    double q = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const double g = ts.plane[i].x * xs + ts.plane[i].y * ys + ts.plane[i].z;
+        q += g;
+        un += g * obj.geometry.normals[tri[i]];
+        up += g * obj.geometry.positions[tri[i]];
+    }
+    const glm::dvec3 n = glm::normalize(un), p = up / q;
+    auto c = [](double v) { return scene::cnum(v, nullptr); };
+    scene::pixel_geometry g;
+    g.object = ts.object;
+    g.n = {c(n.x), c(n.y), c(n.z)};
+    g.p = {c(p.x), c(p.y), c(p.z)};
+    scene::add_view_and_lights(r, g, nullptr);
+    const scene::rgb v = scene::shade_phong(g, obj.mat, r.src->lights);
+    return {v.x, v.y, v.z};
+}
+
+segment_kinks kinks_of(const scene::rasterised& r, unsigned y, unsigned x0, unsigned x1) {
+    segment_kinks out;
+    out.vertex_pass.assign(x1 - x0 + 1, 0);
+    const double ys = y + 0.5;
+    for (unsigned x = x0 + 1; x <= x1; ++x) {
+        const int32_t ta = r.tri[r.index(x - 1, y)], tb = r.tri[r.index(x, y)];
+        if (ta == tb) continue;
+        const scene::triangle_setup& sa = r.setups[static_cast<std::size_t>(ta)];
+        const scene::triangle_setup& sb = r.setups[static_cast<std::size_t>(tb)];
+        if (sa.object != sb.object) continue;
+        const auto& va = r.src->objects[sa.object].geometry.triangles[sa.triangle];
+        const auto& vb = r.src->objects[sb.object].geometry.triangles[sb.triangle];
+        int shared = 0, own = -1;  // own: A's vertex B lacks
+        for (int i = 0; i < 3; ++i) {
+            const bool in_b = std::find(vb.begin(), vb.end(), va[i]) != vb.end();
+            shared += in_b;
+            if (!in_b) own = i;
+        }
+        if (shared == 1) {
+            out.vertex_pass[x - x0] = 1;
+            ++out.vertices;
+        }
+        if (shared != 2) continue;
+        ++out.edges;
+        // The shared edge: g_own = a x + b y + c = 0 on this line.
+        const glm::dvec3& pl = sa.plane[static_cast<std::size_t>(own)];
+        if (pl.x == 0.0) continue;  // the edge runs along the line: no crossing point
+        const double xs = std::clamp(-(pl.y * ys + pl.z) / pl.x, x - 0.5, x + 0.5);
+        const double d = 1e-3;
+        const rgb_levels a0 = colour_on(r, ta, xs - d, ys), a1 = colour_on(r, ta, xs + d, ys);
+        const rgb_levels b0 = colour_on(r, tb, xs - d, ys), b1 = colour_on(r, tb, xs + d, ys);
+        slope_jump j{xs - 0.5 - x0, {}};
+        for (int ch = 0; ch < 3; ++ch) j.s[ch] = (b1[ch] - b0[ch] - a1[ch] + a0[ch]) / (2.0 * d);
+        out.jumps.push_back(j);
+    }
+    return out;
+}
+
+}  // namespace shading::study

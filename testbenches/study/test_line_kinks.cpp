@@ -1,0 +1,96 @@
+// The line kinks (line_kinks.h) against independent values on the head at 512: the colour of one
+// triangle's extended planes at a pixel centre against the per-pixel Phong from scratch
+// (geometry_at's barycentrics, shade_phong); at every shared edge both triangles' colours agreeing
+// at the crossing found; the jump predicting the next pixel's Phong from the triangle before it to
+// first order; every triangle change an edge crossed or a vertex passed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "golden_pipeline/pipeline.h"
+#include "line_kinks.h"
+#include "scene/scene.h"
+#include "scene/shade.h"
+
+namespace {
+
+using namespace shading;
+using namespace shading::study;
+
+double largest_difference(const rgb_levels& a, const rgb_levels& b) {
+    return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
+}
+
+class LineKinks : public ::testing::Test {
+protected:
+    scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 512, 512);
+    scene::rasterised r = scene::rasterise(w);
+    rgb_levels phong_at(unsigned x, unsigned y) const {
+        const scene::pixel_geometry g = scene::geometry_at(r, x, y, nullptr);
+        const scene::rgb c = scene::shade_phong(g, w.objects[g.object].mat, w.lights);
+        return {c.x, c.y, c.z};
+    }
+};
+
+TEST_F(LineKinks, ColourOnATriangleIsPhongAtItsPixels) {
+    std::size_t checked = 0;
+    for (unsigned y = 0; y < r.height; y += 3)
+        for (unsigned x = 0; x < r.width; ++x)
+            if (r.covered(x, y)) {
+                EXPECT_LT(largest_difference(colour_on(r, r.tri[r.index(x, y)], x + 0.5, y + 0.5), phong_at(x, y)), 1e-9)
+                    << x << "," << y;
+                ++checked;
+            }
+    EXPECT_GT(checked, 1000u);
+}
+
+TEST_F(LineKinks, JumpsSitOnTheSharedEdgeAndPredictTheNextPixel) {
+    const pipeline::plan_config cfg;
+    std::size_t edges = 0, vertices = 0, changes = 0, jumps = 0;
+    std::size_t better = 0;  // jumps whose prediction is nearer than A's colour alone
+    double worst_miss = 0.0, se_jump = 0.0, se_plain = 0.0;
+    std::vector<double> misses;
+    for (unsigned y = 0; y < r.height; ++y)
+        for (const auto& s : pipeline::line_segments(r, y, cfg, nullptr)) {
+            const segment_kinks k = kinks_of(r, y, s[0], s[1]);
+            ASSERT_EQ(k.vertex_pass.size(), s[1] - s[0] + 1);
+            edges += k.edges;
+            vertices += k.vertices;
+            for (unsigned x = s[0] + 1; x <= s[1]; ++x) changes += r.tri[r.index(x, y)] != r.tri[r.index(x - 1, y)];
+            for (const slope_jump& j : k.jumps) {
+                const unsigned after = s[0] + static_cast<unsigned>(std::floor(j.e)) + 1;  // first pixel past it
+                ASSERT_GE(j.e, double(after - 1 - s[0]));
+                ASSERT_LE(j.e, double(after - s[0]));
+                const int32_t ta = r.tri[r.index(after - 1, y)], tb = r.tri[r.index(after, y)];
+                const double xs = s[0] + j.e + 0.5, ys = y + 0.5;
+                // Both triangles' normals and positions meet on their shared edge: one colour.
+                worst_miss = std::max(worst_miss, largest_difference(colour_on(r, ta, xs, ys), colour_on(r, tb, xs, ys)));
+                // The next pixel's colour = A's extended + the jump's ramp, to first order.
+                const rgb_levels plain = colour_on(r, ta, after + 0.5, ys), truth = phong_at(after, y);
+                rgb_levels predicted = plain;
+                for (int ch = 0; ch < 3; ++ch) predicted[ch] += j.s[ch] * (after - s[0] - j.e);
+                for (int ch = 0; ch < 3; ++ch) {
+                    se_jump += (predicted[ch] - truth[ch]) * (predicted[ch] - truth[ch]);
+                    se_plain += (plain[ch] - truth[ch]) * (plain[ch] - truth[ch]);
+                }
+                misses.push_back(largest_difference(predicted, truth));
+                better += largest_difference(predicted, truth) <= largest_difference(plain, truth);
+                ++jumps;
+            }
+        }
+    EXPECT_GT(jumps, 1000u);
+    EXPECT_EQ(edges + vertices, changes);  // the planner's segments hold no fold (no shared vertex)
+    EXPECT_GE(edges, jumps);
+    EXPECT_LT(worst_miss, 1e-6);
+    // First order: a median miss of 0.002 levels, 98.8 % of the jumps nearer than A's colour alone,
+    // 82 % of its squared miss explained. The rest: curvature over up to a pixel where the highlight
+    // turns fast, and the terminator, where N.L <= 0 cuts the specular (tens of levels, a few pixels).
+    std::sort(misses.begin(), misses.end());
+    EXPECT_LT(misses[misses.size() / 2], 0.01);
+    EXPECT_GE(double(better), 0.98 * double(jumps));
+    EXPECT_LT(se_jump, 0.25 * se_plain);
+}
+
+}  // namespace
