@@ -1,11 +1,13 @@
 // Where a polynomial through a raster line's samples misses: inside one triangle, or across a
-// triangle's edge, where the Phong normal's slope (and the colour's) jumps (edge_split.h). Per-pixel
-// shading through the device (the interpolation NMSE's reference) on one scene, its segments as the
-// planner cuts them, samples every h pixels, three reconstructions through the same samples. Prints
-// a Markdown table: per spacing and rule the NMSE, the points per pixel, the share of the
-// interpolated pixels in gaps on one triangle and their share of the squared error, the NMSE of each
-// part.
-//   build/bin/edge_study                                  (the head at 512, about 0.1 s)
+// triangle's edge, where the Phong normal's slope (and the colour's) jumps, or past a mesh vertex
+// (edge_split.h, line_kinks.h). Per-pixel shading through the device (the interpolation NMSE's
+// reference) on one scene, its segments as the planner cuts them, samples every h pixels, three
+// reconstructions through the same samples. Prints Markdown tables: per spacing and rule the NMSE,
+// the points per pixel, the share of the interpolated pixels in gaps on one triangle and past a
+// vertex and their shares of the squared error; the NMSE with every shared edge's exact slope jump
+// taken out first; the gaps past a vertex in fifths by how far the passed vertex's normal stands
+// out from its neighbours' (normal_laplacian), each fifth's share of the error.
+//   build/bin/edge_study                                  (the head at 512, about 0.2 s)
 //   build/bin/edge_study --scene sphere --spacing 4,8,16
 #include <algorithm>
 #include <cstdio>
@@ -39,12 +41,14 @@ int main(int argc, char* argv[]) {
             std::vector<rgb_levels> v;
             std::vector<int32_t> tri;
             segment_kinks kinks;
+            uint32_t object;
         };
         std::vector<segment> segs;
         std::size_t pixels = 0, runs = 0, edges = 0, vertices = 0;
         for (unsigned y = 0; y < r.height; ++y)
             for (const auto& s : pipeline::line_segments(r, y, cfg, nullptr)) {
                 segment g;
+                g.object = static_cast<uint32_t>(r.object_at(s[0], y));
                 for (unsigned x = s[0]; x <= s[1]; ++x) {
                     const auto& c = pp.px[r.index(x, y)];
                     g.v.push_back({c[0] * pipeline::pixel_fmt.lsb(), c[1] * pipeline::pixel_fmt.lsb(),
@@ -100,6 +104,45 @@ int main(int argc, char* argv[]) {
                             (plain.se_within + plain.se_crossing) / plain.ref2, se / ramped.ref2,
                             se > 0.0 ? ramped.se_past_vertex / se : 0.0);
             }
+
+        // The gaps past a vertex by how far the passed vertex's normal stands out from its
+        // neighbours' (normal_laplacian; a gap passing several: the largest), in fifths of those gaps.
+        std::vector<std::vector<double>> lap;
+        std::vector<double> every;
+        for (const scene::object& obj : w.objects) {
+            lap.push_back(normal_laplacian(obj.geometry));
+            every.insert(every.end(), lap.back().begin(), lap.back().end());
+        }
+        std::sort(every.begin(), every.end());
+        std::printf("\nThe gaps past a vertex, the cubic, in fifths by the passed vertex's |N_v - mean N_u| (u its "
+                    "neighbours; over the scene's vertices: median %.4f, 90th percentile %.4f):\n\n"
+                    "| h | fifth | the vertices' range | gaps | their share of the squared error | squared error a gap |\n"
+                    "|---|---|---|---|---|---|\n",
+                    every[every.size() / 2], every[every.size() * 9 / 10]);
+        for (unsigned h : o.spacings) {
+            std::vector<std::pair<double, double>> gaps;  // (the passed vertex's value, the gap's squared error)
+            double se_all = 0.0;
+            for (const segment& g : segs) {
+                const std::vector<rgb_levels> rec = reconstruct(g.v, h, reconstruction::cubic, nullptr);
+                for (std::size_t gap = 0; gap < (g.v.size() - 1) / h; ++gap) {
+                    double se = 0.0, key = -1.0;
+                    for (std::size_t i = gap * h; i < gap * h + h; ++i)
+                        for (int ch = 0; ch < 3; ++ch) se += (rec[i][ch] - g.v[i][ch]) * (rec[i][ch] - g.v[i][ch]);
+                    for (std::size_t i = gap * h + 1; i <= gap * h + h; ++i)
+                        if (g.kinks.vertex_pass[i]) key = std::max(key, lap[g.object][g.kinks.passed[i]]);
+                    se_all += se;
+                    if (key >= 0.0) gaps.push_back({key, se});
+                }
+            }
+            std::sort(gaps.begin(), gaps.end());
+            for (std::size_t f = 0; f < 5 && gaps.size() >= 5; ++f) {
+                const std::size_t a = gaps.size() * f / 5, b = gaps.size() * (f + 1) / 5;
+                double se = 0.0;
+                for (std::size_t i = a; i < b; ++i) se += gaps[i].second;
+                std::printf("| %u | %zu | %.4f..%.4f | %zu | %.3f | %.3g |\n", h, f + 1, gaps[a].first, gaps[b - 1].first,
+                            b - a, se_all > 0.0 ? se / se_all : 0.0, se / double(b - a));
+            }
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "edge_study: %s\n", e.what());
         return tb::exit_failure;

@@ -30,9 +30,27 @@ rgb_levels colour_on(const scene::rasterised& r, int32_t t, double xs, double ys
     return {v.x, v.y, v.z};
 }
 
+std::vector<double> normal_laplacian(const scene::mesh& m) {
+    std::vector<std::vector<uint32_t>> neighbours(m.positions.size());
+    for (const auto& t : m.triangles)
+        for (uint32_t a : t)
+            for (uint32_t b : t)
+                if (a != b && std::find(neighbours[a].begin(), neighbours[a].end(), b) == neighbours[a].end())
+                    neighbours[a].push_back(b);
+    std::vector<double> out(m.positions.size(), 0.0);
+    for (std::size_t v = 0; v < neighbours.size(); ++v) {
+        if (neighbours[v].empty()) continue;
+        glm::dvec3 sum(0.0);
+        for (uint32_t u : neighbours[v]) sum += m.normals[u];
+        out[v] = glm::length(m.normals[v] - sum / double(neighbours[v].size()));
+    }
+    return out;
+}
+
 segment_kinks kinks_of(const scene::rasterised& r, unsigned y, unsigned x0, unsigned x1) {
     segment_kinks out;
     out.vertex_pass.assign(x1 - x0 + 1, 0);
+    out.passed.assign(x1 - x0 + 1, 0);
     const double ys = y + 0.5;
     for (unsigned x = x0 + 1; x <= x1; ++x) {
         const int32_t ta = r.tri[r.index(x - 1, y)], tb = r.tri[r.index(x, y)];
@@ -43,13 +61,16 @@ segment_kinks kinks_of(const scene::rasterised& r, unsigned y, unsigned x0, unsi
         const auto& va = r.src->objects[sa.object].geometry.triangles[sa.triangle];
         const auto& vb = r.src->objects[sb.object].geometry.triangles[sb.triangle];
         int shared = 0, own = -1;  // own: A's vertex B lacks
+        uint32_t common = 0;
         for (int i = 0; i < 3; ++i) {
             const bool in_b = std::find(vb.begin(), vb.end(), va[i]) != vb.end();
             shared += in_b;
+            if (in_b) common = va[i];
             if (!in_b) own = i;
         }
         if (shared == 1) {
             out.vertex_pass[x - x0] = 1;
+            out.passed[x - x0] = common;
             ++out.vertices;
         }
         if (shared != 2) continue;

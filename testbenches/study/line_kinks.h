@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "edge_split.h"
+#include "scene/mesh.h"
 #include "scene/raster.h"
 
 namespace shading::study {
@@ -22,8 +23,15 @@ namespace shading::study {
 // centres at x + 0.5. Uncounted.
 rgb_levels colour_on(const scene::rasterised& r, int32_t t, double xs, double ys);
 
+// How far each vertex normal stands out from its neighbours': |N_v - mean of N_u over the vertices
+// u that share a triangle with v| (a discrete Laplacian of the normal field; 0 for a vertex in no
+// triangle). Smooth meshes keep it near their curvature times an edge (sphere: a median 0.0025);
+// a scan's noisy normals do not (head: 0.075).
+std::vector<double> normal_laplacian(const scene::mesh& m);
+
 struct segment_kinks {
     std::vector<uint8_t> vertex_pass;  // per pixel: pixel i - 1 and i share a vertex, not an edge
+    std::vector<uint32_t> passed;      // per pixel with vertex_pass: the vertex passed (else 0)
     std::vector<slope_jump> jumps;     // at every shared edge crossed, e in the segment's pixel units
     std::size_t edges = 0, vertices = 0;
 };

@@ -2,7 +2,8 @@
 // triangle's extended planes at a pixel centre against the per-pixel Phong from scratch
 // (geometry_at's barycentrics, shade_phong); at every shared edge both triangles' colours agreeing
 // at the crossing found; the jump predicting the next pixel's Phong from the triangle before it to
-// first order; every triangle change an edge crossed or a vertex passed.
+// first order; every triangle change an edge crossed or a vertex passed, the vertex a corner of
+// both; the normal field's Laplacian on a fan worked by hand.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,7 +59,16 @@ TEST_F(LineKinks, JumpsSitOnTheSharedEdgeAndPredictTheNextPixel) {
             ASSERT_EQ(k.vertex_pass.size(), s[1] - s[0] + 1);
             edges += k.edges;
             vertices += k.vertices;
-            for (unsigned x = s[0] + 1; x <= s[1]; ++x) changes += r.tri[r.index(x, y)] != r.tri[r.index(x - 1, y)];
+            for (unsigned x = s[0] + 1; x <= s[1]; ++x) {
+                changes += r.tri[r.index(x, y)] != r.tri[r.index(x - 1, y)];
+                if (!k.vertex_pass[x - s[0]]) continue;
+                // The vertex passed is a corner of both triangles.
+                for (unsigned p : {x - 1, x}) {
+                    const scene::triangle_setup& ts = r.setups[static_cast<std::size_t>(r.tri[r.index(p, y)])];
+                    const auto& t = w.objects[ts.object].geometry.triangles[ts.triangle];
+                    EXPECT_NE(std::find(t.begin(), t.end(), k.passed[x - s[0]]), t.end()) << p << "," << y;
+                }
+            }
             for (const slope_jump& j : k.jumps) {
                 const unsigned after = s[0] + static_cast<unsigned>(std::floor(j.e)) + 1;  // first pixel past it
                 ASSERT_GE(j.e, double(after - 1 - s[0]));
@@ -91,6 +101,25 @@ TEST_F(LineKinks, JumpsSitOnTheSharedEdgeAndPredictTheNextPixel) {
     EXPECT_LT(misses[misses.size() / 2], 0.01);
     EXPECT_GE(double(better), 0.98 * double(jumps));
     EXPECT_LT(se_jump, 0.25 * se_plain);
+}
+
+// A fan worked by hand: centre 0 with N = (0, 0, 1), corners 1..4 around it with normals tilted
+// 0.6 outwards, (±0.6, 0, 0.8) and (0, ±0.6, 0.8), and a vertex in no triangle. The corners'
+// mean is (0, 0, 0.8): 0.2 for the centre. Corner 1 (0.6, 0, 0.8) neighbours the centre and
+// corners 3, 4: their mean (0, 0, 2.6 / 3), so |(0.6, 0, 0.8 - 2.6 / 3)| = sqrt(0.36 + 1 / 225).
+TEST(NormalLaplacian, FanByHand) {
+    scene::mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {5, 5, 5}};
+    m.normals = {{0, 0, 1}, {0.6, 0, 0.8}, {-0.6, 0, 0.8}, {0, 0.6, 0.8}, {0, -0.6, 0.8}, {0, 0, 1}};
+    m.triangles = {{0, 1, 3}, {0, 3, 2}, {0, 2, 4}, {0, 4, 1}};
+    const std::vector<double> l = normal_laplacian(m);
+    ASSERT_EQ(l.size(), 6u);
+    EXPECT_NEAR(l[0], 0.2, 1e-12);
+    for (int corner = 1; corner <= 4; ++corner) EXPECT_NEAR(l[corner], std::sqrt(0.36 + 1.0 / 225.0), 1e-12) << corner;
+    EXPECT_EQ(l[5], 0.0);
+    // A flat patch: every normal the same, nothing stands out.
+    for (auto& n : m.normals) n = {0, 0, 1};
+    for (double v : normal_laplacian(m)) EXPECT_EQ(v, 0.0);
 }
 
 }  // namespace
