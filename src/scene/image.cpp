@@ -106,11 +106,22 @@ void save_png(const rgb_image& img, const std::string& path) {
     file.ok = true;
 }
 
+namespace {
+std::string pixel_name(std::size_t i, unsigned width) {
+    return "(" + std::to_string(width ? i % width : i) + ", " + std::to_string(width ? i / width : 0) + ")";
+}
+}  // namespace
+
 rgb_image to_rgb8(const shaded_image& s) {
     rgb_image out(s.width, s.height);
     for (std::size_t i = 0; i < s.value.size(); ++i)
-        for (int c = 0; c < 3; ++c)
+        for (int c = 0; c < 3; ++c) {
+            // std::clamp passes NaN through, and lround(NaN) has no defined level.
+            if (std::isnan(s.value[i][c]))
+                throw image_error("to_rgb8: pixel " + pixel_name(i, s.width) + " channel " + std::to_string(c) +
+                                  " is not a number");
             out.data[3 * i + c] = static_cast<uint8_t>(std::lround(std::clamp(s.value[i][c], 0.0, 255.0)));
+        }
     return out;
 }
 
@@ -153,6 +164,7 @@ rgb_image heat_map(const std::vector<double>& values, unsigned width, unsigned h
             std::fill_n(p, 3, uint8_t{40});
             continue;
         }
+        if (std::isnan(values[i])) throw image_error("heat_map: pixel " + pixel_name(i, width) + " is not a number");
         const double t = full_scale > 0.0 ? std::clamp(values[i] / full_scale, 0.0, 1.0) * 4.0 : 0.0;
         const int k = std::min(3, static_cast<int>(t));
         const double f = t - k;

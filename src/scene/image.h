@@ -30,7 +30,8 @@ public:
 // written file is removed.
 void save_png(const rgb_image& img, const std::string& path);
 
-// Rounds to nearest (values are already clamped to [0, 255]).
+// Rounds to nearest, clamped to [0, 255]. A value that is not a number has no level: throws
+// image_error naming the pixel (a cast of NaN to an integer is undefined).
 rgb_image to_rgb8(const shaded_image& s);
 
 // An image against a reference over the reference's covered pixels, every channel:
@@ -44,7 +45,8 @@ image_diff compare_images(const shaded_image& test, const shaded_image& ref);
 std::vector<double> abs_error(const shaded_image& a, const shaded_image& b);
 
 // A heat map of `values` (width * height, row-major): 0 black, then blue, red, yellow, white at
-// `full_scale` and above. Pixels where `mask` (if given) is 0 are drawn dark grey.
+// `full_scale` and above. Pixels where `mask` (if given) is 0 are drawn dark grey. A value that is
+// not a number on a drawn pixel throws image_error naming it.
 rgb_image heat_map(const std::vector<double>& values, unsigned width, unsigned height, double full_scale,
                    const std::vector<uint8_t>* mask = nullptr);
 

@@ -518,6 +518,33 @@ TEST(SceneImage, HeatMapEnds) {
     for (int c = 0; c < 3; ++c) EXPECT_EQ(h.at(2, 0)[c], 255);
 }
 
+// A value that is not a number has no 8-bit level: both conversions name the pixel, (1, 1) of a
+// 2 x 2 image; masked out, the heat map draws it grey.
+TEST(SceneImage, NotANumberIsAClearError) {
+    shaded_image s;
+    s.width = s.height = 2;
+    s.value.assign(4, rgb(10.0));
+    s.covered.assign(4, 1);
+    s.value[3].y = std::nan("");
+    try {
+        to_rgb8(s);
+        ADD_FAILURE() << "to_rgb8 took NaN";
+    } catch (const image_error& e) {
+        EXPECT_NE(std::string(e.what()).find("pixel (1, 1) channel 1"), std::string::npos) << e.what();
+    }
+    std::vector<double> v(4, 1.0);
+    v[2] = std::nan("");
+    try {
+        heat_map(v, 2, 2, 10.0);
+        ADD_FAILURE() << "heat_map took NaN";
+    } catch (const image_error& e) {
+        EXPECT_NE(std::string(e.what()).find("pixel (0, 1)"), std::string::npos) << e.what();
+    }
+    const std::vector<uint8_t> mask = {1, 1, 0, 1};
+    const rgb_image h = heat_map(v, 2, 2, 10.0, &mask);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(h.at(0, 1)[c], 40);
+}
+
 // NMSE and largest error by hand: ref (10, 20, 30) and an uncovered pixel; test (11, 20, 27) and
 // anything on the uncovered pixel: NMSE = (1 + 0 + 9) / (100 + 400 + 900), largest error 3.
 TEST(SceneImage, CompareImagesHandWorked) {
