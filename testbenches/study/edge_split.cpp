@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace shading::study {
 
@@ -132,6 +133,84 @@ edge_split split_errors(const std::vector<rgb_levels>& v, const std::vector<int3
         }
     }
     out.pixels_exact = len - gaps * h;
+    return out;
+}
+
+namespace {
+
+// The reference's sum of squares over the covered pixels (tri >= 0) of a width x height image.
+double covered_ref2(const std::vector<rgb_levels>& colour, const std::vector<int32_t>& tri, unsigned width,
+                    unsigned height, const char* who) {
+    const std::size_t n = static_cast<std::size_t>(width) * height;
+    if (colour.size() != n || tri.size() != n) throw std::invalid_argument(std::string(who) + ": sizes differ");
+    double ref2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (tri[i] >= 0)
+            for (int ch = 0; ch < 3; ++ch) ref2 += colour[i][ch] * colour[i][ch];
+    return ref2;
+}
+
+}  // namespace
+
+midpoint_error midpoint_errors(const std::vector<rgb_levels>& colour, const std::vector<int32_t>& tri, unsigned width,
+                               unsigned height, bool across_lines,
+                               const std::function<bool(int32_t, int32_t)>& one_patch) {
+    midpoint_error out;
+    out.ref2 = covered_ref2(colour, tri, width, height, "midpoint_errors");
+    const std::size_t step = across_lines ? width : 1;
+    for (unsigned y = across_lines ? 1 : 0; y + (across_lines ? 1 : 0) < height; y += across_lines ? 2 : 1)
+        for (unsigned x = across_lines ? 0 : 1; x + (across_lines ? 0 : 1) < width; x += across_lines ? 1 : 2) {
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            const int32_t t = tri[i], a = tri[i - step], b = tri[i + step];
+            if (t < 0 || a < 0 || b < 0 || !one_patch(a, t) || !one_patch(t, b)) continue;
+            ++out.pixels;
+            for (int ch = 0; ch < 3; ++ch) {
+                const double e = 0.5 * (colour[i - step][ch] + colour[i + step][ch]) - colour[i][ch];
+                out.se += e * e;
+            }
+        }
+    return out;
+}
+
+predicted_lines odd_lines_predicted(const std::vector<rgb_levels>& colour, const std::vector<int32_t>& tri,
+                                    unsigned width, unsigned height, unsigned h, reconstruction rule,
+                                    const std::function<bool(int32_t, int32_t)>& one_patch) {
+    predicted_lines out;
+    out.ref2 = covered_ref2(colour, tri, width, height, "odd_lines_predicted");
+    std::vector<rgb_levels> v, mean;
+    auto close_run = [&]() {
+        if (v.empty()) return;
+        std::vector<rgb_levels> residual = v;
+        for (std::size_t i = 0; i < v.size(); ++i)
+            for (int ch = 0; ch < 3; ++ch) residual[i][ch] -= mean[i][ch];
+        std::size_t points = 0;
+        const std::vector<rgb_levels> direct = reconstruct(v, h, rule, &points);
+        const std::vector<rgb_levels> rebuilt = reconstruct(residual, h, rule, nullptr);
+        for (std::size_t i = 0; i < v.size(); ++i)
+            for (int ch = 0; ch < 3; ++ch) {
+                const double d = direct[i][ch] - v[i][ch], p = rebuilt[i][ch] + mean[i][ch] - v[i][ch];
+                out.se_direct += d * d;
+                out.se_predicted += p * p;
+            }
+        out.pixels += v.size();
+        out.points += points;
+        v.clear();
+        mean.clear();
+    };
+    for (unsigned y = 1; y + 1 < height; y += 2) {
+        for (unsigned x = 0; x < width; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            const int32_t t = tri[i], a = tri[i - width], b = tri[i + width];
+            const bool ok = t >= 0 && a >= 0 && b >= 0 && one_patch(a, t) && one_patch(t, b);
+            if (!ok || (!v.empty() && !one_patch(tri[i - 1], t))) close_run();
+            if (!ok) continue;
+            v.push_back(colour[i]);
+            rgb_levels m;
+            for (int ch = 0; ch < 3; ++ch) m[ch] = 0.5 * (colour[i - width][ch] + colour[i + width][ch]);
+            mean.push_back(m);
+        }
+        close_run();
+    }
     return out;
 }
 

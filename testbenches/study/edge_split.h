@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace shading::study {
@@ -66,5 +67,35 @@ struct edge_split {
 edge_split split_errors(const std::vector<rgb_levels>& v, const std::vector<int32_t>& tri, unsigned h,
                         reconstruction k, const std::vector<uint8_t>& vertex_pass = {},
                         const std::vector<slope_jump>* jumps = nullptr);
+
+// Every other line (or column) rebuilt from the lines either side: at each pixel of an odd line
+// (across_lines) or an odd column (along the lines), the mean of its two neighbours one pixel away,
+// the linear rule at spacing 2 in either direction. Counted only where the three pixels' triangles
+// are one patch of the mesh (one_patch holds for the middle one and each neighbour), so no
+// silhouette or fold is bridged; the other pixels of those lines count as exact. colour and tri are
+// row-major, width x height, tri < 0 uncovered; ref2 sums every covered pixel's reference.
+struct midpoint_error {
+    std::size_t pixels = 0;  // rebuilt
+    double se = 0.0, ref2 = 0.0;
+};
+midpoint_error midpoint_errors(const std::vector<rgb_levels>& colour, const std::vector<int32_t>& tri, unsigned width,
+                               unsigned height, bool across_lines,
+                               const std::function<bool(int32_t, int32_t)>& one_patch);
+
+// A line predicted from the lines either side, its own samples correcting the prediction: on each
+// odd line, in runs of pixels whose triangles and those above and below are one patch (one_patch, as
+// midpoint_errors; a run also ends where two neighbours on the line are not), the residual
+// c - (above + below) / 2 sampled every h pixels and rebuilt by `rule` (reconstruct: the same samples,
+// the pixels after a run's last sample exact), the mean added back; against the same samples rebuilding
+// the colour directly. The lines either side are exact (the reference's): what the prediction could
+// give a second pass over a frame whose even lines are done. se sums the odd lines' runs; ref2 every
+// covered pixel, so se / ref2 is their part of the image's NMSE.
+struct predicted_lines {
+    std::size_t pixels = 0, points = 0;
+    double se_direct = 0.0, se_predicted = 0.0, ref2 = 0.0;
+};
+predicted_lines odd_lines_predicted(const std::vector<rgb_levels>& colour, const std::vector<int32_t>& tri,
+                                    unsigned width, unsigned height, unsigned h, reconstruction rule,
+                                    const std::function<bool(int32_t, int32_t)>& one_patch);
 
 }  // namespace shading::study

@@ -6,7 +6,9 @@
 // the points per pixel, the share of the interpolated pixels in gaps on one triangle and past a
 // vertex and their shares of the squared error; the NMSE with every shared edge's exact slope jump
 // taken out first; the gaps past a vertex in fifths by how far the passed vertex's normal stands
-// out from its neighbours' (normal_laplacian), each fifth's share of the error.
+// out from its neighbours' (normal_laplacian), each fifth's share of the error; every other line
+// rebuilt from the lines above and below against every other column from its neighbours; every
+// other line predicted from the lines either side and corrected by its own samples.
 //   build/bin/edge_study                                  (the head at 512, about 0.2 s)
 //   build/bin/edge_study --scene sphere --spacing 4,8,16
 #include <algorithm>
@@ -143,6 +145,35 @@ int main(int argc, char* argv[]) {
                             b - a, se_all > 0.0 ? se / se_all : 0.0, se / double(b - a));
             }
         }
+
+        // Would the lines either side stand in for a line's own samples? Every other line rebuilt as
+        // the mean of its neighbours above and below, against every other column as the mean of its
+        // neighbours along the line: the same linear rule at the same spacing, the same pixels' triangles
+        // required to be one patch of the mesh (midpoint_errors).
+        std::vector<rgb_levels> colour(r.tri.size(), rgb_levels{0.0, 0.0, 0.0});
+        for (std::size_t i = 0; i < colour.size(); ++i)
+            if (r.tri[i] >= 0)
+                for (int ch = 0; ch < 3; ++ch) colour[i][ch] = pp.px[i][ch] * pipeline::pixel_fmt.lsb();
+        const auto patch = [&r](int32_t a, int32_t b) { return one_patch(r, a, b); };
+        std::printf("\nEvery other line (or column) as the mean of the two beside it, where the three pixels lie on one "
+                    "patch of the mesh (the rest exact):\n\n| rebuilt | pixels rebuilt | NMSE of the image |\n|---|---|---|\n");
+        for (bool across : {true, false}) {
+            const midpoint_error m = midpoint_errors(colour, r.tri, r.width, r.height, across, patch);
+            std::printf("| %s | %zu | %.3e |\n", across ? "odd lines, from the lines above and below" :
+                        "odd columns, from the pixels left and right", m.pixels, m.ref2 > 0.0 ? m.se / m.ref2 : 0.0);
+        }
+        std::printf("\nEvery other line predicted from the exact lines either side, its own samples every h pixels "
+                    "correcting the prediction (the residual rebuilt), against the same samples rebuilding the colour "
+                    "(odd_lines_predicted; the NMSE is the odd lines' part of the image's):\n\n"
+                    "| h | rule | pixels | points / px | NMSE rebuilt directly | NMSE predicted and corrected | "
+                    "ratio |\n|---|---|---|---|---|---|---|\n");
+        for (unsigned h : o.spacings)
+            for (reconstruction rule : {reconstruction::linear, reconstruction::cubic}) {
+                const predicted_lines q = odd_lines_predicted(colour, r.tri, r.width, r.height, h, rule, patch);
+                std::printf("| %u | %s | %zu | %.4f | %.3e | %.3e | %.1f |\n", h, reconstruction_name(rule), q.pixels,
+                            double(q.points) / double(std::max<std::size_t>(1, q.pixels)), q.se_direct / q.ref2,
+                            q.se_predicted / q.ref2, q.se_predicted > 0.0 ? q.se_direct / q.se_predicted : 0.0);
+            }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "edge_study: %s\n", e.what());
         return tb::exit_failure;

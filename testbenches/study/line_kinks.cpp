@@ -30,6 +30,37 @@ rgb_levels colour_on(const scene::rasterised& r, int32_t t, double xs, double ys
     return {v.x, v.y, v.z};
 }
 
+namespace {
+
+// The corners two triangles share: -1 when they belong to different objects; common, the last
+// shared vertex; own, the index in A of the last vertex B lacks.
+struct corners {
+    int shared = -1, own = -1;
+    uint32_t common = 0;
+};
+corners shared_corners(const scene::rasterised& r, int32_t ta, int32_t tb) {
+    const scene::triangle_setup& sa = r.setups[static_cast<std::size_t>(ta)];
+    const scene::triangle_setup& sb = r.setups[static_cast<std::size_t>(tb)];
+    corners c;
+    if (sa.object != sb.object) return c;
+    const auto& va = r.src->objects[sa.object].geometry.triangles[sa.triangle];
+    const auto& vb = r.src->objects[sb.object].geometry.triangles[sb.triangle];
+    c.shared = 0;
+    for (int i = 0; i < 3; ++i) {
+        const bool in_b = std::find(vb.begin(), vb.end(), va[i]) != vb.end();
+        c.shared += in_b;
+        if (in_b) c.common = va[i];
+        if (!in_b) c.own = i;
+    }
+    return c;
+}
+
+}  // namespace
+
+bool one_patch(const scene::rasterised& r, int32_t ta, int32_t tb) {
+    return ta == tb || shared_corners(r, ta, tb).shared >= 1;
+}
+
 std::vector<double> normal_laplacian(const scene::mesh& m) {
     std::vector<std::vector<uint32_t>> neighbours(m.positions.size());
     for (const auto& t : m.triangles)
@@ -55,28 +86,16 @@ segment_kinks kinks_of(const scene::rasterised& r, unsigned y, unsigned x0, unsi
     for (unsigned x = x0 + 1; x <= x1; ++x) {
         const int32_t ta = r.tri[r.index(x - 1, y)], tb = r.tri[r.index(x, y)];
         if (ta == tb) continue;
-        const scene::triangle_setup& sa = r.setups[static_cast<std::size_t>(ta)];
-        const scene::triangle_setup& sb = r.setups[static_cast<std::size_t>(tb)];
-        if (sa.object != sb.object) continue;
-        const auto& va = r.src->objects[sa.object].geometry.triangles[sa.triangle];
-        const auto& vb = r.src->objects[sb.object].geometry.triangles[sb.triangle];
-        int shared = 0, own = -1;  // own: A's vertex B lacks
-        uint32_t common = 0;
-        for (int i = 0; i < 3; ++i) {
-            const bool in_b = std::find(vb.begin(), vb.end(), va[i]) != vb.end();
-            shared += in_b;
-            if (in_b) common = va[i];
-            if (!in_b) own = i;
-        }
-        if (shared == 1) {
+        const corners c = shared_corners(r, ta, tb);
+        if (c.shared == 1) {
             out.vertex_pass[x - x0] = 1;
-            out.passed[x - x0] = common;
+            out.passed[x - x0] = c.common;
             ++out.vertices;
         }
-        if (shared != 2) continue;
+        if (c.shared != 2) continue;
         ++out.edges;
         // The shared edge: g_own = a x + b y + c = 0 on this line.
-        const glm::dvec3& pl = sa.plane[static_cast<std::size_t>(own)];
+        const glm::dvec3& pl = r.setups[static_cast<std::size_t>(ta)].plane[static_cast<std::size_t>(c.own)];
         if (pl.x == 0.0) continue;  // the edge runs along the line: no crossing point
         const double xs = std::clamp(-(pl.y * ys + pl.z) / pl.x, x - 0.5, x + 0.5);
         const double d = 1e-3;

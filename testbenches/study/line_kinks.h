@@ -29,6 +29,11 @@ rgb_levels colour_on(const scene::rasterised& r, int32_t t, double xs, double ys
 // a scan's noisy normals do not (head: 0.075).
 std::vector<double> normal_laplacian(const scene::mesh& m);
 
+// Triangles ta and tb (indices into r.setups) are one patch of the mesh: the same triangle, or two of
+// one object sharing at least one vertex. Neighbouring pixels on triangles that are not lie across a
+// silhouette or a fold.
+bool one_patch(const scene::rasterised& r, int32_t ta, int32_t tb);
+
 struct segment_kinks {
     std::vector<uint8_t> vertex_pass;  // per pixel: pixel i - 1 and i share a vertex, not an edge
     std::vector<uint32_t> passed;      // per pixel with vertex_pass: the vertex passed (else 0)

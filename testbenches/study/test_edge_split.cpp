@@ -151,4 +151,60 @@ TEST(EdgeSplit, GapsPastAVertex) {
     EXPECT_THROW(split_errors(v, tri, 4, reconstruction::linear, std::vector<uint8_t>(3, 0)), std::invalid_argument);
 }
 
+// Every other line or column from the two beside it, on a 3 x 3 grid by hand (every channel alike):
+//   10 20 30      triangles  1 0 0      triangle 1 is no patch with 0; (2, 2) is uncovered
+//   12 26 42                 0 0 0
+//   10 30  *                 0 0 -1
+// Across the lines only (1, 1) is rebuilt: (20 + 30) / 2 - 26 = -1; (0, 1) sits under triangle 1 and
+// (2, 1) over the uncovered pixel. Along the lines only (1, 1): (12 + 42) / 2 - 26 = 1; (1, 0) is
+// beside triangle 1, (1, 2) beside the uncovered pixel. ref2: the eight covered values squared, 4 984.
+TEST(EdgeSplit, MidpointsFromTheNeighboursByHand) {
+    const std::vector<double> g{10, 20, 30, 12, 26, 42, 10, 30, 0};
+    std::vector<rgb_levels> colour;
+    for (double x : g) colour.push_back({x, x, x});
+    const std::vector<int32_t> tri{1, 0, 0, 0, 0, 0, 0, 0, -1};
+    const auto patch = [](int32_t a, int32_t b) { return a == b; };
+    for (bool across : {true, false}) {
+        const midpoint_error m = midpoint_errors(colour, tri, 3, 3, across, patch);
+        EXPECT_EQ(m.pixels, 1u) << across;
+        EXPECT_DOUBLE_EQ(m.se, 3.0) << across;
+        EXPECT_DOUBLE_EQ(m.ref2, 3.0 * 4984.0) << across;
+    }
+    // Every triangle one patch: across the lines (0, 1) joins, (10 + 10) / 2 - 12 = -2.
+    const midpoint_error all = midpoint_errors(colour, tri, 3, 3, true, [](int32_t, int32_t) { return true; });
+    EXPECT_EQ(all.pixels, 2u);
+    EXPECT_DOUBLE_EQ(all.se, 3.0 + 12.0);
+    EXPECT_THROW(midpoint_errors(colour, tri, 3, 2, true, patch), std::invalid_argument);
+}
+
+// A line predicted from the lines either side, on a 5 x 3 grid by hand: above x^2 + 1, below x^2 - 1,
+// the line x^2 + 2 x. The mean of the two is x^2, so the residual 2 x is a straight line: two samples
+// (0 and 4, h = 4) rebuild it exactly. Directly the chord 6 x misses x^2 + 2 x by x^2 - 4 x = -3, -4,
+// -3 at 1, 2, 3: 34 a channel. ref2: every pixel squared, 419 + 299 + 874 a channel. A triangle of
+// another patch at (2, 1) splits the run into two of two pixels, each a sample and an exact pixel.
+TEST(EdgeSplit, LinePredictedFromTheLinesEitherSideByHand) {
+    std::vector<rgb_levels> colour(15);
+    for (int x = 0; x < 5; ++x) {
+        const double q = double(x * x);
+        colour[x] = {q + 1, q + 1, q + 1};
+        colour[5 + x] = {q + 2 * x, q + 2 * x, q + 2 * x};
+        colour[10 + x] = {q - 1, q - 1, q - 1};
+    }
+    std::vector<int32_t> tri(15, 0);
+    const auto patch = [](int32_t a, int32_t b) { return a == b; };
+    const predicted_lines p = odd_lines_predicted(colour, tri, 5, 3, 4, reconstruction::linear, patch);
+    EXPECT_EQ(p.pixels, 5u);
+    EXPECT_EQ(p.points, 2u);
+    EXPECT_NEAR(p.se_direct, 3.0 * 34.0, 1e-9);
+    EXPECT_NEAR(p.se_predicted, 0.0, 1e-9);
+    EXPECT_DOUBLE_EQ(p.ref2, 3.0 * (419.0 + 299.0 + 874.0));
+    tri[7] = 1;
+    const predicted_lines split = odd_lines_predicted(colour, tri, 5, 3, 4, reconstruction::linear, patch);
+    EXPECT_EQ(split.pixels, 4u);
+    EXPECT_EQ(split.points, 4u);
+    EXPECT_DOUBLE_EQ(split.se_direct, 0.0);
+    EXPECT_DOUBLE_EQ(split.se_predicted, 0.0);
+    EXPECT_THROW(odd_lines_predicted(colour, tri, 5, 2, 4, reconstruction::linear, patch), std::invalid_argument);
+}
+
 }  // namespace

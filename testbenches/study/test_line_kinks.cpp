@@ -61,6 +61,8 @@ TEST_F(LineKinks, JumpsSitOnTheSharedEdgeAndPredictTheNextPixel) {
             vertices += k.vertices;
             for (unsigned x = s[0] + 1; x <= s[1]; ++x) {
                 changes += r.tri[r.index(x, y)] != r.tri[r.index(x - 1, y)];
+                // Inside a segment every neighbour is on the same patch of the mesh (the planner cuts folds).
+                EXPECT_TRUE(one_patch(r, r.tri[r.index(x - 1, y)], r.tri[r.index(x, y)])) << x << "," << y;
                 if (!k.vertex_pass[x - s[0]]) continue;
                 // The vertex passed is a corner of both triangles.
                 for (unsigned p : {x - 1, x}) {
@@ -101,6 +103,28 @@ TEST_F(LineKinks, JumpsSitOnTheSharedEdgeAndPredictTheNextPixel) {
     EXPECT_LT(misses[misses.size() / 2], 0.01);
     EXPECT_GE(double(better), 0.98 * double(jumps));
     EXPECT_LT(se_jump, 0.25 * se_plain);
+}
+
+// one_patch against the meshes' own vertex lists: a triangle with itself, with a triangle that shares
+// one corner, with one sharing none, and two objects' triangles.
+TEST_F(LineKinks, OnePatchMeansASharedCorner) {
+    std::size_t shared = 0, apart = 0;
+    const auto corners = [&](int32_t t) {
+        const scene::triangle_setup& ts = r.setups[static_cast<std::size_t>(t)];
+        return std::make_pair(ts.object, w.objects[ts.object].geometry.triangles[ts.triangle]);
+    };
+    for (int32_t a = 0; a < static_cast<int32_t>(r.setups.size()); a += 97)
+        for (int32_t b = 0; b < static_cast<int32_t>(r.setups.size()); b += 13) {
+            const auto [oa, va] = corners(a);
+            const auto [ob, vb] = corners(b);
+            bool common = a == b;
+            for (auto v : va) common = common || (oa == ob && std::find(vb.begin(), vb.end(), v) != vb.end());
+            EXPECT_EQ(one_patch(r, a, b), common) << a << "," << b;
+            (common ? shared : apart) += 1;
+        }
+    EXPECT_TRUE(one_patch(r, 5, 5));
+    EXPECT_GT(shared, 0u);
+    EXPECT_GT(apart, 1000u);
 }
 
 // A fan worked by hand: centre 0 with N = (0, 0, 1), corners 1..4 around it with normals tilted
