@@ -213,7 +213,7 @@ std::optional<int> head_study(int argc, char** argv) {
     return std::nullopt;
 }
 
-// The scene options of the studies that render one (components_study, edge_study).
+// The scene options of the studies that render one (components_study, edge_study, two_line_study).
 void check_study_scene(const std::string& scene, const std::string& dev, unsigned size) {
     FUZZ_CHECK(in({"head", "sphere", "torus"}, scene), "--scene '%s'", scene.c_str());
     FUZZ_CHECK(device(dev), "--device '%s'", dev.c_str());
@@ -239,6 +239,19 @@ std::optional<int> edge_study(int argc, char** argv) {
     FUZZ_CHECK(!o.spacings.empty(), "no --spacing");
     for (unsigned h : o.spacings)
         FUZZ_CHECK(h >= 1 && h <= 64 && (h & (h - 1)) == 0, "--spacing %u", h);
+    return std::nullopt;
+}
+
+std::optional<int> two_line_study(int argc, char** argv) {
+    two_line_study_options o;
+    if (auto rc = parse_two_line_study(argc, argv, o)) return rc;
+    check_study_scene(o.scene, o.device, o.size);
+    FUZZ_CHECK(o.nmse > 0.0 && o.nmse <= 1.0, "--nmse %g", o.nmse);
+    for (const auto* tols : {&o.tol_one, &o.tol_even, &o.tol_odd}) {
+        FUZZ_CHECK(!tols->empty(), "an empty tolerance list");
+        for (double t : *tols) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a tolerance %g", t);
+    }
+    FUZZ_CHECK(within(o.m_max, shading::interp::m_min, shading::interp::m_max), "--m-max %u", o.m_max);
     return std::nullopt;
 }
 
@@ -292,7 +305,7 @@ const program programs[] = {
     {"accuracy_study", accuracy_study},     {"generator_search", generator_search},
     {"head_study", head_study},             {"render_pipeline", render_pipeline},
     {"bench_line_tlm", bench_line_tlm},     {"components_study", components_study},
-    {"edge_study", edge_study},
+    {"edge_study", edge_study},             {"two_line_study", two_line_study},
 };
 
 }  // namespace

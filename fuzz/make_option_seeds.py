@@ -10,7 +10,7 @@ OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus", "fuzz_o
 PROGRAMS = ["interp_coef_tb", "ua60553_tb", "interp_fd_tb", "ua22802_tb", "interp_horner_tb", "squared_tb",
             "interp_line_tb", "interp_study", "soak_pipeline", "render_reference", "bench_specular_tlm",
             "accuracy_study", "generator_search", "head_study", "render_pipeline", "bench_line_tlm",
-            "components_study", "edge_study"]
+            "components_study", "edge_study", "two_line_study"]
 BENCH = {  # what every bench's ctest entries pass (cmake/shading.cmake, shading_add_bench)
     "default": "--no-vcd",
     "inject": "--no-vcd --inject-mismatch 3",
@@ -49,6 +49,9 @@ SEEDS = {
                          "scene": "--scene torus --device patent --nmse 1e-4", "usage": "--m-max-diffuse 7"},
     "edge_study": {"short": "--size 48 --spacing 2,4", "scene": "--scene sphere --device ua22802 --spacing 64",
                    "usage": "--spacing 3"},
+    "two_line_study": {"short": "--size 48 --tol-one 1,2 --tol-even 1 --tol-odd 1,2",
+                       "scene": "--scene torus --device patent --nmse 1e-4 --m-max 6", "empty": "--tol-odd=",
+                       "usage": "--m-max 7"},
 }
 
 

@@ -305,4 +305,33 @@ std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o
     return std::nullopt;
 }
 
+std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_options& o) {
+    CLI::App app{"every other line predicted from the lines either side, the adaptive policy on the residual"};
+    add_study_scene(app, o.scene, o.size, o.data_dir, o.device);
+    app.add_option("--nmse", o.nmse, "the interpolation NMSE allowed (0..1]")->check(CLI::Range(1e-12, 1.0));
+    const auto tol = CLI::Range(1e-3, 64.0);
+    app.add_option("--tol-one", o.tol_one, "one line at a time: tolerances (8-bit levels, comma-separated)")
+        ->delimiter(',')
+        ->check(tol);
+    app.add_option("--tol-even", o.tol_even, "two lines: the even lines' tolerances")->delimiter(',')->check(tol);
+    app.add_option("--tol-odd", o.tol_odd, "two lines: the odd lines' tolerances (on the residual)")
+        ->delimiter(',')
+        ->check(tol);
+    app.add_option("--m-max", o.m_max, "the longest interval 2^m")->check(CLI::Range(interp::m_min, interp::m_max));
+    SHADING_CLI_PARSE(app, argc, argv);
+    // CLI11 converts an empty list value without asking the check (edge_study's --spacing '').
+    for (const auto* list : {&o.tol_one, &o.tol_even, &o.tol_odd}) {
+        if (list->empty()) {
+            std::fprintf(stderr, "two_line_study: every tolerance list needs at least one value\n");
+            return 2;
+        }
+        for (double t : *list)
+            if (!(t >= 1e-3 && t <= 64.0)) {
+                std::fprintf(stderr, "two_line_study: a tolerance of %g is outside 0.001..64\n", t);
+                return 2;
+            }
+    }
+    return std::nullopt;
+}
+
 }  // namespace shading::tb

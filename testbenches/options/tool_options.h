@@ -93,6 +93,18 @@ struct edge_study_options {
     std::vector<unsigned> spacings{2, 4, 8, 16};
 };
 
+// two_line_study: the built-in scene, the NMSE limit, the tolerances (levels) of one line at a time
+// and of the two-line scheme's even and odd lines, the longest interval 2^m_max.
+struct two_line_study_options {
+    std::string scene = "head", data_dir = default_data_dir(), device = "squared";
+    unsigned size = 512;  // 16..4096
+    double nmse = 1e-5;   // (0, 1]
+    std::vector<double> tol_one{1.0, 1.2, 1.36, 1.6, 2.0};
+    std::vector<double> tol_even{1.0, 1.2, 1.3, 1.4};
+    std::vector<double> tol_odd{0.7, 0.85, 1.0, 1.5, 2.0};
+    unsigned m_max = 5;
+};
+
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);
 std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
 std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
@@ -103,5 +115,6 @@ std::optional<int> parse_generator_search(int argc, char** argv, generator_searc
 std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o);
 std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o);
 std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o);
+std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_options& o);
 
 }  // namespace shading::tb

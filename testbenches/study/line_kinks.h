@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "edge_split.h"
+#include "golden_pipeline/pipeline.h"
 #include "scene/mesh.h"
 #include "scene/raster.h"
 
@@ -28,6 +29,9 @@ rgb_levels colour_on(const scene::rasterised& r, int32_t t, double xs, double ys
 // triangle). Smooth meshes keep it near their curvature times an edge (sphere: a median 0.0025);
 // a scan's noisy normals do not (head: 0.075).
 std::vector<double> normal_laplacian(const scene::mesh& m);
+
+// A frame's pixels in 8-bit levels (pixel_fmt codes scaled), 0 where not covered.
+std::vector<rgb_levels> levels_of(const pipeline::frame& f);
 
 // Triangles ta and tb (indices into r.setups) are one patch of the mesh: the same triangle, or two of
 // one object sharing at least one vertex. Neighbouring pixels on triangles that are not lie across a

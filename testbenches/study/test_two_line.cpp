@@ -1,0 +1,151 @@
+// The two-line scheme's pieces (two_line.h): the emulated adaptive policy on runs worked by hand,
+// against the planner itself on the head at 512 (its geometry points and NMSE, fixed-point against
+// real-valued), and the two-line frame's bookkeeping recomputed from its pixels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "scene/scene.h"
+#include "line_kinks.h"
+#include "two_line.h"
+
+namespace {
+
+using namespace shading;
+using namespace shading::study;
+
+std::vector<rgb_levels> grey(const std::vector<double>& v) {
+    std::vector<rgb_levels> out;
+    for (double x : v) out.push_back({x, x, x});
+    return out;
+}
+
+double squared_error(const std::vector<rgb_levels>& a, const std::vector<rgb_levels>& b) {
+    double se = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) se += (a[i][ch] - b[i][ch]) * (a[i][ch] - b[i][ch]);
+    return se;
+}
+
+// x^2 over 33 pixels: the 32-pixel candidate's quadratic through 0, 16, 32 meets x^2 at 8 and the
+// cubic through 0, 8, 16, 32 at the check 24, so it is sent whole (as two exact quadratics): five
+// points, 0, 8, 16, 24, 32, and no error.
+TEST(EmulateAdaptive, ParabolaSentWhole) {
+    std::vector<double> v;
+    for (int x = 0; x <= 32; ++x) v.push_back(double(x * x));
+    const emulated_run r = emulate_adaptive(grey(v), 1.0, 2, 5);
+    EXPECT_EQ(r.points, 5u);
+    EXPECT_LT(squared_error(r.out, grey(v)), 1e-12);
+}
+
+// A bump between the samples: 100 at pixel 13, 0 elsewhere. Samples 0, 8, 16, 32 and the check 24
+// all read 0, so the 32-pixel interval is sent and the bump is lost: 3 x 100^2, five points.
+TEST(EmulateAdaptive, BumpBetweenTheSamplesIsMissed) {
+    std::vector<double> v(33, 0.0);
+    v[13] = 100.0;
+    const emulated_run r = emulate_adaptive(grey(v), 1.0, 2, 5);
+    EXPECT_EQ(r.points, 5u);
+    EXPECT_DOUBLE_EQ(squared_error(r.out, grey(v)), 3.0 * 100.0 * 100.0);
+}
+
+// A step from 0 to 50 at pixel 10, 17 pixels, m 2..4, T = 1, traced by hand:
+//  - at 0, 16 pixels: the quadratic through 0, 8, 16 (0, 0, 50) at 4 is -50/8 = -6.25, beyond 2T;
+//  - 8 pixels: samples 0, 2, 4, 8 and the check 6 all 0: sent; next at 8, growing to 16 at most;
+//  - at 8, 8 pixels: the quadratic through 8, 12, 16 (0, 50, 50) at 10 is 31.25 against 50: no;
+//    4 pixels: through 8, 10, 12 at 9 is 31.25 against 0: no, so 8..11 are exact;
+//  - at 12, 4 pixels: all 50, the check 15 too: the cubic is sent. The tail pixel 16 was a sample.
+// Points: 0, 2, 4, 6, 8, 9, 10, 11, 12, 13, 14, 15, 16 = 13; no error anywhere.
+TEST(EmulateAdaptive, StepByHand) {
+    std::vector<double> v(17, 0.0);
+    for (int x = 10; x <= 16; ++x) v[x] = 50.0;
+    const emulated_run r = emulate_adaptive(grey(v), 1.0, 2, 4);
+    EXPECT_EQ(r.points, 13u);
+    EXPECT_LT(squared_error(r.out, grey(v)), 1e-18);
+    // Shorter than the shortest interval: every pixel exact.
+    EXPECT_EQ(emulate_adaptive(grey({1, 2, 3, 4}), 1.0, 2, 4).points, 4u);
+    EXPECT_EQ(emulate_adaptive({}, 1.0, 2, 4).points, 0u);
+    EXPECT_THROW(emulate_adaptive(grey(v), 1.0, 1, 4), std::invalid_argument);
+    EXPECT_THROW(emulate_adaptive(grey(v), 1.0, 4, 3), std::invalid_argument);
+}
+
+class TwoLineHead : public ::testing::Test {
+protected:
+    scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 512, 512);
+    scene::rasterised r = scene::rasterise(w);
+    pipeline::frame_constants k = pipeline::frame_constants_of(w);
+    scene::device_config dev = [] {
+        scene::device_config d;
+        d.device = scene::parse_device("squared");
+        return d;
+    }();
+    pipeline::frame pp = pipeline::per_pixel_frame(r, k, dev);
+    std::vector<rgb_levels> colour() const { return levels_of(pp); }
+    pipeline::plan_config config(double tol) const {
+        pipeline::plan_config c;
+        c.length = pipeline::length_policy::adaptive;
+        c.degree = pipeline::degree_policy::cubic;
+        c.split_at_check = true;
+        c.carry_samples = true;
+        c.eval = pipeline::evaluator::fd;
+        c.m_max = 5;
+        c.length_tol = tol;
+        return c;
+    }
+};
+
+// The emulation is the planner: on the head at 512 its points are the planner's geometry points to
+// 0.1 % and its NMSE the golden frame's against per-pixel shading to 2 % (the planner decides on Q8.8
+// codes and interpolates in fixed point, the emulation in doubles).
+TEST_F(TwoLineHead, EmulationIsThePlanner) {
+    const std::vector<rgb_levels> c = colour();
+    for (double tol : {1.0, 1.6}) {
+        const pipeline::plan_config cfg = config(tol);
+        const pipeline::plan p = pipeline::make_plan(r, k, dev, cfg);
+        const double nmse =
+            pipeline::compare(pipeline::to_image(pipeline::golden_frame(p, k, dev, cfg)), pipeline::to_image(pp)).nmse;
+        const emulated_frame f = emulate_frame(r, c, cfg, tol, tol, cfg.m_max, false);
+        EXPECT_EQ(f.pixels(), p.pixels) << tol;
+        EXPECT_NEAR(double(f.points()), double(p.geometry_points), 1e-3 * double(p.geometry_points)) << tol;
+        EXPECT_NEAR(f.nmse(), nmse, 0.02 * nmse) << tol;
+    }
+}
+
+// Two lines: the even lines are exactly the one-line emulation's (nothing of the odd lines reaches
+// them); the parts of the error and the pixels recomputed from the frame; most odd pixels predicted;
+// and the prediction pays: fewer points on the odd lines than on the even ones at the same tolerance.
+TEST_F(TwoLineHead, EvenLinesFirstThenTheOddOnesPredicted) {
+    const std::vector<rgb_levels> c = colour();
+    const pipeline::plan_config cfg = config(1.2);
+    const emulated_frame one = emulate_frame(r, c, cfg, 1.2, 1.2, 5, false);
+    const emulated_frame two = emulate_frame(r, c, cfg, 1.2, 1.2, 5, true);
+    double se[2] = {0.0, 0.0};
+    std::size_t px[2] = {0, 0};
+    for (unsigned y = 0; y < r.height; ++y)
+        for (unsigned x = 0; x < r.width; ++x) {
+            const std::size_t i = r.index(x, y);
+            if (r.tri[i] < 0) continue;
+            ++px[y % 2];
+            for (int ch = 0; ch < 3; ++ch) {
+                if (y % 2 == 0) {
+                    ASSERT_EQ(two.out[i][ch], one.out[i][ch]) << x << "," << y;
+                }
+                se[y % 2] += (two.out[i][ch] - c[i][ch]) * (two.out[i][ch] - c[i][ch]);
+            }
+        }
+    EXPECT_EQ(two.points_even, one.points_even);
+    EXPECT_EQ(two.pixels_even, px[0]);
+    EXPECT_EQ(two.pixels_odd, px[1]);
+    EXPECT_NEAR(two.se_even, se[0], 1e-9 * se[0]);
+    EXPECT_NEAR(two.se_odd, se[1], 1e-9 * se[1]);
+    EXPECT_GT(two.pixels_predicted, 9 * two.pixels_odd / 10);
+    // With the even lines exact, they are the colours, each pixel a point, and no error is theirs.
+    const emulated_frame best = emulate_frame(r, c, cfg, 1.2, 1.2, 5, true, true);
+    EXPECT_EQ(best.points_even, px[0]);
+    EXPECT_EQ(best.se_even, 0.0);
+    EXPECT_EQ(best.pixels_odd, px[1]);
+    EXPECT_LT(double(two.points_odd) / double(two.pixels_odd), 0.75 * double(two.points_even) / double(two.pixels_even));
+}
+
+}  // namespace

@@ -1,0 +1,158 @@
+// The planner's adaptive policy emulated on any signal, and the two-line scheme over a frame (two_line.h).
+#include "two_line.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "line_kinks.h"
+
+namespace shading::study {
+
+namespace {
+
+// The polynomial through v at pixels x0 + nodes[i], evaluated at x0 + p.
+template <std::size_t K>
+rgb_levels through(const std::vector<rgb_levels>& v, std::size_t x0, const std::array<unsigned, K>& nodes, double p) {
+    rgb_levels out{0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i < K; ++i) {
+        double w = 1.0;
+        for (std::size_t j = 0; j < K; ++j)
+            if (j != i) w *= (p - double(nodes[j])) / (double(nodes[i]) - double(nodes[j]));
+        for (int ch = 0; ch < 3; ++ch) out[ch] += w * v[x0 + nodes[i]][ch];
+    }
+    return out;
+}
+
+double largest_miss(const rgb_levels& a, const rgb_levels& b) {
+    return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
+}
+
+}  // namespace
+
+emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, double tol, unsigned m_min, unsigned m_max) {
+    if (m_min < 2 || m_max < m_min || m_max > 16)
+        throw std::invalid_argument("emulate_adaptive: needs 2 <= m_min <= m_max <= 16");
+    emulated_run r;
+    r.out = v;
+    std::vector<uint8_t> read(v.size(), 0);
+    auto touch = [&](std::size_t x) {
+        r.points += !read[x];
+        read[x] = 1;
+    };
+    const std::size_t len = v.size();
+    std::size_t pos = 0;
+    unsigned grow = m_max;
+    while (len > 0 && len - 1 - pos >= (std::size_t{1} << m_min)) {
+        const std::size_t room = len - 1 - pos;
+        unsigned top = m_min;
+        while (top < grow && (std::size_t{1} << (top + 1)) <= room) ++top;
+        bool sent = false;
+        for (unsigned m = top; !sent && m >= m_min; --m) {
+            const unsigned n = 1u << m;
+            const std::array<unsigned, 4> cubic{0, n / 4, n / 2, n};
+            for (unsigned e : cubic) touch(pos + e);
+            bool ok = largest_miss(through(v, pos, std::array<unsigned, 3>{0, n / 2, n}, n / 4), v[pos + n / 4]) <=
+                      2.0 * tol;
+            if (ok) {
+                touch(pos + 3 * n / 4);
+                ok = largest_miss(through(v, pos, cubic, 3 * n / 4), v[pos + 3 * n / 4]) <= tol;
+            }
+            if (ok) {
+                if (m > m_min) {  // split at the check point: the halves' quadratics
+                    const unsigned h = n / 2;
+                    for (unsigned half = 0; half < 2; ++half)
+                        for (unsigned p = 0; p < h; ++p)
+                            r.out[pos + half * h + p] =
+                                through(v, pos + half * h, std::array<unsigned, 3>{0, h / 2, h}, double(p));
+                } else {
+                    for (unsigned p = 0; p < n; ++p) r.out[pos + p] = through(v, pos, cubic, double(p));
+                }
+                pos += n;
+                grow = std::min(m + 1, m_max);
+                sent = true;
+            }
+            if (m == m_min) break;
+        }
+        if (!sent) {
+            for (unsigned p = 0; p < (1u << m_min); ++p) touch(pos + p);
+            pos += 1u << m_min;
+            grow = std::min(m_min + 1, m_max);
+        }
+    }
+    for (std::size_t x = pos; x < len; ++x) touch(x);
+    return r;
+}
+
+emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
+                             const pipeline::plan_config& seg_cfg, double tol_even, double tol_odd, unsigned m_max,
+                             bool two_line, bool even_exact) {
+    if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_frame: colours and raster differ in size");
+    emulated_frame f;
+    f.out = colour;
+    for (std::size_t i = 0; i < colour.size(); ++i)
+        if (r.tri[i] >= 0)
+            for (int ch = 0; ch < 3; ++ch) f.ref2 += colour[i][ch] * colour[i][ch];
+    // One run [x0, x1] of line y, predicted by `mean` (null: the colour itself).
+    auto run = [&](unsigned y, unsigned x0, unsigned x1, double tol, const std::vector<rgb_levels>* mean) {
+        std::vector<rgb_levels> v(colour.begin() + r.index(x0, y), colour.begin() + r.index(x1, y) + 1);
+        if (mean)
+            for (unsigned x = x0; x <= x1; ++x)
+                for (int ch = 0; ch < 3; ++ch) v[x - x0][ch] -= (*mean)[x][ch];
+        const emulated_run e = emulate_adaptive(v, tol, interp::m_min, m_max);
+        for (unsigned x = x0; x <= x1; ++x) {
+            rgb_levels& o = f.out[r.index(x, y)];
+            o = e.out[x - x0];
+            if (mean)
+                for (int ch = 0; ch < 3; ++ch) o[ch] += (*mean)[x][ch];
+            for (int ch = 0; ch < 3; ++ch) {
+                const double d = o[ch] - colour[r.index(x, y)][ch];
+                (y % 2 ? f.se_odd : f.se_even) += d * d;
+            }
+        }
+        (y % 2 ? f.points_odd : f.points_even) += e.points;
+        (y % 2 ? f.pixels_odd : f.pixels_even) += x1 - x0 + 1;
+        f.pixels_predicted += mean ? x1 - x0 + 1 : 0;
+    };
+    auto line = [&](unsigned y, double tol, bool predicted) {
+        std::vector<rgb_levels> mean;
+        std::vector<uint8_t> on_patch(r.width, 0);
+        if (predicted) {
+            mean.assign(r.width, rgb_levels{0.0, 0.0, 0.0});
+            for (unsigned x = 0; x < r.width; ++x) {
+                const int32_t t = r.tri[r.index(x, y)], a = r.tri[r.index(x, y - 1)], b = r.tri[r.index(x, y + 1)];
+                on_patch[x] = t >= 0 && a >= 0 && b >= 0 && one_patch(r, a, t) && one_patch(r, t, b);
+                for (int ch = 0; ch < 3; ++ch)
+                    mean[x][ch] = 0.5 * (f.out[r.index(x, y - 1)][ch] + f.out[r.index(x, y + 1)][ch]);
+            }
+        }
+        for (const auto& s : pipeline::line_segments(r, y, seg_cfg, nullptr)) {
+            unsigned x0 = s[0];
+            for (unsigned x = s[0] + 1; x <= s[1] + 1; ++x)
+                if (x == s[1] + 1 || on_patch[x] != on_patch[x0]) {
+                    run(y, x0, x - 1, tol, on_patch[x0] ? &mean : nullptr);
+                    x0 = x;
+                }
+        }
+    };
+    if (!two_line) {
+        for (unsigned y = 0; y < r.height; ++y) line(y, tol_even, false);
+        return f;
+    }
+    for (unsigned y = 0; y < r.height; y += 2) {
+        if (!even_exact) {
+            line(y, tol_even, false);
+            continue;
+        }
+        for (unsigned x = 0; x < r.width; ++x) {
+            const bool covered = r.tri[r.index(x, y)] >= 0;
+            f.points_even += covered;
+            f.pixels_even += covered;
+        }
+    }
+    for (unsigned y = 1; y < r.height; y += 2) line(y, tol_odd, y + 1 < r.height);
+    return f;
+}
+
+}  // namespace shading::study

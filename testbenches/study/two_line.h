@@ -1,0 +1,54 @@
+// A two-line scheme for the interpolation target, measured before it is built: the even lines
+// rendered by the adaptive length policy, then each odd line predicted by the mean of the delivered
+// lines above and below (a line buffer and an adder a channel) and the same policy run on the
+// residual, its samples correcting the prediction. edge_study measures how much smoother that
+// residual is at fixed spacings; this measures what the policy makes of it.
+//
+// The planner cannot run on a residual, so its adaptive policy is emulated here, real-valued
+// (emulate_adaptive); two_line_study prints the emulation beside the planner on the same frame, and
+// test_two_line holds them to each other.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "edge_split.h"
+#include "golden_pipeline/pipeline.h"
+#include "scene/raster.h"
+
+namespace shading::study {
+
+// plan.cpp's adaptive length with the cubic degree, sample set case 1, split at the check point, the
+// exact fallback and growth by one level, on one run of values v (levels): from each position the
+// longest m in m_min..grow (2^m pixels of room) whose quadratic through t = 0, 1/2, 1 misses the
+// sample at t = 1/4 by at most 2 tol and whose cubic through t = 0, 1/4, 1/2, 1 misses the check
+// point t = 3/4 by at most tol (the largest channel); sent as the two halves' quadratics (2^m_min:
+// the cubic itself); where even 2^m_min misses, its pixels exact; the tail exact. points: the
+// distinct pixels whose value it read (samples, check points, the candidates it turned down).
+struct emulated_run {
+    std::vector<rgb_levels> out;
+    std::size_t points = 0;
+};
+emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, double tol, unsigned m_min, unsigned m_max);
+
+// A frame's per-pixel colours (row-major, levels; uncovered pixels ignored) rendered by the emulated
+// policy over the planner's segments (pipeline::line_segments with seg_cfg). One line at a time
+// (two_line false: tol_even everywhere), or the two-line scheme: the even lines first at tol_even,
+// then each odd line with a line below at tol_odd, in runs where the pixel and those above and below
+// lie on one patch of the mesh (one_patch; the residual against the mean of the delivered lines above
+// and below) and runs where not (the colour itself); the last line, odd without a line below, on its own.
+// even_exact (two lines only): the even lines are the colours themselves, each pixel a point, so the
+// odd lines' figures show what the prediction gives at best.
+struct emulated_frame {
+    std::vector<rgb_levels> out;
+    std::size_t points_even = 0, points_odd = 0, pixels_even = 0, pixels_odd = 0, pixels_predicted = 0;
+    double se_even = 0.0, se_odd = 0.0, ref2 = 0.0;  // squared error against colour, and its sum of squares
+    std::size_t points() const { return points_even + points_odd; }
+    std::size_t pixels() const { return pixels_even + pixels_odd; }
+    double nmse() const { return ref2 > 0.0 ? (se_even + se_odd) / ref2 : 0.0; }
+};
+emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
+                             const pipeline::plan_config& seg_cfg, double tol_even, double tol_odd, unsigned m_max,
+                             bool two_line, bool even_exact = false);
+
+}  // namespace shading::study

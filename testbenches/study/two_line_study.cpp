@@ -1,0 +1,139 @@
+// Every other line predicted from the lines either side (two_line.h): is the interpolation target
+// (NMSE <= 1e-5 against per-pixel shading, >= 3x fewer long operations than the scan-line Phong) in
+// reach of a two-line scheme? Golden model only. On one scene (default the head at 512, the squared
+// device, n = 20):
+//  - the planner (adaptive, cubic, split at the check, carry, forward differences, no line-above
+//    limit) at each --tol-one beside its emulation (emulate_adaptive) on the same lines: the points
+//    and NMSE agree, so the emulation's figures stand for the planner's;
+//  - the emulation one line at a time, and the two-line scheme at each --tol-even x --tol-odd: the
+//    points per pixel of each line parity and their parts of the NMSE; the odd lines with the even
+//    ones exact (what the prediction gives at best);
+//  - the cheapest of each meeting --nmse, and its long operations estimated at the planner's own
+//    cost of a point (its counted long operations over its geometry points at the cheapest
+//    one-line tolerance), against the scan-line Phong.
+//   build/bin/two_line_study                  (about 10 s)
+//   build/bin/two_line_study --size 64 --tol-one 1 --tol-even 1 --tol-odd 2
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <optional>
+#include <vector>
+
+#include "scene/shade.h"
+#include "testbenches/common/exit_status.h"
+#include "testbenches/options/tool_options.h"
+#include "line_kinks.h"
+#include "two_line.h"
+
+using namespace shading;
+using namespace shading::pipeline;
+using namespace shading::study;
+
+int main(int argc, char* argv[]) {
+    tb::two_line_study_options o;
+    if (auto rc = tb::parse_two_line_study(argc, argv, o)) return *rc;
+    try {
+        const scene::world w = scene::builtin_scene(o.scene, o.data_dir, o.size, o.size);
+        const scene::rasterised r = scene::rasterise(w);
+        const frame_constants k = frame_constants_of(w);
+        scene::device_config dev;
+        dev.device = scene::parse_device(o.device);
+        const frame pp = per_pixel_frame(r, k, dev);
+        const std::vector<rgb_levels> colour = levels_of(pp);
+        const scene::shaded_image ref = to_image(pp);
+        scene::render_stats sl;
+        scene::render_phong_scanline(r, &sl);
+        if (sl.pixels == 0) {
+            std::fprintf(stderr, "two_line_study: the scene covers no pixel at %ux%u\n", o.size, o.size);
+            return tb::exit_failure;
+        }
+        const double pixels = double(sl.pixels), scanline = double(sl.total().long_ops()) / pixels;
+
+        plan_config base;
+        base.length = length_policy::adaptive;
+        base.degree = degree_policy::cubic;
+        base.split_at_check = true;
+        base.carry_samples = true;
+        base.eval = evaluator::fd;
+        base.m_max = o.m_max;
+
+        std::printf("# Two lines: every other line predicted from the lines either side. %s %ux%u, device %s, n = %u, "
+                    "m <= %u, NMSE limit %.3g\n\n",
+                    o.scene.c_str(), o.size, o.size, o.device.c_str(), k.n, o.m_max, o.nmse);
+        std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels).\n\n", scanline, sl.pixels);
+        std::printf("One line at a time, the planner and its emulation on the same lines:\n\n"
+                    "| T | planner points / px | planner NMSE | planner long ops / px (x scan-line) | its long ops a point "
+                    "| emulation points / px | emulation NMSE |\n|---|---|---|---|---|---|---|\n");
+        std::optional<double> one_points, one_T, per_point, one_long;
+        for (double t : o.tol_one) {
+            plan_config c = base;
+            c.length_tol = t;
+            const plan p = make_plan(r, k, dev, c);
+            const double e = compare(to_image(golden_frame(p, k, dev, c)), ref).nmse;
+            const double cost = double(hardware_ops(p, c, dev, k.n).total().long_ops()) / pixels;
+            const emulated_frame f = emulate_frame(r, colour, c, t, t, o.m_max, false);
+            const double pts = double(f.points()) / double(f.pixels());
+            std::printf("| %.2f | %.4f | %.3e | %.2f (%.2fx) | %.1f | %.4f | %.3e |\n", t, p.geometry_points / pixels, e,
+                        cost, scanline / cost, cost * pixels / double(p.geometry_points), pts, f.nmse());
+            if (f.nmse() <= o.nmse && (!one_points || pts < *one_points)) {
+                one_points = pts;
+                one_T = t;
+                per_point = cost * pixels / double(p.geometry_points);
+                one_long = cost;
+            }
+        }
+        std::printf("\nThe two-line scheme (emulated): even lines at T_even, then each odd line's residual against the "
+                    "mean of the delivered lines above and below at T_odd:\n\n"
+                    "| T_even | T_odd | points / px | even lines | odd lines | odd pixels predicted | NMSE | even lines' "
+                    "part | odd lines' part |\n|---|---|---|---|---|---|---|---|---|\n");
+        std::optional<double> two_points;
+        double two_even = 0.0, two_odd = 0.0, two_nmse = 0.0;
+        for (double te : o.tol_even)
+            for (double to : o.tol_odd) {
+                const emulated_frame f = emulate_frame(r, colour, base, te, to, o.m_max, true);
+                const double pts = double(f.points()) / double(f.pixels());
+                std::printf("| %.2f | %.2f | %.4f | %.4f | %.4f | %.3f | %.3e | %.2e | %.2e |\n", te, to, pts,
+                            double(f.points_even) / double(std::max<std::size_t>(1, f.pixels_even)),
+                            double(f.points_odd) / double(std::max<std::size_t>(1, f.pixels_odd)),
+                            double(f.pixels_predicted) / double(std::max<std::size_t>(1, f.pixels_odd)), f.nmse(),
+                            f.se_even / f.ref2, f.se_odd / f.ref2);
+                if (f.nmse() <= o.nmse && (!two_points || pts < *two_points)) {
+                    two_points = pts;
+                    two_even = te;
+                    two_odd = to;
+                    two_nmse = f.nmse();
+                }
+            }
+        std::printf("\nThe odd lines at best: the even lines exact (every pixel a point), the odd lines as above:\n\n"
+                    "| T_odd | odd lines' points / px | odd lines' part of the NMSE |\n|---|---|---|\n");
+        for (double to : o.tol_odd) {
+            const emulated_frame f = emulate_frame(r, colour, base, to, to, o.m_max, true, true);
+            std::printf("| %.2f | %.4f | %.2e |\n", to,
+                        double(f.points_odd) / double(std::max<std::size_t>(1, f.pixels_odd)), f.se_odd / f.ref2);
+        }
+        std::printf("\nThe cheapest meeting NMSE <= %.3g:\n", o.nmse);
+        if (!one_points) {
+            std::printf("- one line at a time: none of --tol-one\n");
+        } else {
+            std::printf("- one line at a time: T = %.2f, %.4f points / px; the planner there %.2f long ops / px "
+                        "(%.2fx the scan-line Phong), %.1f a point\n",
+                        *one_T, *one_points, *one_long, scanline / *one_long, *per_point);
+        }
+        if (!two_points) {
+            std::printf("- two lines: none of --tol-even x --tol-odd\n");
+        } else {
+            std::printf("- two lines: T_even = %.2f, T_odd = %.2f, %.4f points / px (NMSE %.3e)", two_even, two_odd,
+                        *two_points, two_nmse);
+            if (one_points)
+                std::printf(": %.2fx fewer points; at %.1f long ops a point about %.2f long ops / px, %.2fx the "
+                            "scan-line Phong (3x needs %.4f points / px)",
+                            *one_points / *two_points, *per_point, *two_points * *per_point,
+                            scanline / (*two_points * *per_point), scanline / 3.0 / *per_point);
+            std::printf("\n");
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "two_line_study: %s\n", e.what());
+        return tb::exit_failure;
+    }
+    return tb::exit_success;
+}
