@@ -94,15 +94,17 @@ struct edge_study_options {
 };
 
 // two_line_study: the built-in scene, the NMSE limit, the tolerances (levels) of one line at a time
-// and of the two-line scheme's even and odd lines, the longest interval 2^m_max.
+// and of the two-line scheme's even and odd lines, the longest interval 2^m_max, the line-above
+// limit K (-1: none).
 struct two_line_study_options {
     std::string scene = "head", data_dir = default_data_dir(), device = "squared";
     unsigned size = 512;  // 16..4096
     double nmse = 1e-5;   // (0, 1]
-    std::vector<double> tol_one{1.0, 1.2, 1.36, 1.6, 2.0};
-    std::vector<double> tol_even{1.0, 1.2, 1.3, 1.4};
-    std::vector<double> tol_odd{0.7, 0.85, 1.0, 1.5, 2.0};
+    std::vector<double> tol_one{1.6, 1.8, 1.9, 2.0};
+    std::vector<double> tol_even{1.6, 1.8, 1.9};
+    std::vector<double> tol_odd{1.0, 1.5, 2.0, 3.0};
     unsigned m_max = 5;
+    int above_slack = 2;  // -1..m_max
 };
 
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);

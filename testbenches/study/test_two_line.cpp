@@ -3,7 +3,9 @@
 // real-valued), and the two-line frame's bookkeeping recomputed from its pixels.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 #include <vector>
 
@@ -22,6 +24,15 @@ std::vector<rgb_levels> grey(const std::vector<double>& v) {
     return out;
 }
 
+adaptive_emulation policy(double tol, unsigned m_min, unsigned m_max, int above_slack = -1) {
+    adaptive_emulation e;
+    e.tol = tol;
+    e.m_min = m_min;
+    e.m_max = m_max;
+    e.above_slack = above_slack;
+    return e;
+}
+
 double squared_error(const std::vector<rgb_levels>& a, const std::vector<rgb_levels>& b) {
     double se = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -35,9 +46,28 @@ double squared_error(const std::vector<rgb_levels>& a, const std::vector<rgb_lev
 TEST(EmulateAdaptive, ParabolaSentWhole) {
     std::vector<double> v;
     for (int x = 0; x <= 32; ++x) v.push_back(double(x * x));
-    const emulated_run r = emulate_adaptive(grey(v), 1.0, 2, 5);
+    const emulated_run r = emulate_adaptive(grey(v), policy(1.0, 2, 5));
     EXPECT_EQ(r.points, 5u);
     EXPECT_LT(squared_error(r.out, grey(v)), 1e-12);
+    // Its levels: the 32-pixel interval went out as two 16-pixel halves (m = 4), the tail pixel exact.
+    for (int x = 0; x < 32; ++x) EXPECT_EQ(r.level[x], 4) << x;
+    EXPECT_EQ(r.level[32], 0);
+}
+
+// The line-above limit: the line before at level 2 everywhere and K = 1 allow m <= 3, so x^2 goes out
+// in 8-pixel intervals (samples 0, 2, 4, 8 and the check 6 each, the first shared): 4 x 4 + 1 = 17
+// points, every level 2 (the 8-pixel cubics' 4-pixel halves); the line before sending nothing there
+// (no_level) limits nothing.
+TEST(EmulateAdaptive, LineAboveLimitsTheLength) {
+    std::vector<double> v;
+    for (int x = 0; x <= 32; ++x) v.push_back(double(x * x));
+    std::vector<uint8_t> above(33, 2);
+    const emulated_run r = emulate_adaptive(grey(v), policy(1.0, 2, 5, 1), above.data());
+    EXPECT_EQ(r.points, 17u);
+    EXPECT_LT(squared_error(r.out, grey(v)), 1e-12);
+    for (int x = 0; x < 32; ++x) EXPECT_EQ(r.level[x], 2) << x;
+    std::fill(above.begin(), above.end(), no_level);
+    EXPECT_EQ(emulate_adaptive(grey(v), policy(1.0, 2, 5, 1), above.data()).points, 5u);
 }
 
 // A bump between the samples: 100 at pixel 13, 0 elsewhere. Samples 0, 8, 16, 32 and the check 24
@@ -45,7 +75,7 @@ TEST(EmulateAdaptive, ParabolaSentWhole) {
 TEST(EmulateAdaptive, BumpBetweenTheSamplesIsMissed) {
     std::vector<double> v(33, 0.0);
     v[13] = 100.0;
-    const emulated_run r = emulate_adaptive(grey(v), 1.0, 2, 5);
+    const emulated_run r = emulate_adaptive(grey(v), policy(1.0, 2, 5));
     EXPECT_EQ(r.points, 5u);
     EXPECT_DOUBLE_EQ(squared_error(r.out, grey(v)), 3.0 * 100.0 * 100.0);
 }
@@ -60,14 +90,14 @@ TEST(EmulateAdaptive, BumpBetweenTheSamplesIsMissed) {
 TEST(EmulateAdaptive, StepByHand) {
     std::vector<double> v(17, 0.0);
     for (int x = 10; x <= 16; ++x) v[x] = 50.0;
-    const emulated_run r = emulate_adaptive(grey(v), 1.0, 2, 4);
+    const emulated_run r = emulate_adaptive(grey(v), policy(1.0, 2, 4));
     EXPECT_EQ(r.points, 13u);
     EXPECT_LT(squared_error(r.out, grey(v)), 1e-18);
     // Shorter than the shortest interval: every pixel exact.
-    EXPECT_EQ(emulate_adaptive(grey({1, 2, 3, 4}), 1.0, 2, 4).points, 4u);
-    EXPECT_EQ(emulate_adaptive({}, 1.0, 2, 4).points, 0u);
-    EXPECT_THROW(emulate_adaptive(grey(v), 1.0, 1, 4), std::invalid_argument);
-    EXPECT_THROW(emulate_adaptive(grey(v), 1.0, 4, 3), std::invalid_argument);
+    EXPECT_EQ(emulate_adaptive(grey({1, 2, 3, 4}), policy(1.0, 2, 4)).points, 4u);
+    EXPECT_EQ(emulate_adaptive({}, policy(1.0, 2, 4)).points, 0u);
+    EXPECT_THROW(emulate_adaptive(grey(v), policy(1.0, 1, 4)), std::invalid_argument);
+    EXPECT_THROW(emulate_adaptive(grey(v), policy(1.0, 4, 3)), std::invalid_argument);
 }
 
 class TwoLineHead : public ::testing::Test {
@@ -82,7 +112,7 @@ protected:
     }();
     pipeline::frame pp = pipeline::per_pixel_frame(r, k, dev);
     std::vector<rgb_levels> colour() const { return levels_of(pp); }
-    pipeline::plan_config config(double tol) const {
+    pipeline::plan_config config(double tol, int above_slack = -1) const {
         pipeline::plan_config c;
         c.length = pipeline::length_policy::adaptive;
         c.degree = pipeline::degree_policy::cubic;
@@ -91,21 +121,22 @@ protected:
         c.eval = pipeline::evaluator::fd;
         c.m_max = 5;
         c.length_tol = tol;
+        c.above_slack = above_slack;
         return c;
     }
 };
 
-// The emulation is the planner: on the head at 512 its points are the planner's geometry points to
-// 0.1 % and its NMSE the golden frame's against per-pixel shading to 2 % (the planner decides on Q8.8
-// codes and interpolates in fixed point, the emulation in doubles).
+// The emulation is the planner: on the head at 512, without and with the line-above limit, its points
+// are the planner's geometry points to 0.1 % and its NMSE the golden frame's against per-pixel shading
+// to 2 % (the planner decides on Q8.8 codes and interpolates in fixed point, the emulation in doubles).
 TEST_F(TwoLineHead, EmulationIsThePlanner) {
     const std::vector<rgb_levels> c = colour();
-    for (double tol : {1.0, 1.6}) {
-        const pipeline::plan_config cfg = config(tol);
+    for (const auto& [tol, above_slack] : {std::pair{1.0, -1}, std::pair{1.6, -1}, std::pair{1.9, 2}}) {
+        const pipeline::plan_config cfg = config(tol, above_slack);
         const pipeline::plan p = pipeline::make_plan(r, k, dev, cfg);
         const double nmse =
             pipeline::compare(pipeline::to_image(pipeline::golden_frame(p, k, dev, cfg)), pipeline::to_image(pp)).nmse;
-        const emulated_frame f = emulate_frame(r, c, cfg, tol, tol, cfg.m_max, false);
+        const emulated_frame f = emulate_frame(r, c, cfg, tol, tol, false);
         EXPECT_EQ(f.pixels(), p.pixels) << tol;
         EXPECT_NEAR(double(f.points()), double(p.geometry_points), 1e-3 * double(p.geometry_points)) << tol;
         EXPECT_NEAR(f.nmse(), nmse, 0.02 * nmse) << tol;
@@ -118,8 +149,8 @@ TEST_F(TwoLineHead, EmulationIsThePlanner) {
 TEST_F(TwoLineHead, EvenLinesFirstThenTheOddOnesPredicted) {
     const std::vector<rgb_levels> c = colour();
     const pipeline::plan_config cfg = config(1.2);
-    const emulated_frame one = emulate_frame(r, c, cfg, 1.2, 1.2, 5, false);
-    const emulated_frame two = emulate_frame(r, c, cfg, 1.2, 1.2, 5, true);
+    const emulated_frame one = emulate_frame(r, c, cfg, 1.2, 1.2, false);
+    const emulated_frame two = emulate_frame(r, c, cfg, 1.2, 1.2, true);
     double se[2] = {0.0, 0.0};
     std::size_t px[2] = {0, 0};
     for (unsigned y = 0; y < r.height; ++y)
@@ -141,7 +172,7 @@ TEST_F(TwoLineHead, EvenLinesFirstThenTheOddOnesPredicted) {
     EXPECT_NEAR(two.se_odd, se[1], 1e-9 * se[1]);
     EXPECT_GT(two.pixels_predicted, 9 * two.pixels_odd / 10);
     // With the even lines exact, they are the colours, each pixel a point, and no error is theirs.
-    const emulated_frame best = emulate_frame(r, c, cfg, 1.2, 1.2, 5, true, true);
+    const emulated_frame best = emulate_frame(r, c, cfg, 1.2, 1.2, true, true);
     EXPECT_EQ(best.points_even, px[0]);
     EXPECT_EQ(best.se_even, 0.0);
     EXPECT_EQ(best.pixels_odd, px[1]);

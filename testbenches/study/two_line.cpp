@@ -31,15 +31,25 @@ double largest_miss(const rgb_levels& a, const rgb_levels& b) {
 
 }  // namespace
 
-emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, double tol, unsigned m_min, unsigned m_max) {
+emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_emulation& e, const uint8_t* above) {
+    const unsigned m_min = e.m_min, m_max = e.m_max;
     if (m_min < 2 || m_max < m_min || m_max > 16)
         throw std::invalid_argument("emulate_adaptive: needs 2 <= m_min <= m_max <= 16");
     emulated_run r;
     r.out = v;
+    r.level.assign(v.size(), 0);
     std::vector<uint8_t> read(v.size(), 0);
     auto touch = [&](std::size_t x) {
         r.points += !read[x];
         read[x] = 1;
+    };
+    // The line-above limit (plan.cpp, within_above): every pixel of the candidate at most K levels
+    // below the line before's level there.
+    auto within_above = [&](std::size_t pos, unsigned m) {
+        if (e.above_slack < 0 || !above) return true;
+        for (std::size_t x = pos; x < pos + (std::size_t{1} << m); ++x)
+            if (above[x] != no_level && unsigned(above[x]) + unsigned(e.above_slack) < m) return false;
+        return true;
     };
     const std::size_t len = v.size();
     std::size_t pos = 0;
@@ -50,14 +60,15 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, double tol, unsi
         while (top < grow && (std::size_t{1} << (top + 1)) <= room) ++top;
         bool sent = false;
         for (unsigned m = top; !sent && m >= m_min; --m) {
+            if (m > m_min && !within_above(pos, m)) continue;
             const unsigned n = 1u << m;
             const std::array<unsigned, 4> cubic{0, n / 4, n / 2, n};
-            for (unsigned e : cubic) touch(pos + e);
+            for (unsigned t : cubic) touch(pos + t);
             bool ok = largest_miss(through(v, pos, std::array<unsigned, 3>{0, n / 2, n}, n / 4), v[pos + n / 4]) <=
-                      2.0 * tol;
+                      2.0 * e.tol;
             if (ok) {
                 touch(pos + 3 * n / 4);
-                ok = largest_miss(through(v, pos, cubic, 3 * n / 4), v[pos + 3 * n / 4]) <= tol;
+                ok = largest_miss(through(v, pos, cubic, 3 * n / 4), v[pos + 3 * n / 4]) <= e.tol;
             }
             if (ok) {
                 if (m > m_min) {  // split at the check point: the halves' quadratics
@@ -69,6 +80,7 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, double tol, unsi
                 } else {
                     for (unsigned p = 0; p < n; ++p) r.out[pos + p] = through(v, pos, cubic, double(p));
                 }
+                std::fill_n(r.level.begin() + std::ptrdiff_t(pos), n, uint8_t(m > m_min ? m - 1 : m));
                 pos += n;
                 grow = std::min(m + 1, m_max);
                 sent = true;
@@ -86,36 +98,46 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, double tol, unsi
 }
 
 emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
-                             const pipeline::plan_config& seg_cfg, double tol_even, double tol_odd, unsigned m_max,
-                             bool two_line, bool even_exact) {
+                             const pipeline::plan_config& cfg, double tol_even, double tol_odd, bool two_line,
+                             bool even_exact) {
     if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_frame: colours and raster differ in size");
     emulated_frame f;
     f.out = colour;
     for (std::size_t i = 0; i < colour.size(); ++i)
         if (r.tri[i] >= 0)
             for (int ch = 0; ch < 3; ++ch) f.ref2 += colour[i][ch] * colour[i][ch];
+    // The line before's levels in each pass (parity 0: one line at a time or the even lines; 1: the
+    // odd lines), and this line's as it is rendered.
+    std::vector<uint8_t> before[2], now(r.width, no_level);
     // One run [x0, x1] of line y, predicted by `mean` (null: the colour itself).
-    auto run = [&](unsigned y, unsigned x0, unsigned x1, double tol, const std::vector<rgb_levels>* mean) {
+    auto run = [&](unsigned y, unsigned x0, unsigned x1, double tol, const std::vector<rgb_levels>* mean,
+                   const std::vector<uint8_t>& above) {
         std::vector<rgb_levels> v(colour.begin() + r.index(x0, y), colour.begin() + r.index(x1, y) + 1);
         if (mean)
             for (unsigned x = x0; x <= x1; ++x)
                 for (int ch = 0; ch < 3; ++ch) v[x - x0][ch] -= (*mean)[x][ch];
-        const emulated_run e = emulate_adaptive(v, tol, interp::m_min, m_max);
+        adaptive_emulation e;
+        e.tol = tol;
+        e.m_min = cfg.m_min;
+        e.m_max = cfg.m_max;
+        e.above_slack = cfg.above_slack;
+        const emulated_run er = emulate_adaptive(v, e, above.empty() ? nullptr : above.data() + x0);
         for (unsigned x = x0; x <= x1; ++x) {
             rgb_levels& o = f.out[r.index(x, y)];
-            o = e.out[x - x0];
+            o = er.out[x - x0];
             if (mean)
                 for (int ch = 0; ch < 3; ++ch) o[ch] += (*mean)[x][ch];
             for (int ch = 0; ch < 3; ++ch) {
                 const double d = o[ch] - colour[r.index(x, y)][ch];
                 (y % 2 ? f.se_odd : f.se_even) += d * d;
             }
+            now[x] = er.level[x - x0];
         }
-        (y % 2 ? f.points_odd : f.points_even) += e.points;
+        (y % 2 ? f.points_odd : f.points_even) += er.points;
         (y % 2 ? f.pixels_odd : f.pixels_even) += x1 - x0 + 1;
         f.pixels_predicted += mean ? x1 - x0 + 1 : 0;
     };
-    auto line = [&](unsigned y, double tol, bool predicted) {
+    auto line = [&](unsigned y, double tol, bool predicted, std::vector<uint8_t>& above) {
         std::vector<rgb_levels> mean;
         std::vector<uint8_t> on_patch(r.width, 0);
         if (predicted) {
@@ -127,22 +149,24 @@ emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_l
                     mean[x][ch] = 0.5 * (f.out[r.index(x, y - 1)][ch] + f.out[r.index(x, y + 1)][ch]);
             }
         }
-        for (const auto& s : pipeline::line_segments(r, y, seg_cfg, nullptr)) {
+        now.assign(r.width, no_level);
+        for (const auto& s : pipeline::line_segments(r, y, cfg, nullptr)) {
             unsigned x0 = s[0];
             for (unsigned x = s[0] + 1; x <= s[1] + 1; ++x)
                 if (x == s[1] + 1 || on_patch[x] != on_patch[x0]) {
-                    run(y, x0, x - 1, tol, on_patch[x0] ? &mean : nullptr);
+                    run(y, x0, x - 1, tol, on_patch[x0] ? &mean : nullptr, above);
                     x0 = x;
                 }
         }
+        above = now;  // this line's levels are the next one's line above
     };
     if (!two_line) {
-        for (unsigned y = 0; y < r.height; ++y) line(y, tol_even, false);
+        for (unsigned y = 0; y < r.height; ++y) line(y, tol_even, false, before[0]);
         return f;
     }
     for (unsigned y = 0; y < r.height; y += 2) {
         if (!even_exact) {
-            line(y, tol_even, false);
+            line(y, tol_even, false, before[0]);
             continue;
         }
         for (unsigned x = 0; x < r.width; ++x) {
@@ -151,7 +175,7 @@ emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_l
             f.pixels_even += covered;
         }
     }
-    for (unsigned y = 1; y < r.height; y += 2) line(y, tol_odd, y + 1 < r.height);
+    for (unsigned y = 1; y < r.height; y += 2) line(y, tol_odd, y + 1 < r.height, before[1]);
     return f;
 }
 

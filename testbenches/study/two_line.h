@@ -23,22 +23,36 @@ namespace shading::study {
 // longest m in m_min..grow (2^m pixels of room) whose quadratic through t = 0, 1/2, 1 misses the
 // sample at t = 1/4 by at most 2 tol and whose cubic through t = 0, 1/4, 1/2, 1 misses the check
 // point t = 3/4 by at most tol (the largest channel); sent as the two halves' quadratics (2^m_min:
-// the cubic itself); where even 2^m_min misses, its pixels exact; the tail exact. points: the
-// distinct pixels whose value it read (samples, check points, the candidates it turned down).
+// the cubic itself); where even 2^m_min misses, its pixels exact; the tail exact. With the line-above
+// limit (above_slack K >= 0 and the levels `above` of the run's pixels on the line before), a
+// candidate longer than 2^m_min is not tried where a pixel's level there plus K is below m.
+// points: the distinct pixels whose value it read (samples, check points, candidates turned down);
+// level: each pixel's interval m as sent (a split interval's halves m - 1, exact pixels 0), the next
+// line's `above`.
+struct adaptive_emulation {
+    double tol = 1.0;  // levels
+    unsigned m_min = interp::m_min, m_max = 5;
+    int above_slack = -1;  // plan_config::above_slack; negative: no limit
+};
+inline constexpr uint8_t no_level = 0xFF;  // `above` where the line before sent nothing
 struct emulated_run {
     std::vector<rgb_levels> out;
+    std::vector<uint8_t> level;
     std::size_t points = 0;
 };
-emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, double tol, unsigned m_min, unsigned m_max);
+emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_emulation& e,
+                              const uint8_t* above = nullptr);
 
 // A frame's per-pixel colours (row-major, levels; uncovered pixels ignored) rendered by the emulated
-// policy over the planner's segments (pipeline::line_segments with seg_cfg). One line at a time
-// (two_line false: tol_even everywhere), or the two-line scheme: the even lines first at tol_even,
-// then each odd line with a line below at tol_odd, in runs where the pixel and those above and below
-// lie on one patch of the mesh (one_patch; the residual against the mean of the delivered lines above
-// and below) and runs where not (the colour itself); the last line, odd without a line below, on its own.
-// even_exact (two lines only): the even lines are the colours themselves, each pixel a point, so the
-// odd lines' figures show what the prediction gives at best.
+// policy over the planner's segments (pipeline::line_segments with cfg), with cfg's m_min, m_max and
+// line-above limit. One line at a time (two_line false: tol_even everywhere), or the two-line scheme:
+// the even lines first at tol_even, then each odd line with a line below at tol_odd, in runs where the
+// pixel and those above and below lie on one patch of the mesh (one_patch; the residual against the
+// mean of the delivered lines above and below) and runs where not (the colour itself); the last line,
+// odd without a line below, on its own. Each line's limit reads the levels of the line before it in
+// its own pass (one line at a time y - 1; two lines y - 2). even_exact (two lines only): the even lines
+// are the colours themselves, each pixel a point, so the odd lines' figures show what the prediction
+// gives at best.
 struct emulated_frame {
     std::vector<rgb_levels> out;
     std::size_t points_even = 0, points_odd = 0, pixels_even = 0, pixels_odd = 0, pixels_predicted = 0;
@@ -48,7 +62,7 @@ struct emulated_frame {
     double nmse() const { return ref2 > 0.0 ? (se_even + se_odd) / ref2 : 0.0; }
 };
 emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
-                             const pipeline::plan_config& seg_cfg, double tol_even, double tol_odd, unsigned m_max,
-                             bool two_line, bool even_exact = false);
+                             const pipeline::plan_config& cfg, double tol_even, double tol_odd, bool two_line,
+                             bool even_exact = false);
 
 }  // namespace shading::study
