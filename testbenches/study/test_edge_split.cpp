@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "edge_split.h"
+#include "levels_testing.h"
 
 namespace {
 
@@ -22,12 +23,7 @@ std::vector<double> of(std::size_t len, double (*f)(double)) {
     for (std::size_t i = 0; i < len; ++i) v.push_back(f(double(i)));
     return v;
 }
-double squared_error(const std::vector<rgb_levels>& a, const std::vector<rgb_levels>& b) {
-    double e = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        for (int ch = 0; ch < 3; ++ch) e += (a[i][ch] - b[i][ch]) * (a[i][ch] - b[i][ch]);
-    return e;
-}
+using test_helpers::squared_error;
 
 // (i - 3)^2 over 9 pixels, h = 2: samples at 0, 2, 4, 6, 8 (5 points, no tail). The quadratic pairs
 // and the cubic reproduce it; the linear rule misses each odd pixel by 1 (the parabola's midpoint

@@ -11,6 +11,7 @@
 
 #include "scene/scene.h"
 #include "line_kinks.h"
+#include "levels_testing.h"
 #include "two_line.h"
 
 namespace {
@@ -33,12 +34,7 @@ adaptive_emulation policy(double tol, unsigned m_min, unsigned m_max, int above_
     return e;
 }
 
-double squared_error(const std::vector<rgb_levels>& a, const std::vector<rgb_levels>& b) {
-    double se = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        for (int ch = 0; ch < 3; ++ch) se += (a[i][ch] - b[i][ch]) * (a[i][ch] - b[i][ch]);
-    return se;
-}
+using test_helpers::squared_error;
 
 // x^2 over 33 pixels: the 32-pixel candidate's quadratic through 0, 16, 32 meets x^2 at 8 and the
 // cubic through 0, 8, 16, 32 at the check 24, so it is sent whole (as two exact quadratics): five
