@@ -69,17 +69,19 @@ pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops) {
         }
         if (perspective_) q_ = step(q_, g.q);
         ++stats_.steps;
-    } else if (walk_ && g.visited && y >= g.last_y) {
-        // Edge walking from the triangle's last point: + (y - y') b (an add a line), + (x - x') a
-        // (popcount(|x - x'|) adds; a subtraction leftwards).
-        const unsigned dy = y - g.last_y;
+    } else if (walk_ && g.visited) {
+        // Edge walking from the triangle's last point: + (y - y') b (an add a line; a subtraction a
+        // line upwards, where lines are not rendered top to bottom), + (x - x') a (popcount(|x - x'|)
+        // adds; a subtraction leftwards).
+        const int dy = int(y) - int(g.last_y);
+        const unsigned lines = unsigned(dy < 0 ? -dy : dy);
         const int dx = int(x) - int(g.last_x);
         const unsigned ones = popcount(unsigned(dx < 0 ? -dx : dx));
         auto walk = [&](double v, const plane3& pl) {
             cnum out = c(v);
-            if (dy > 0) {
+            if (dy != 0) {
                 out = out + c(dy * pl.b);
-                if (ops) ops->add += dy - 1;
+                if (ops) ops->add += lines - 1;
             }
             if (dx != 0) {
                 out = out + c(dx * pl.a);

@@ -17,9 +17,9 @@
 //  - edge walking (optional, `walk_edges`): a scan-line renderer's active-edge walker carries each
 //    triangle's values from line to line, so only a triangle's first run starts from a x + b y + c;
 //    every later run start is reached from the triangle's last point (x', y') by additions:
-//    (y - y') b, one add a line down per component, and (x - x') a, popcount(|x - x'|) adds. No
-//    long operation; the adds are a lower estimate of a walker that steps every active triangle on
-//    every line.
+//    (y - y') b, one add a line per component (down, or up where lines are not rendered top to
+//    bottom), and (x - x') a, popcount(|x - x'|) adds. No long operation; the adds are a lower
+//    estimate of a walker that steps every active triangle on every line.
 //  - per point: perspective-correct P = U_P / Q (one division, 3 mul; orthographic Q = 1: none);
 //    N = normalize(U_N) (U_N / Q points the same way, so no division for N); V, L, H as geometry_at.
 //

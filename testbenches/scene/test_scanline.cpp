@@ -244,6 +244,22 @@ TEST(ScanlineEdgeWalk, SparseStepsCountedByHand) {
     EXPECT_EQ(st.stats().walked_starts, 3u);
 }
 
+// Lines not rendered top to bottom (a scheme that renders the even lines first, then the odd ones)
+// walk upwards as cheaply: line 2's point 0 is a run start (6 mul, 6 add); line 1's point 0 is
+// walked one line up from it (1 add per component: - b); line 0's point 2 one line up and two
+// pixels right (x - x' = 2, a shift: 1 add), 2 adds per component. Each point 12 mul, 7 add,
+// 2 sqrt, 2 div; the values are geometry_at's (step_through).
+TEST(ScanlineEdgeWalk, UpwardsCountedByHand) {
+    const world s = one_triangle(false);
+    const rasterised r = rasterise(s);
+    span_stepper st(r, true);
+    EXPECT_EQ(step_through(st, r, 2, {0}), counts(27 + 6 + 12, 2, 2, 18 + 6 + 7));
+    EXPECT_EQ(step_through(st, r, 1, {0}), counts(12, 2, 2, 3 + 7));
+    EXPECT_EQ(step_through(st, r, 0, {2}), counts(12, 2, 2, 6 + 7));
+    EXPECT_EQ(st.stats().run_starts, 3u);
+    EXPECT_EQ(st.stats().walked_starts, 2u);
+}
+
 // The whole single triangle with edges walked: only line 0's run start is evaluated (6 mul 6 add);
 // line y + 1's start x = 0 is walked from line y's last pixel x = 6 - y: one add down and
 // popcount(6 - y) across, y = 0..5: 6 + (2 + 2 + 1 + 2 + 1 + 1) = 15 adds per component, 45 in all.
