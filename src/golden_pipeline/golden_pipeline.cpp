@@ -166,14 +166,7 @@ constexpr scene::op_counts horner_cubic_ops{3, 0, 0, 3, 0};
 constexpr scene::op_counts horner_quad_ops{2, 0, 0, 2, 0};
 constexpr unsigned horner_cubic_clocks = 6, horner_quad_clocks = 4, fd_clocks = 1;
 
-scene::op_counts times(scene::op_counts c, uint64_t k) {
-    c.mul *= k;
-    c.div *= k;
-    c.sqrt *= k;
-    c.add *= k;
-    c.cmp *= k;
-    return c;
-}
+using scene::times;
 
 }  // namespace
 
@@ -183,19 +176,24 @@ scene::op_counts device_sample_ops(const scene::device_config& dev, unsigned n) 
     return ops;
 }
 
+scene::op_counts colour_sample_ops(const scene::device_config& dev, unsigned n) {
+    scene::op_counts ops = device_sample_ops(dev, n);
+    ops += diffuse_per_sample;
+    return ops;
+}
+
 hardware_counts hardware_ops(const plan& p, const plan_config& c) {
     return hardware_ops(p, c, scene::device_config{}, 0);
 }
 
 hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::device_config& dev, unsigned n) {
-    const scene::op_counts device_per_sample = device_sample_ops(dev, n);
+    const scene::op_counts per_colour = colour_sample_ops(dev, n);
     hardware_counts h;
     h.geometry = c.unit == geometry_unit::stepped ? p.geometry_stepped : p.geometry;
     h.geometry += p.decision;
     // The adaptive policies' check points: colours formed by the sample stage for the decision only
     // (plan.check_samples), charged to the geometry side's decision, not to `samples`.
-    h.geometry += times(device_per_sample, p.check_samples);
-    h.geometry += times(diffuse_per_sample, p.check_samples);
+    h.geometry += times(per_colour, p.check_samples);
     const scene::op_counts cubic_unit = cubic_unit_ops(c.set, c.div);
     const sample_geometry* last = nullptr;  // the codes of the last sample formed or carried
     for (const interval_job& job : p.jobs) {
@@ -208,8 +206,7 @@ hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::d
         }
         last = &job.s[exact ? 0 : (quad ? 2 : 3)];
         h.samples += samples;
-        h.sample_stage += times(device_per_sample, samples);
-        h.sample_stage += times(diffuse_per_sample, samples);
+        h.sample_stage += times(per_colour, samples);
         ++h.intervals;
         h.pixels += job.len;
         // Three channels, each with its own coefficient unit and evaluator.

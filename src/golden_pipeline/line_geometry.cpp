@@ -2,6 +2,8 @@
 #include "golden_pipeline/line_geometry.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace shading::pipeline {
 
@@ -52,6 +54,20 @@ std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, u
             }
         out.push_back({xa, sp.x_end - 1});
     }
+    return out;
+}
+
+stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
+                               bool walk_edges) {
+    scene::span_stepper stepper(r, walk_edges);
+    stepped_count out;
+    for (const auto& pt : points) {
+        if (pt[0] >= r.width || pt[1] >= r.height || !r.covered(pt[0], pt[1]))
+            throw std::invalid_argument("stepped_geometry: (" + std::to_string(pt[0]) + ", " + std::to_string(pt[1]) +
+                                        ") is not a covered pixel");
+        line_geometry::charge_dots(stepper.at(pt[0], pt[1], &out.ops), &out.ops);
+    }
+    out.stats = stepper.stats();
     return out;
 }
 

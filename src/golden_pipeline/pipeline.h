@@ -26,6 +26,7 @@
 #include "formats/specular_formats.h"
 #include "scene/counted.h"
 #include "scene/raster.h"
+#include "scene/scanline.h"
 #include "scene/shade.h"
 #include "scene/world.h"
 
@@ -276,9 +277,23 @@ struct hardware_counts {
 // the squared-quadratic device adds one multiplication per squaring, k = floor(log2 n) for the
 // frame's n (its generator, like the others', works once per frame on RG1).
 scene::op_counts device_sample_ops(const scene::device_config& dev, unsigned n);
+// The sample stage's operations for one colour: the device's (device_sample_ops), then per channel
+// the diffuse multiplier k_d*I x N.L and the two adders of ambient + diffuse + specular.
+scene::op_counts colour_sample_ops(const scene::device_config& dev, unsigned n);
 // The counts with the frame's device (dev, n); without them, a Fig. 1 device's.
 hardware_counts hardware_ops(const plan& p, const plan_config& c, const scene::device_config& dev, unsigned n);
 hardware_counts hardware_ops(const plan& p, const plan_config& c);
+
+// The stepping geometry unit's count for any geometry points, (x, y) in the order the unit reaches
+// them: one scene::span_stepper over the frame, each point's geometry and its dot products, as
+// make_plan charges a plan's points (plan.geometry_stepped, plan.stepping). For plans made elsewhere,
+// such as a study's emulated policy; the points must be covered pixels.
+struct stepped_count {
+    scene::op_counts ops;
+    scene::stepping_stats stats;
+};
+stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
+                               bool walk_edges);
 
 // ---- Error measures over covered pixels and the three channels, in 8-bit units ----
 // Levels beyond which error_stats counts pixels: the NMSE and the largest error alone cannot say

@@ -30,6 +30,16 @@ struct op_counts {
     }
 };
 
+// k times the same operations (k samples, k pixels).
+inline op_counts times(op_counts c, uint64_t k) {
+    c.mul *= k;
+    c.div *= k;
+    c.sqrt *= k;
+    c.add *= k;
+    c.cmp *= k;
+    return c;
+}
+
 inline std::ostream& operator<<(std::ostream& os, const op_counts& c) {
     return os << "mul " << c.mul << ", div " << c.div << ", sqrt " << c.sqrt << ", add " << c.add
               << ", cmp " << c.cmp;

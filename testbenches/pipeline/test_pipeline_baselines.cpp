@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <stdexcept>
 #include <set>
 #include <utility>
 
@@ -69,6 +71,14 @@ TEST(PipelineGeometryUnit, SteppedCountIsAStepperOverTheSamplePoints) {
             }
             EXPECT_EQ(p.geometry_stepped, stepped) << m;
             EXPECT_EQ(p.geometry, scratch) << m;
+            // stepped_geometry, for points planned elsewhere, charges the same points as make_plan.
+            std::vector<std::array<unsigned, 2>> points;
+            for (const auto& [y, x] : px) points.push_back({x, y});
+            const stepped_count sc = stepped_geometry(f.r, points, walk);
+            EXPECT_EQ(sc.ops, stepped) << m;
+            EXPECT_EQ(sc.stats.run_starts, p.stepping.run_starts) << m;
+            EXPECT_EQ(sc.stats.walked_starts, p.stepping.walked_starts) << m;
+            EXPECT_EQ(sc.stats.triangle_setups, p.stepping.triangle_setups) << m;
             EXPECT_EQ(p.stepping.points, px.size());
             EXPECT_EQ(p.stepping.walked_starts, st.stats().walked_starts);
             if (walk) {
@@ -81,6 +91,15 @@ TEST(PipelineGeometryUnit, SteppedCountIsAStepperOverTheSamplePoints) {
             EXPECT_EQ(hardware_ops(p, c).geometry, scratch);
         }
     }
+}
+
+// A point that is no covered pixel has no geometry: stepped_geometry says which, and counts nothing.
+TEST(PipelineGeometryUnit, SteppedGeometryRefusesAnUncoveredPoint) {
+    const fixture f("sphere", 64);
+    EXPECT_FALSE(f.r.covered(0, 0));
+    EXPECT_THROW(stepped_geometry(f.r, {{0, 0}}, false), std::invalid_argument);
+    EXPECT_THROW(stepped_geometry(f.r, {{64, 10}}, false), std::invalid_argument);
+    EXPECT_EQ(stepped_geometry(f.r, {}, true).ops, scene::op_counts{});
 }
 
 // On the head at 512 with adaptive length and degree the stepped unit is cheaper than from scratch
