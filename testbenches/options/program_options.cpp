@@ -320,6 +320,9 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
     app.add_option("--m-max", o.m_max, "the longest interval 2^m")->check(CLI::Range(interp::m_min, interp::m_max));
     app.add_option("--above-slack", o.above_slack, "the line-above limit K (render_pipeline's; -1: none)")
         ->check(CLI::Range(-1, int(interp::m_max)));
+    app.add_flag("--walk-edges", o.walk_edges,
+                 "the geometry side and the scan-line Phong walk each triangle's values from line to line "
+                 "(render_pipeline's)");
     SHADING_CLI_PARSE(app, argc, argv);
     // CLI11 converts an empty list value without asking the check (edge_study's --spacing '').
     for (const auto* list : {&o.tol_one, &o.tol_even, &o.tol_odd}) {

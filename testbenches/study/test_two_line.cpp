@@ -139,6 +139,42 @@ TEST_F(TwoLineHead, EmulationIsThePlanner) {
     }
 }
 
+// Counted as the planner counts a plan: the one-line emulation's long operations (its points stepped
+// line by line, a colour at each) are the planner's hardware_ops to 1 % on the same frame, with and
+// without the limit and the walked edges (the planner forms a colour per sample and check point
+// with the carry, the emulation one per point; the points agree to 0.1 %, above).
+TEST_F(TwoLineHead, CountedAsThePlannerCounts) {
+    const std::vector<rgb_levels> c = colour();
+    for (bool walk : {false, true})
+        for (const auto& [tol, above_slack] : {std::pair{1.6, -1}, std::pair{1.9, 2}}) {
+            pipeline::plan_config cfg = config(tol, above_slack);
+            cfg.walk_edges = walk;
+            const pipeline::plan p = pipeline::make_plan(r, k, dev, cfg);
+            const double planner = double(pipeline::hardware_ops(p, cfg, dev, k.n).total().long_ops());
+            const emulated_frame f = emulate_frame(r, c, cfg, tol, tol, false);
+            const emulated_cost e = emulated_long_ops(r, f, false, dev, k.n, walk);
+            EXPECT_EQ(e.stepping.points, f.points());
+            EXPECT_NEAR(e.long_ops(), planner, 0.01 * planner) << tol << (walk ? " walked" : "");
+            if (walk) {
+                EXPECT_GT(e.stepping.walked_starts, 0u);
+            }
+        }
+}
+
+// The order the scheme renders in, by hand: one line at a time y = 0, 1, 2, 3; two lines 0, 2, then
+// 1, 3; left to right in each.
+TEST(EmulatedCost, PointsInTheOrderTheLinesAreRendered) {
+    emulated_frame f;
+    f.point = {1, 0, 1,   // y = 0
+               0, 1, 0,   // y = 1
+               1, 1, 0,   // y = 2
+               0, 0, 1};  // y = 3
+    using pts = std::vector<std::array<unsigned, 2>>;
+    EXPECT_EQ(points_in_order(f, 3, 4, false), (pts{{0, 0}, {2, 0}, {1, 1}, {0, 2}, {1, 2}, {2, 3}}));
+    EXPECT_EQ(points_in_order(f, 3, 4, true), (pts{{0, 0}, {2, 0}, {0, 2}, {1, 2}, {1, 1}, {2, 3}}));
+    EXPECT_THROW(points_in_order(f, 4, 4, true), std::invalid_argument);
+}
+
 // Two lines: the even lines are exactly the one-line emulation's (nothing of the odd lines reaches
 // them); the parts of the error and the pixels recomputed from the frame; most odd pixels predicted;
 // and the prediction pays: fewer points on the odd lines than on the even ones at the same tolerance.

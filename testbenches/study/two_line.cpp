@@ -38,10 +38,10 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
     emulated_run r;
     r.out = v;
     r.level.assign(v.size(), 0);
-    std::vector<uint8_t> read(v.size(), 0);
+    r.point.assign(v.size(), 0);
     auto touch = [&](std::size_t x) {
-        r.points += !read[x];
-        read[x] = 1;
+        r.points += !r.point[x];
+        r.point[x] = 1;
     };
     // The line-above limit (plan.cpp, within_above): every pixel of the candidate at most K levels
     // below the line before's level there.
@@ -103,6 +103,7 @@ emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_l
     if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_frame: colours and raster differ in size");
     emulated_frame f;
     f.out = colour;
+    f.point.assign(colour.size(), 0);
     for (std::size_t i = 0; i < colour.size(); ++i)
         if (r.tri[i] >= 0)
             for (int ch = 0; ch < 3; ++ch) f.ref2 += colour[i][ch] * colour[i][ch];
@@ -132,6 +133,7 @@ emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_l
                 (y % 2 ? f.se_odd : f.se_even) += d * d;
             }
             now[x] = er.level[x - x0];
+            f.point[r.index(x, y)] = er.point[x - x0];
         }
         (y % 2 ? f.points_odd : f.points_even) += er.points;
         (y % 2 ? f.pixels_odd : f.pixels_even) += x1 - x0 + 1;
@@ -171,12 +173,39 @@ emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_l
         }
         for (unsigned x = 0; x < r.width; ++x) {
             const bool covered = r.tri[r.index(x, y)] >= 0;
+            f.point[r.index(x, y)] = covered;
             f.points_even += covered;
             f.pixels_even += covered;
         }
     }
     for (unsigned y = 1; y < r.height; y += 2) line(y, tol_odd, y + 1 < r.height, before[1]);
     return f;
+}
+
+std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, unsigned width, unsigned height,
+                                                     bool two_line) {
+    if (f.point.size() != std::size_t(width) * height)
+        throw std::invalid_argument("points_in_order: the frame's points and the size differ");
+    std::vector<std::array<unsigned, 2>> out;
+    auto line = [&](unsigned y) {
+        for (unsigned x = 0; x < width; ++x)
+            if (f.point[std::size_t(y) * width + x]) out.push_back({x, y});
+    };
+    for (unsigned y = 0; y < height; y += two_line ? 2 : 1) line(y);
+    if (two_line)
+        for (unsigned y = 1; y < height; y += 2) line(y);
+    return out;
+}
+
+emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, bool two_line,
+                                const scene::device_config& dev, unsigned n, bool walk_edges) {
+    const auto points = points_in_order(f, r.width, r.height, two_line);
+    const pipeline::stepped_count g = pipeline::stepped_geometry(r, points, walk_edges);
+    emulated_cost c;
+    c.geometry = g.ops;
+    c.stepping = g.stats;
+    c.colours = scene::times(pipeline::colour_sample_ops(dev, n), points.size());
+    return c;
 }
 
 }  // namespace shading::study

@@ -9,7 +9,9 @@
 // test_two_line holds them to each other.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "edge_split.h"
@@ -38,6 +40,7 @@ inline constexpr uint8_t no_level = 0xFF;  // `above` where the line before sent
 struct emulated_run {
     std::vector<rgb_levels> out;
     std::vector<uint8_t> level;
+    std::vector<uint8_t> point;  // 1 where the policy read the value: the points, counted in `points`
     std::size_t points = 0;
 };
 emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_emulation& e,
@@ -55,6 +58,7 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
 // gives at best.
 struct emulated_frame {
     std::vector<rgb_levels> out;
+    std::vector<uint8_t> point;  // per pixel (row-major): 1 where a geometry point was taken
     std::size_t points_even = 0, points_odd = 0, pixels_even = 0, pixels_odd = 0, pixels_predicted = 0;
     double se_even = 0.0, se_odd = 0.0, ref2 = 0.0;  // squared error against colour, and its sum of squares
     std::size_t points() const { return points_even + points_odd; }
@@ -64,5 +68,21 @@ struct emulated_frame {
 emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
                              const pipeline::plan_config& cfg, double tol_even, double tol_odd, bool two_line,
                              bool even_exact = false);
+
+// What the emulated frame's points cost, counted as the planner counts a plan's (hardware_ops with the
+// carry): each point's geometry stepped along its line (pipeline::stepped_geometry, in the order the
+// scheme renders: one line at a time y = 0, 1, 2, ...; two lines the even lines, then the odd ones;
+// left to right in each) and one colour formed at each (pipeline::colour_sample_ops). The rest is
+// adders: the coefficient units, the forward differences, and the two-line prediction (the mean of
+// two lines, a shift) with its subtraction at the samples and addition at every pixel.
+struct emulated_cost {
+    scene::op_counts geometry, colours;
+    scene::stepping_stats stepping;
+    double long_ops() const { return double(geometry.long_ops() + colours.long_ops()); }
+};
+std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, unsigned width, unsigned height,
+                                                     bool two_line);
+emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, bool two_line,
+                                const scene::device_config& dev, unsigned n, bool walk_edges);
 
 }  // namespace shading::study

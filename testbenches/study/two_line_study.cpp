@@ -9,9 +9,10 @@
 //  - the emulation one line at a time, and the two-line scheme at each --tol-even x --tol-odd: the
 //    points per pixel of each line parity and their parts of the NMSE; the odd lines with the even
 //    ones exact (what the prediction gives at best);
-//  - the cheapest of each meeting --nmse, and its long operations estimated at the planner's own
-//    cost of a point (its counted long operations over its geometry points at the cheapest
-//    one-line tolerance), against the scan-line Phong.
+//  - every emulated frame's long operations counted as the planner counts a plan's
+//    (emulated_long_ops: its points stepped in the order the scheme renders the lines, a colour at
+//    each), against the scan-line Phong; with --walk-edges both walk edges;
+//  - the cheapest of each meeting --nmse by those counts.
 //   build/bin/two_line_study                  (about 10 s)
 //   build/bin/two_line_study --size 64 --tol-one 1 --tol-even 1 --tol-odd 2
 #include <algorithm>
@@ -43,7 +44,7 @@ int main(int argc, char* argv[]) {
         const std::vector<rgb_levels> colour = levels_of(pp);
         const scene::shaded_image ref = to_image(pp);
         scene::render_stats sl;
-        scene::render_phong_scanline(r, &sl);
+        scene::render_phong_scanline(r, &sl, nullptr, o.walk_edges);
         if (sl.pixels == 0) {
             std::fprintf(stderr, "two_line_study: the scene covers no pixel at %ux%u\n", o.size, o.size);
             return tb::exit_failure;
@@ -58,15 +59,22 @@ int main(int argc, char* argv[]) {
         base.eval = evaluator::fd;
         base.m_max = o.m_max;
         base.above_slack = o.above_slack;
+        base.walk_edges = o.walk_edges;
 
         std::printf("# Two lines: every other line predicted from the lines either side. %s %ux%u, device %s, n = %u, "
-                    "m <= %u, line-above limit K = %d, NMSE limit %.3g\n\n",
-                    o.scene.c_str(), o.size, o.size, o.device.c_str(), k.n, o.m_max, o.above_slack, o.nmse);
+                    "m <= %u, line-above limit K = %d, edges %s, NMSE limit %.3g\n\n",
+                    o.scene.c_str(), o.size, o.size, o.device.c_str(), k.n, o.m_max, o.above_slack,
+                    o.walk_edges ? "walked" : "not walked", o.nmse);
         std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels).\n\n", scanline, sl.pixels);
+        // The emulation's points counted as the planner counts a plan's (emulated_long_ops).
+        auto counted = [&](const emulated_frame& f, bool two) {
+            return emulated_long_ops(r, f, two, dev, k.n, o.walk_edges).long_ops() / pixels;
+        };
         std::printf("One line at a time, the planner and its emulation on the same lines:\n\n"
                     "| T | planner points / px | planner NMSE | planner long ops / px (x scan-line) | its long ops a point "
-                    "| emulation points / px | emulation NMSE |\n|---|---|---|---|---|---|---|\n");
-        std::optional<double> one_points, one_T, per_point, one_long;
+                    "| emulation points / px | emulation NMSE | emulation long ops / px, counted (x scan-line) |\n"
+                    "|---|---|---|---|---|---|---|---|\n");
+        std::optional<double> one_points, one_T, per_point, one_long, one_counted;
         for (double t : o.tol_one) {
             plan_config c = base;
             c.length_tol = t;
@@ -74,32 +82,36 @@ int main(int argc, char* argv[]) {
             const double e = compare(to_image(golden_frame(p, k, dev, c)), ref).nmse;
             const double cost = double(hardware_ops(p, c, dev, k.n).total().long_ops()) / pixels;
             const emulated_frame f = emulate_frame(r, colour, c, t, t, false);
-            const double pts = double(f.points()) / double(f.pixels());
-            std::printf("| %.2f | %.4f | %.3e | %.2f (%.2fx) | %.1f | %.4f | %.3e |\n", t, p.geometry_points / pixels, e,
-                        cost, scanline / cost, cost * pixels / double(p.geometry_points), pts, f.nmse());
+            const double pts = double(f.points()) / double(f.pixels()), ec = counted(f, false);
+            std::printf("| %.2f | %.4f | %.3e | %.2f (%.2fx) | %.1f | %.4f | %.3e | %.2f (%.2fx) |\n", t,
+                        p.geometry_points / pixels, e, cost, scanline / cost, cost * pixels / double(p.geometry_points),
+                        pts, f.nmse(), ec, scanline / ec);
             if (f.nmse() <= o.nmse && (!one_points || pts < *one_points)) {
                 one_points = pts;
                 one_T = t;
                 per_point = cost * pixels / double(p.geometry_points);
                 one_long = cost;
+                one_counted = ec;
             }
         }
         std::printf("\nThe two-line scheme (emulated): even lines at T_even, then each odd line's residual against the "
                     "mean of the delivered lines above and below at T_odd:\n\n"
                     "| T_even | T_odd | points / px | even lines | odd lines | odd pixels predicted | NMSE | even lines' "
-                    "part | odd lines' part |\n|---|---|---|---|---|---|---|---|---|\n");
-        std::optional<double> two_points;
+                    "part | odd lines' part | long ops / px, counted (x scan-line) |\n"
+                    "|---|---|---|---|---|---|---|---|---|---|\n");
+        std::optional<double> two_points, two_counted;
         double two_even = 0.0, two_odd = 0.0, two_nmse = 0.0;
         for (double te : o.tol_even)
             for (double to : o.tol_odd) {
                 const emulated_frame f = emulate_frame(r, colour, base, te, to, true);
-                const double pts = double(f.points()) / double(f.pixels());
-                std::printf("| %.2f | %.2f | %.4f | %.4f | %.4f | %.3f | %.3e | %.2e | %.2e |\n", te, to, pts,
-                            double(f.points_even) / double(std::max<std::size_t>(1, f.pixels_even)),
+                const double pts = double(f.points()) / double(f.pixels()), ec = counted(f, true);
+                std::printf("| %.2f | %.2f | %.4f | %.4f | %.4f | %.3f | %.3e | %.2e | %.2e | %.2f (%.2fx) |\n", te, to,
+                            pts, double(f.points_even) / double(std::max<std::size_t>(1, f.pixels_even)),
                             double(f.points_odd) / double(std::max<std::size_t>(1, f.pixels_odd)),
                             double(f.pixels_predicted) / double(std::max<std::size_t>(1, f.pixels_odd)), f.nmse(),
-                            f.se_even / f.ref2, f.se_odd / f.ref2);
-                if (f.nmse() <= o.nmse && (!two_points || pts < *two_points)) {
+                            f.se_even / f.ref2, f.se_odd / f.ref2, ec, scanline / ec);
+                if (f.nmse() <= o.nmse && (!two_counted || ec < *two_counted)) {
+                    two_counted = ec;
                     two_points = pts;
                     two_even = te;
                     two_odd = to;
@@ -118,19 +130,20 @@ int main(int argc, char* argv[]) {
             std::printf("- one line at a time: none of --tol-one\n");
         } else {
             std::printf("- one line at a time: T = %.2f, %.4f points / px; the planner there %.2f long ops / px "
-                        "(%.2fx the scan-line Phong), %.1f a point\n",
-                        *one_T, *one_points, *one_long, scanline / *one_long, *per_point);
+                        "(%.2fx the scan-line Phong), %.1f a point; its emulation counted %.2f (%.2fx)\n",
+                        *one_T, *one_points, *one_long, scanline / *one_long, *per_point, *one_counted,
+                        scanline / *one_counted);
         }
         if (!two_points) {
             std::printf("- two lines: none of --tol-even x --tol-odd\n");
         } else {
-            std::printf("- two lines: T_even = %.2f, T_odd = %.2f, %.4f points / px (NMSE %.3e)", two_even, two_odd,
-                        *two_points, two_nmse);
+            std::printf("- two lines: T_even = %.2f, T_odd = %.2f, %.4f points / px (NMSE %.3e), counted %.2f long ops / "
+                        "px: %.2fx the scan-line Phong (3x needs %.2f)",
+                        two_even, two_odd, *two_points, two_nmse, *two_counted, scanline / *two_counted,
+                        scanline / 3.0);
             if (one_points)
-                std::printf(": %.2fx fewer points; at %.1f long ops a point about %.2f long ops / px, %.2fx the "
-                            "scan-line Phong (3x needs %.4f points / px)",
-                            *one_points / *two_points, *per_point, *two_points * *per_point,
-                            scanline / (*two_points * *per_point), scanline / 3.0 / *per_point);
+                std::printf("; %.2fx fewer points and %.2fx fewer long ops than one line at a time", *one_points / *two_points,
+                            *one_counted / *two_counted);
             std::printf("\n");
         }
     } catch (const std::exception& e) {
