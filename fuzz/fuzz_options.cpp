@@ -251,6 +251,7 @@ std::optional<int> two_line_study(int argc, char** argv) {
         FUZZ_CHECK(!tols->empty(), "an empty tolerance list");
         for (double t : *tols) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a tolerance %g", t);
     }
+    for (double t : o.tol_mid) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a middle lines' tolerance %g", t);
     FUZZ_CHECK(within(o.m_max, shading::interp::m_min, shading::interp::m_max), "--m-max %u", o.m_max);
     FUZZ_CHECK(within(o.above_slack, -1, int(shading::interp::m_max)), "--above-slack %d", o.above_slack);
     return std::nullopt;

@@ -317,6 +317,11 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
     app.add_option("--tol-odd", o.tol_odd, "two lines: the odd lines' tolerances (on the residual)")
         ->delimiter(',')
         ->check(tol);
+    app.add_option("--tol-mid", o.tol_mid,
+                   "every fourth line first (not run without): the tolerances of the lines between them two apart "
+                   "(on the residual)")
+        ->delimiter(',')
+        ->check(tol);
     app.add_option("--m-max", o.m_max, "the longest interval 2^m")->check(CLI::Range(interp::m_min, interp::m_max));
     app.add_option("--above-slack", o.above_slack, "the line-above limit K (render_pipeline's; -1: none)")
         ->check(CLI::Range(-1, int(interp::m_max)));
@@ -325,8 +330,8 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
                  "(render_pipeline's)");
     SHADING_CLI_PARSE(app, argc, argv);
     // CLI11 converts an empty list value without asking the check (edge_study's --spacing '').
-    for (const auto* list : {&o.tol_one, &o.tol_even, &o.tol_odd}) {
-        if (list->empty()) {
+    for (const auto* list : {&o.tol_one, &o.tol_even, &o.tol_odd, &o.tol_mid}) {
+        if (list->empty() && list != &o.tol_mid) {  // --tol-mid may be empty: no four-line table
             std::fprintf(stderr, "two_line_study: every tolerance list needs at least one value\n");
             return 2;
         }

@@ -94,8 +94,8 @@ struct edge_study_options {
 };
 
 // two_line_study: the built-in scene, the NMSE limit, the tolerances (levels) of one line at a time
-// and of the two-line scheme's even and odd lines, the longest interval 2^m_max, the line-above
-// limit K (-1: none), edge walking.
+// and of the two-line scheme's even and odd lines (and of the middle lines with every fourth line
+// first), the longest interval 2^m_max, the line-above limit K (-1: none), edge walking.
 struct two_line_study_options {
     std::string scene = "head", data_dir = default_data_dir(), device = "squared";
     unsigned size = 512;  // 16..4096
@@ -103,6 +103,7 @@ struct two_line_study_options {
     std::vector<double> tol_one{1.6, 1.8, 1.9, 2.0};
     std::vector<double> tol_even{1.6, 1.8, 1.9};
     std::vector<double> tol_odd{1.0, 1.5, 2.0, 3.0};
+    std::vector<double> tol_mid;  // every fourth line first: the middle lines' tolerances (empty: not run)
     unsigned m_max = 5;
     int above_slack = 2;  // -1..m_max
     bool walk_edges = false;  // the geometry side and the scan-line Phong walk edges (render_pipeline's)

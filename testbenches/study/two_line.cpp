@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "line_kinks.h"
 
@@ -97,21 +98,22 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
     return r;
 }
 
-emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
-                             const pipeline::plan_config& cfg, double tol_even, double tol_odd, bool two_line,
-                             bool even_exact) {
-    if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_frame: colours and raster differ in size");
+emulated_frame emulate_lines(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
+                             const pipeline::plan_config& cfg, const std::vector<double>& tols, bool first_exact) {
+    if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_lines: colours and raster differ in size");
+    if (tols.empty() || tols.size() > 5) throw std::invalid_argument("emulate_lines: needs 1 to 5 tolerances, one a pass");
+    const unsigned passes = unsigned(tols.size()), top = 1u << (passes - 1);
     emulated_frame f;
     f.out = colour;
     f.point.assign(colour.size(), 0);
     for (std::size_t i = 0; i < colour.size(); ++i)
         if (r.tri[i] >= 0)
             for (int ch = 0; ch < 3; ++ch) f.ref2 += colour[i][ch] * colour[i][ch];
-    // The line before's levels in each pass (parity 0: one line at a time or the even lines; 1: the
-    // odd lines), and this line's as it is rendered.
-    std::vector<uint8_t> before[2], now(r.width, no_level);
+    // The line before's levels in each pass, and this line's as it is rendered.
+    std::vector<std::vector<uint8_t>> before(passes);
+    std::vector<uint8_t> now(r.width, no_level);
     // One run [x0, x1] of line y, predicted by `mean` (null: the colour itself).
-    auto run = [&](unsigned y, unsigned x0, unsigned x1, double tol, const std::vector<rgb_levels>* mean,
+    auto run = [&](unsigned y, bool first, unsigned x0, unsigned x1, double tol, const std::vector<rgb_levels>* mean,
                    const std::vector<uint8_t>& above) {
         std::vector<rgb_levels> v(colour.begin() + r.index(x0, y), colour.begin() + r.index(x1, y) + 1);
         if (mean)
@@ -130,25 +132,27 @@ emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_l
                 for (int ch = 0; ch < 3; ++ch) o[ch] += (*mean)[x][ch];
             for (int ch = 0; ch < 3; ++ch) {
                 const double d = o[ch] - colour[r.index(x, y)][ch];
-                (y % 2 ? f.se_odd : f.se_even) += d * d;
+                (first ? f.se_first : f.se_rest) += d * d;
             }
             now[x] = er.level[x - x0];
             f.point[r.index(x, y)] = er.point[x - x0];
         }
-        (y % 2 ? f.points_odd : f.points_even) += er.points;
-        (y % 2 ? f.pixels_odd : f.pixels_even) += x1 - x0 + 1;
+        (first ? f.points_first : f.points_rest) += er.points;
+        (first ? f.pixels_first : f.pixels_rest) += x1 - x0 + 1;
         f.pixels_predicted += mean ? x1 - x0 + 1 : 0;
     };
-    auto line = [&](unsigned y, double tol, bool predicted, std::vector<uint8_t>& above) {
+    // Line y of pass `pass`, predicted from the lines d above and below (d = 0: from its colours).
+    auto line = [&](unsigned y, unsigned pass, unsigned d) {
+        f.lines.push_back(y);
         std::vector<rgb_levels> mean;
         std::vector<uint8_t> on_patch(r.width, 0);
-        if (predicted) {
+        if (d > 0) {
             mean.assign(r.width, rgb_levels{0.0, 0.0, 0.0});
             for (unsigned x = 0; x < r.width; ++x) {
-                const int32_t t = r.tri[r.index(x, y)], a = r.tri[r.index(x, y - 1)], b = r.tri[r.index(x, y + 1)];
+                const int32_t t = r.tri[r.index(x, y)], a = r.tri[r.index(x, y - d)], b = r.tri[r.index(x, y + d)];
                 on_patch[x] = t >= 0 && a >= 0 && b >= 0 && one_patch(r, a, t) && one_patch(r, t, b);
                 for (int ch = 0; ch < 3; ++ch)
-                    mean[x][ch] = 0.5 * (f.out[r.index(x, y - 1)][ch] + f.out[r.index(x, y + 1)][ch]);
+                    mean[x][ch] = 0.5 * (f.out[r.index(x, y - d)][ch] + f.out[r.index(x, y + d)][ch]);
             }
         }
         now.assign(r.width, no_level);
@@ -156,50 +160,47 @@ emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_l
             unsigned x0 = s[0];
             for (unsigned x = s[0] + 1; x <= s[1] + 1; ++x)
                 if (x == s[1] + 1 || on_patch[x] != on_patch[x0]) {
-                    run(y, x0, x - 1, tol, on_patch[x0] ? &mean : nullptr, above);
+                    run(y, pass == 0, x0, x - 1, tols[pass], on_patch[x0] ? &mean : nullptr, before[pass]);
                     x0 = x;
                 }
         }
-        above = now;  // this line's levels are the next one's line above
+        before[pass] = now;  // this line's levels are the line above of the pass's next line
     };
-    if (!two_line) {
-        for (unsigned y = 0; y < r.height; ++y) line(y, tol_even, false, before[0]);
-        return f;
-    }
-    for (unsigned y = 0; y < r.height; y += 2) {
-        if (!even_exact) {
-            line(y, tol_even, false, before[0]);
+    for (unsigned y = 0; y < r.height; y += top) {
+        if (!first_exact) {
+            line(y, 0, 0);
             continue;
         }
+        f.lines.push_back(y);
         for (unsigned x = 0; x < r.width; ++x) {
             const bool covered = r.tri[r.index(x, y)] >= 0;
             f.point[r.index(x, y)] = covered;
-            f.points_even += covered;
-            f.pixels_even += covered;
+            f.points_first += covered;
+            f.pixels_first += covered;
         }
     }
-    for (unsigned y = 1; y < r.height; y += 2) line(y, tol_odd, y + 1 < r.height, before[1]);
+    for (unsigned pass = 1; pass < passes; ++pass) {
+        const unsigned d = top >> pass;
+        for (unsigned y = d; y < r.height; y += 2 * d) line(y, pass, y + d < r.height ? d : 0);
+    }
     return f;
 }
 
-std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, unsigned width, unsigned height,
-                                                     bool two_line) {
-    if (f.point.size() != std::size_t(width) * height)
-        throw std::invalid_argument("points_in_order: the frame's points and the size differ");
+std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, unsigned width) {
     std::vector<std::array<unsigned, 2>> out;
-    auto line = [&](unsigned y) {
+    for (unsigned y : f.lines) {
+        if (std::size_t(y + 1) * width > f.point.size())
+            throw std::invalid_argument("points_in_order: line " + std::to_string(y) + " is outside the frame's points");
         for (unsigned x = 0; x < width; ++x)
             if (f.point[std::size_t(y) * width + x]) out.push_back({x, y});
-    };
-    for (unsigned y = 0; y < height; y += two_line ? 2 : 1) line(y);
-    if (two_line)
-        for (unsigned y = 1; y < height; y += 2) line(y);
+    }
     return out;
 }
 
-emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, bool two_line,
-                                const scene::device_config& dev, unsigned n, bool walk_edges) {
-    const auto points = points_in_order(f, r.width, r.height, two_line);
+emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, const scene::device_config& dev,
+                                unsigned n, bool walk_edges) {
+    if (f.point.size() != r.tri.size()) throw std::invalid_argument("emulated_long_ops: the frame and raster differ in size");
+    const auto points = points_in_order(f, r.width);
     const pipeline::stepped_count g = pipeline::stepped_geometry(r, points, walk_edges);
     emulated_cost c;
     c.geometry = g.ops;

@@ -1,8 +1,10 @@
 // A two-line scheme for the interpolation target, measured before it is built: the even lines
 // rendered by the adaptive length policy, then each odd line predicted by the mean of the delivered
 // lines above and below (a line buffer and an adder a channel) and the same policy run on the
-// residual, its samples correcting the prediction. edge_study measures how much smoother that
-// residual is at fixed spacings; this measures what the policy makes of it.
+// residual, its samples correcting the prediction; and its generalisation to a hierarchy of such
+// passes (every fourth line first, then the lines between them two apart, then the odd ones).
+// edge_study measures how much smoother that residual is at fixed spacings; this measures what the
+// policy makes of it.
 //
 // The planner cannot run on a residual, so its adaptive policy is emulated here, real-valued
 // (emulate_adaptive); two_line_study prints the emulation beside the planner on the same frame, and
@@ -48,41 +50,46 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
 
 // A frame's per-pixel colours (row-major, levels; uncovered pixels ignored) rendered by the emulated
 // policy over the planner's segments (pipeline::line_segments with cfg), with cfg's m_min, m_max and
-// line-above limit. One line at a time (two_line false: tol_even everywhere), or the two-line scheme:
-// the even lines first at tol_even, then each odd line with a line below at tol_odd, in runs where the
-// pixel and those above and below lie on one patch of the mesh (one_patch; the residual against the
-// mean of the delivered lines above and below) and runs where not (the colour itself); the last line,
-// odd without a line below, on its own. Each line's limit reads the levels of the line before it in
-// its own pass (one line at a time y - 1; two lines y - 2). even_exact (two lines only): the even lines
-// are the colours themselves, each pixel a point, so the odd lines' figures show what the prediction
-// gives at best.
+// line-above limit, in passes over the lines; tols holds one tolerance a pass, L + 1 of them (L = 0..4):
+//  - pass 0: every 2^L-th line (y = 0, 2^L, ...) from its colours alone at tols[0]; L = 0 is one line
+//    at a time, L = 1 the two-line scheme (the even lines, then the odd ones);
+//  - pass i = 1..L: the lines halfway between those rendered so far, d = 2^(L - i) from them
+//    (y = d, 3d, 5d, ...), each predicted by the mean of the delivered lines d above and d below and
+//    the policy run on the residual at tols[i], in runs where the pixel and those above and below lie
+//    on one patch of the mesh (one_patch), from its colours in runs where not; a line with no line d
+//    below (the last) on its own.
+// Each line's limit reads the levels of the line before it in its own pass. first_exact: pass 0's
+// lines are the colours themselves, each pixel a point, so the other passes' figures show what the
+// prediction gives at best.
 struct emulated_frame {
     std::vector<rgb_levels> out;
-    std::vector<uint8_t> point;  // per pixel (row-major): 1 where a geometry point was taken
-    std::size_t points_even = 0, points_odd = 0, pixels_even = 0, pixels_odd = 0, pixels_predicted = 0;
-    double se_even = 0.0, se_odd = 0.0, ref2 = 0.0;  // squared error against colour, and its sum of squares
-    std::size_t points() const { return points_even + points_odd; }
-    std::size_t pixels() const { return pixels_even + pixels_odd; }
-    double nmse() const { return ref2 > 0.0 ? (se_even + se_odd) / ref2 : 0.0; }
+    std::vector<uint8_t> point;   // per pixel (row-major): 1 where a geometry point was taken
+    std::vector<unsigned> lines;  // the lines in the order the passes render them
+    // "first": pass 0's lines; "rest": the lines of the later passes; pixels_predicted: the rest's
+    // pixels rendered from a prediction.
+    std::size_t points_first = 0, points_rest = 0, pixels_first = 0, pixels_rest = 0, pixels_predicted = 0;
+    double se_first = 0.0, se_rest = 0.0, ref2 = 0.0;  // squared error against colour, and its sum of squares
+    std::size_t points() const { return points_first + points_rest; }
+    std::size_t pixels() const { return pixels_first + pixels_rest; }
+    double nmse() const { return ref2 > 0.0 ? (se_first + se_rest) / ref2 : 0.0; }
 };
-emulated_frame emulate_frame(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
-                             const pipeline::plan_config& cfg, double tol_even, double tol_odd, bool two_line,
-                             bool even_exact = false);
+emulated_frame emulate_lines(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
+                             const pipeline::plan_config& cfg, const std::vector<double>& tols,
+                             bool first_exact = false);
 
 // What the emulated frame's points cost, counted as the planner counts a plan's (hardware_ops with the
 // carry): each point's geometry stepped along its line (pipeline::stepped_geometry, in the order the
-// scheme renders: one line at a time y = 0, 1, 2, ...; two lines the even lines, then the odd ones;
-// left to right in each) and one colour formed at each (pipeline::colour_sample_ops). The rest is
-// adders: the coefficient units, the forward differences, and the two-line prediction (the mean of
-// two lines, a shift) with its subtraction at the samples and addition at every pixel.
+// passes render the lines, left to right in each) and one colour formed at each
+// (pipeline::colour_sample_ops). The rest is adders: the coefficient units, the forward differences,
+// and the prediction (the mean of two lines, a shift) with its subtraction at the samples and
+// addition at every pixel.
 struct emulated_cost {
     scene::op_counts geometry, colours;
     scene::stepping_stats stepping;
     double long_ops() const { return double(geometry.long_ops() + colours.long_ops()); }
 };
-std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, unsigned width, unsigned height,
-                                                     bool two_line);
-emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, bool two_line,
-                                const scene::device_config& dev, unsigned n, bool walk_edges);
+std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, unsigned width);
+emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, const scene::device_config& dev,
+                                unsigned n, bool walk_edges);
 
 }  // namespace shading::study

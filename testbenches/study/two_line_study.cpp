@@ -12,6 +12,8 @@
 //  - every emulated frame's long operations counted as the planner counts a plan's
 //    (emulated_long_ops: its points stepped in the order the scheme renders the lines, a colour at
 //    each), against the scan-line Phong; with --walk-edges both walk edges;
+//  - with --tol-mid, every fourth line first: the lines two apart predicted from the lines two above
+//    and below at each --tol-mid, then the odd lines as in the two-line scheme (emulate_lines);
 //  - the cheapest of each meeting --nmse by those counts.
 //   build/bin/two_line_study                  (about 10 s)
 //   build/bin/two_line_study --size 64 --tol-one 1 --tol-even 1 --tol-odd 2
@@ -67,9 +69,10 @@ int main(int argc, char* argv[]) {
                     o.walk_edges ? "walked" : "not walked", o.nmse);
         std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels).\n\n", scanline, sl.pixels);
         // The emulation's points counted as the planner counts a plan's (emulated_long_ops).
-        auto counted = [&](const emulated_frame& f, bool two) {
-            return emulated_long_ops(r, f, two, dev, k.n, o.walk_edges).long_ops() / pixels;
+        auto counted = [&](const emulated_frame& f) {
+            return emulated_long_ops(r, f, dev, k.n, o.walk_edges).long_ops() / pixels;
         };
+        auto per_px = [](std::size_t a, std::size_t b) { return double(a) / double(std::max<std::size_t>(1, b)); };
         std::printf("One line at a time, the planner and its emulation on the same lines:\n\n"
                     "| T | planner points / px | planner NMSE | planner long ops / px (x scan-line) | its long ops a point "
                     "| emulation points / px | emulation NMSE | emulation long ops / px, counted (x scan-line) |\n"
@@ -81,8 +84,8 @@ int main(int argc, char* argv[]) {
             const plan p = make_plan(r, k, dev, c);
             const double e = compare(to_image(golden_frame(p, k, dev, c)), ref).nmse;
             const double cost = double(hardware_ops(p, c, dev, k.n).total().long_ops()) / pixels;
-            const emulated_frame f = emulate_frame(r, colour, c, t, t, false);
-            const double pts = double(f.points()) / double(f.pixels()), ec = counted(f, false);
+            const emulated_frame f = emulate_lines(r, colour, c, {t});
+            const double pts = double(f.points()) / double(f.pixels()), ec = counted(f);
             std::printf("| %.2f | %.4f | %.3e | %.2f (%.2fx) | %.1f | %.4f | %.3e | %.2f (%.2fx) |\n", t,
                         p.geometry_points / pixels, e, cost, scanline / cost, cost * pixels / double(p.geometry_points),
                         pts, f.nmse(), ec, scanline / ec);
@@ -103,13 +106,12 @@ int main(int argc, char* argv[]) {
         double two_even = 0.0, two_odd = 0.0, two_nmse = 0.0;
         for (double te : o.tol_even)
             for (double to : o.tol_odd) {
-                const emulated_frame f = emulate_frame(r, colour, base, te, to, true);
-                const double pts = double(f.points()) / double(f.pixels()), ec = counted(f, true);
+                const emulated_frame f = emulate_lines(r, colour, base, {te, to});
+                const double pts = double(f.points()) / double(f.pixels()), ec = counted(f);
                 std::printf("| %.2f | %.2f | %.4f | %.4f | %.4f | %.3f | %.3e | %.2e | %.2e | %.2f (%.2fx) |\n", te, to,
-                            pts, double(f.points_even) / double(std::max<std::size_t>(1, f.pixels_even)),
-                            double(f.points_odd) / double(std::max<std::size_t>(1, f.pixels_odd)),
-                            double(f.pixels_predicted) / double(std::max<std::size_t>(1, f.pixels_odd)), f.nmse(),
-                            f.se_even / f.ref2, f.se_odd / f.ref2, ec, scanline / ec);
+                            pts, per_px(f.points_first, f.pixels_first), per_px(f.points_rest, f.pixels_rest),
+                            per_px(f.pixels_predicted, f.pixels_rest), f.nmse(), f.se_first / f.ref2,
+                            f.se_rest / f.ref2, ec, scanline / ec);
                 if (f.nmse() <= o.nmse && (!two_counted || ec < *two_counted)) {
                     two_counted = ec;
                     two_points = pts;
@@ -121,9 +123,34 @@ int main(int argc, char* argv[]) {
         std::printf("\nThe odd lines at best: the even lines exact (every pixel a point), the odd lines as above:\n\n"
                     "| T_odd | odd lines' points / px | odd lines' part of the NMSE |\n|---|---|---|\n");
         for (double to : o.tol_odd) {
-            const emulated_frame f = emulate_frame(r, colour, base, to, to, true, true);
-            std::printf("| %.2f | %.4f | %.2e |\n", to,
-                        double(f.points_odd) / double(std::max<std::size_t>(1, f.pixels_odd)), f.se_odd / f.ref2);
+            const emulated_frame f = emulate_lines(r, colour, base, {to, to}, true);
+            std::printf("| %.2f | %.4f | %.2e |\n", to, per_px(f.points_rest, f.pixels_rest), f.se_rest / f.ref2);
+        }
+        // Every fourth line first (--tol-mid given): the lines two apart predicted from the lines two
+        // above and below at T_mid, then the odd ones at T_odd.
+        std::optional<double> four_counted, four_points;
+        double four_first = 0.0, four_mid = 0.0, four_odd = 0.0, four_nmse = 0.0;
+        if (!o.tol_mid.empty()) {
+            std::printf("\nEvery fourth line first (emulated): those at T_even, then the lines between them two apart "
+                        "predicted from the lines two above and below at T_mid, then the odd lines from their "
+                        "neighbours at T_odd:\n\n| T_even | T_mid | T_odd | points / px | NMSE | long ops / px, counted "
+                        "(x scan-line) |\n|---|---|---|---|---|---|\n");
+            for (double te : o.tol_even)
+                for (double tm : o.tol_mid)
+                    for (double to : o.tol_odd) {
+                        const emulated_frame f = emulate_lines(r, colour, base, {te, tm, to});
+                        const double pts = double(f.points()) / double(f.pixels()), ec = counted(f);
+                        std::printf("| %.2f | %.2f | %.2f | %.4f | %.3e | %.2f (%.2fx) |\n", te, tm, to, pts, f.nmse(), ec,
+                                    scanline / ec);
+                        if (f.nmse() <= o.nmse && (!four_counted || ec < *four_counted)) {
+                            four_counted = ec;
+                            four_points = pts;
+                            four_first = te;
+                            four_mid = tm;
+                            four_odd = to;
+                            four_nmse = f.nmse();
+                        }
+                    }
         }
         std::printf("\nThe cheapest meeting NMSE <= %.3g:\n", o.nmse);
         if (!one_points) {
@@ -145,6 +172,15 @@ int main(int argc, char* argv[]) {
                 std::printf("; %.2fx fewer points and %.2fx fewer long ops than one line at a time", *one_points / *two_points,
                             *one_counted / *two_counted);
             std::printf("\n");
+        }
+        if (!o.tol_mid.empty()) {
+            if (!four_counted)
+                std::printf("- every fourth line first: none of --tol-even x --tol-mid x --tol-odd\n");
+            else
+                std::printf("- every fourth line first: T_even = %.2f, T_mid = %.2f, T_odd = %.2f, %.4f points / px (NMSE "
+                            "%.3e), counted %.2f long ops / px: %.2fx the scan-line Phong\n",
+                            four_first, four_mid, four_odd, *four_points, four_nmse, *four_counted,
+                            scanline / *four_counted);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "two_line_study: %s\n", e.what());
