@@ -217,6 +217,21 @@ line_tally tally(const scene::rasterised& r, const emulated_frame& f, const std:
     return t;
 }
 
+// A frame's bookkeeping recomputed from its pixels: the points, pixels and squared error of the first
+// pass's lines (first(y)) and of the rest; and most of the rest predicted.
+template <class First>
+void expect_bookkeeping(const scene::rasterised& r, const emulated_frame& f, const std::vector<rgb_levels>& c,
+                        First first) {
+    const line_tally a = tally(r, f, c, first), b = tally(r, f, c, [&](unsigned y) { return !first(y); });
+    EXPECT_EQ(f.points_first, a.points);
+    EXPECT_EQ(f.points_rest, b.points);
+    EXPECT_EQ(f.pixels_first, a.pixels);
+    EXPECT_EQ(f.pixels_rest, b.pixels);
+    EXPECT_NEAR(f.se_first, a.se, 1e-9 * a.se);
+    EXPECT_NEAR(f.se_rest, b.se, 1e-9 * b.se);
+    EXPECT_GT(f.pixels_predicted, 9 * f.pixels_rest / 10);
+}
+
 // Two lines: the even lines are exactly the one-line emulation's (nothing of the odd lines reaches
 // them); the parts of the error, the points and the pixels recomputed from the frame; most odd pixels
 // predicted; and the prediction pays: fewer points on the odd lines than on the even ones at the same
@@ -230,21 +245,13 @@ TEST_F(TwoLineHead, EvenLinesFirstThenTheOddOnesPredicted) {
         for (unsigned x = 0; x < r.width; ++x)
             for (int ch = 0; ch < 3; ++ch) ASSERT_EQ(two.out[r.index(x, y)][ch], one.out[r.index(x, y)][ch]) << x << "," << y;
     auto even = [](unsigned y) { return y % 2 == 0; };
-    auto odd = [](unsigned y) { return y % 2 == 1; };
-    const line_tally e = tally(r, two, c, even), o = tally(r, two, c, odd);
+    expect_bookkeeping(r, two, c, even);
     EXPECT_EQ(two.points_first, tally(r, one, c, even).points);
-    EXPECT_EQ(two.points_first, e.points);
-    EXPECT_EQ(two.points_rest, o.points);
-    EXPECT_EQ(two.pixels_first, e.pixels);
-    EXPECT_EQ(two.pixels_rest, o.pixels);
-    EXPECT_NEAR(two.se_first, e.se, 1e-9 * e.se);
-    EXPECT_NEAR(two.se_rest, o.se, 1e-9 * o.se);
-    EXPECT_GT(two.pixels_predicted, 9 * two.pixels_rest / 10);
     // With the even lines exact, they are the colours, each pixel a point, and no error is theirs.
     const emulated_frame best = emulate_lines(r, c, cfg, {1.2, 1.2}, true);
-    EXPECT_EQ(best.points_first, e.pixels);
+    EXPECT_EQ(best.points_first, two.pixels_first);
     EXPECT_EQ(best.se_first, 0.0);
-    EXPECT_EQ(best.pixels_rest, o.pixels);
+    EXPECT_EQ(best.pixels_rest, two.pixels_rest);
     EXPECT_LT(double(two.points_rest) / double(two.pixels_rest), 0.75 * double(two.points_first) / double(two.pixels_first));
 }
 
@@ -261,16 +268,7 @@ TEST_F(TwoLineHead, FourthLinesFirstThenTheRestPredicted) {
         for (unsigned x = 0; x < r.width; ++x)
             for (int ch = 0; ch < 3; ++ch)
                 ASSERT_EQ(four.out[r.index(x, y)][ch], one.out[r.index(x, y)][ch]) << x << "," << y;
-    auto first = [](unsigned y) { return y % 4 == 0; };
-    auto rest = [](unsigned y) { return y % 4 != 0; };
-    const line_tally f = tally(r, four, c, first), o = tally(r, four, c, rest);
-    EXPECT_EQ(four.points_first, f.points);
-    EXPECT_EQ(four.points_rest, o.points);
-    EXPECT_EQ(four.pixels_first, f.pixels);
-    EXPECT_EQ(four.pixels_rest, o.pixels);
-    EXPECT_NEAR(four.se_first, f.se, 1e-9 * f.se);
-    EXPECT_NEAR(four.se_rest, o.se, 1e-9 * o.se);
-    EXPECT_GT(four.pixels_predicted, 9 * four.pixels_rest / 10);
+    expect_bookkeeping(r, four, c, [](unsigned y) { return y % 4 == 0; });
     EXPECT_LE(four.nmse(), 1e-5);
     EXPECT_LT(four.points(), one.points());
 }
