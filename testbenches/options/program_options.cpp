@@ -313,7 +313,9 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
     app.add_option("--tol-one", o.tol_one, "one line at a time: tolerances (8-bit levels, comma-separated)")
         ->delimiter(',')
         ->check(tol);
-    app.add_option("--tol-even", o.tol_even, "two lines: the even lines' tolerances")->delimiter(',')->check(tol);
+    app.add_option("--tol-even", o.tol_even, "two lines: the even lines' tolerances (with --tol-mid also every fourth line's)")
+        ->delimiter(',')
+        ->check(tol);
     app.add_option("--tol-odd", o.tol_odd, "two lines: the odd lines' tolerances (on the residual)")
         ->delimiter(',')
         ->check(tol);

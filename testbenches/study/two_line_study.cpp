@@ -15,7 +15,7 @@
 //  - with --tol-mid, every fourth line first: the lines two apart predicted from the lines two above
 //    and below at each --tol-mid, then the odd lines as in the two-line scheme (emulate_lines);
 //  - the cheapest of each meeting --nmse by those counts.
-//   build/bin/two_line_study                  (about 10 s)
+//   build/bin/two_line_study                  (under 1 s at 512)
 //   build/bin/two_line_study --size 64 --tol-one 1 --tol-even 1 --tol-odd 2
 #include <algorithm>
 #include <cstdio>
