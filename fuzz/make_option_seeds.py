@@ -50,7 +50,7 @@ SEEDS = {
     "edge_study": {"short": "--size 48 --spacing 2,4", "scene": "--scene sphere --device ua22802 --spacing 64",
                    "usage": "--spacing 3"},
     "two_line_study": {"short": "--size 48 --tol-one 1,2 --tol-even 1 --tol-odd 1,2 --tol-mid 1",
-                       "scene": "--scene torus --device patent --nmse 1e-4 --m-max 6 --above-slack -1 --walk-edges", "empty": "--tol-odd=",
+                       "scene": "--scene torus --device patent --nmse 1e-4 --m-max 6 --above-slack -1 --walk-edges --perfect-decisions", "empty": "--tol-odd=",
                        "usage": "--m-max 7"},
 }
 

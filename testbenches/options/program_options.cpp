@@ -330,6 +330,9 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
     app.add_flag("--walk-edges", o.walk_edges,
                  "the geometry side and the scan-line Phong walk each triangle's values from line to line "
                  "(render_pipeline's)");
+    app.add_flag("--perfect-decisions", o.perfect_decisions,
+                 "a yardstick: every decision, the planner's and the emulation's, taken on the true RMS error of what "
+                 "the interval sends (render_pipeline's), every check point still paid");
     SHADING_CLI_PARSE(app, argc, argv);
     // CLI11 converts an empty list value without asking the check (edge_study's --spacing '').
     for (const auto* list : {&o.tol_one, &o.tol_even, &o.tol_odd, &o.tol_mid}) {

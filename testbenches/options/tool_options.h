@@ -95,7 +95,8 @@ struct edge_study_options {
 
 // two_line_study: the built-in scene, the NMSE limit, the tolerances (levels) of one line at a time
 // and of the two-line scheme's even and odd lines (and of the middle lines with every fourth line
-// first), the longest interval 2^m_max, the line-above limit K (-1: none), edge walking.
+// first), the longest interval 2^m_max, the line-above limit K (-1: none), edge walking, perfect
+// decisions.
 struct two_line_study_options {
     std::string scene = "head", data_dir = default_data_dir(), device = "squared";
     unsigned size = 512;  // 16..4096
@@ -107,6 +108,7 @@ struct two_line_study_options {
     unsigned m_max = 5;
     int above_slack = 2;  // -1..m_max
     bool walk_edges = false;  // the geometry side and the scan-line Phong walk edges (render_pipeline's)
+    bool perfect_decisions = false;  // a yardstick: decisions on the true error (render_pipeline's)
 };
 
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);

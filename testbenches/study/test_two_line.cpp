@@ -76,6 +76,27 @@ TEST(EmulateAdaptive, BumpBetweenTheSamplesIsMissed) {
     EXPECT_DOUBLE_EQ(squared_error(r.out, grey(v)), 3.0 * 100.0 * 100.0);
 }
 
+// The same bump with perfect decisions (plan_config::perfect_decisions): each candidate is decided
+// on the true RMS of what it sends (three channels), every point still read. Traced by hand:
+//  - at 0, 32 (points 0, 8, 16, 32, check 24) and 16 pixels (4, 12): every point 0, so the halves'
+//    quadratics are 0 and the bump costs an RMS of 100 / sqrt(32) and 25: no; 8 pixels (2, 6): no
+//    bump in 0..7, sent; the next may grow to 16;
+//  - at 8, 16 (20) and 8 pixels (10, 14): the bump at 13, no; 4 pixels (9, 11): sent;
+//  - at 12, 8 pixels (18): no; 4 pixels (13, 15): 13 is a sample, the cubic misses 15: 12..15 exact;
+//  - at 16 and 24, growing to 8 pixels only (22; 26, 28, 30): sent.
+// Points 0, 2, 4, 6, 8, 12, 16, 24, 32 | 9, 10, 11, 14, 20 | 13, 15, 18 | 22 | 26, 28, 30 = 21, no
+// error anywhere, where the heuristic decisions took 5 points and lost the bump.
+TEST(EmulateAdaptive, PerfectDecisionsSeeTheBump) {
+    std::vector<double> v(33, 0.0);
+    v[13] = 100.0;
+    adaptive_emulation e = policy(1.0, 2, 5);
+    e.perfect = true;
+    const emulated_run r = emulate_adaptive(grey(v), e);
+    EXPECT_EQ(r.points, 21u);
+    EXPECT_LT(squared_error(r.out, grey(v)), 1e-18);
+    for (int x = 0; x < 32; ++x) EXPECT_EQ(r.level[x], x >= 12 && x < 16 ? 0 : 2) << x;
+}
+
 // A step from 0 to 50 at pixel 10, 17 pixels, m 2..4, T = 1, traced by hand:
 //  - at 0, 16 pixels: the quadratic through 0, 8, 16 (0, 0, 50) at 4 is -50/8 = -6.25, beyond 2T;
 //  - 8 pixels: samples 0, 2, 4, 8 and the check 6 all 0: sent; next at 8, growing to 16 at most;
@@ -136,6 +157,27 @@ TEST_F(TwoLineHead, EmulationIsThePlanner) {
         EXPECT_EQ(f.pixels(), p.pixels) << tol;
         EXPECT_NEAR(double(f.points()), double(p.geometry_points), 1e-3 * double(p.geometry_points)) << tol;
         EXPECT_NEAR(f.nmse(), nmse, 0.02 * nmse) << tol;
+    }
+}
+
+// The yardstick too: with perfect decisions (each decision on the true RMS of what is sent) the
+// emulation's points are the planner's to 1 % and its NMSE the golden frame's to 3 %, with and
+// without the limit (the planner decides on the golden frame's fixed-point pixels against per-pixel
+// shading, the emulation on doubles).
+TEST_F(TwoLineHead, PerfectDecisionsAsThePlannersAre) {
+    const std::vector<rgb_levels> c = colour();
+    for (const auto& [tol, above_slack] : {std::pair{0.7, -1}, std::pair{1.5, 2}}) {
+        pipeline::plan_config cfg = config(tol, above_slack);
+        cfg.perfect_decisions = true;
+        const pipeline::plan p = pipeline::make_plan(r, k, dev, cfg);
+        const double nmse =
+            pipeline::compare(pipeline::to_image(pipeline::golden_frame(p, k, dev, cfg)), pipeline::to_image(pp)).nmse;
+        const emulated_frame f = emulate_lines(r, c, cfg, {tol});
+        EXPECT_NEAR(double(f.points()), double(p.geometry_points), 0.01 * double(p.geometry_points)) << tol;
+        EXPECT_NEAR(f.nmse(), nmse, 0.03 * nmse) << tol;
+        // And they are not the heuristic's: fewer points at this tolerance.
+        cfg.perfect_decisions = false;
+        EXPECT_LT(f.points(), emulate_lines(r, c, cfg, {tol}).points()) << tol;
     }
 }
 

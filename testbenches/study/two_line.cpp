@@ -65,22 +65,33 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
             const unsigned n = 1u << m;
             const std::array<unsigned, 4> cubic{0, n / 4, n / 2, n};
             for (unsigned t : cubic) touch(pos + t);
-            bool ok = largest_miss(through(v, pos, std::array<unsigned, 3>{0, n / 2, n}, n / 4), v[pos + n / 4]) <=
-                      2.0 * e.tol;
-            if (ok) {
+            // What the interval sends: split at the check point, the halves' quadratics (2^m_min: the cubic).
+            auto sends = [&](unsigned p) {
+                if (m == m_min) return through(v, pos, cubic, double(p));
+                const unsigned h = n / 2, half = p / h;
+                return through(v, pos + half * h, std::array<unsigned, 3>{0, h / 2, h}, double(p - half * h));
+            };
+            bool ok = false;
+            if (e.perfect) {
+                // plan.cpp's perfect decisions: every estimate and the check point paid, the decision
+                // taken on the true RMS of what is sent (levels, the three channels).
                 touch(pos + 3 * n / 4);
-                ok = largest_miss(through(v, pos, cubic, 3 * n / 4), v[pos + 3 * n / 4]) <= e.tol;
+                double se = 0.0;
+                for (unsigned p = 0; p < n; ++p) {
+                    const rgb_levels o = sends(p);
+                    for (int ch = 0; ch < 3; ++ch) se += (o[ch] - v[pos + p][ch]) * (o[ch] - v[pos + p][ch]);
+                }
+                ok = std::sqrt(se / (3.0 * n)) <= e.tol;
+            } else {
+                ok = largest_miss(through(v, pos, std::array<unsigned, 3>{0, n / 2, n}, n / 4), v[pos + n / 4]) <=
+                     2.0 * e.tol;
+                if (ok) {
+                    touch(pos + 3 * n / 4);
+                    ok = largest_miss(through(v, pos, cubic, 3 * n / 4), v[pos + 3 * n / 4]) <= e.tol;
+                }
             }
             if (ok) {
-                if (m > m_min) {  // split at the check point: the halves' quadratics
-                    const unsigned h = n / 2;
-                    for (unsigned half = 0; half < 2; ++half)
-                        for (unsigned p = 0; p < h; ++p)
-                            r.out[pos + half * h + p] =
-                                through(v, pos + half * h, std::array<unsigned, 3>{0, h / 2, h}, double(p));
-                } else {
-                    for (unsigned p = 0; p < n; ++p) r.out[pos + p] = through(v, pos, cubic, double(p));
-                }
+                for (unsigned p = 0; p < n; ++p) r.out[pos + p] = sends(p);
                 std::fill_n(r.level.begin() + std::ptrdiff_t(pos), n, uint8_t(m > m_min ? m - 1 : m));
                 pos += n;
                 grow = std::min(m + 1, m_max);
@@ -124,6 +135,7 @@ emulated_frame emulate_lines(const scene::rasterised& r, const std::vector<rgb_l
         e.m_min = cfg.m_min;
         e.m_max = cfg.m_max;
         e.above_slack = cfg.above_slack;
+        e.perfect = cfg.perfect_decisions;
         const emulated_run er = emulate_adaptive(v, e, above.empty() ? nullptr : above.data() + x0);
         for (unsigned x = x0; x <= x1; ++x) {
             rgb_levels& o = f.out[r.index(x, y)];

@@ -14,7 +14,9 @@
 //    each), against the scan-line Phong; with --walk-edges both walk edges;
 //  - with --tol-mid, every fourth line first: the lines two apart predicted from the lines two above
 //    and below at each --tol-mid, then the odd lines as in the two-line scheme (emulate_lines);
-//  - the cheapest of each meeting --nmse by those counts.
+//  - the cheapest of each meeting --nmse by those counts;
+//  - with --perfect-decisions, each as a yardstick: every decision, the planner's and the emulation's,
+//    taken on the true error of what the interval sends, the check points still paid.
 //   build/bin/two_line_study                  (under 1 s at 512)
 //   build/bin/two_line_study --size 64 --tol-one 1 --tol-even 1 --tol-odd 2
 #include <algorithm>
@@ -62,11 +64,13 @@ int main(int argc, char* argv[]) {
         base.m_max = o.m_max;
         base.above_slack = o.above_slack;
         base.walk_edges = o.walk_edges;
+        base.perfect_decisions = o.perfect_decisions;  // the planner's and, through emulate_lines, the emulation's
 
         std::printf("# Two lines: every other line predicted from the lines either side. %s %ux%u, device %s, n = %u, "
-                    "m <= %u, line-above limit K = %d, edges %s, NMSE limit %.3g\n\n",
+                    "m <= %u, line-above limit K = %d, edges %s, NMSE limit %.3g%s\n\n",
                     o.scene.c_str(), o.size, o.size, o.device.c_str(), k.n, o.m_max, o.above_slack,
-                    o.walk_edges ? "walked" : "not walked", o.nmse);
+                    o.walk_edges ? "walked" : "not walked", o.nmse,
+                    o.perfect_decisions ? ", perfect decisions (a yardstick)" : "");
         std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels).\n\n", scanline, sl.pixels);
         // The emulation's points counted as the planner counts a plan's (emulated_long_ops).
         auto counted = [&](const emulated_frame& f) {
