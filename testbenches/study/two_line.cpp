@@ -212,7 +212,11 @@ std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, un
 emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, const scene::device_config& dev,
                                 unsigned n, bool walk_edges) {
     if (f.point.size() != r.tri.size()) throw std::invalid_argument("emulated_long_ops: the frame and raster differ in size");
-    const auto points = points_in_order(f, r.width);
+    return points_cost(r, points_in_order(f, r.width), dev, n, walk_edges);
+}
+
+emulated_cost points_cost(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
+                          const scene::device_config& dev, unsigned n, bool walk_edges) {
     const pipeline::stepped_count g = pipeline::stepped_geometry(r, points, walk_edges);
     emulated_cost c;
     c.geometry = g.ops;

@@ -29,6 +29,7 @@
 #include "testbenches/common/exit_status.h"
 #include "testbenches/options/tool_options.h"
 #include "line_kinks.h"
+#include "study_frame.h"
 #include "two_line.h"
 
 using namespace shading;
@@ -39,21 +40,17 @@ int main(int argc, char* argv[]) {
     tb::two_line_study_options o;
     if (auto rc = tb::parse_two_line_study(argc, argv, o)) return *rc;
     try {
-        const scene::world w = scene::builtin_scene(o.scene, o.data_dir, o.size, o.size);
-        const scene::rasterised r = scene::rasterise(w);
-        const frame_constants k = frame_constants_of(w);
-        scene::device_config dev;
-        dev.device = scene::parse_device(o.device);
-        const frame pp = per_pixel_frame(r, k, dev);
-        const std::vector<rgb_levels> colour = levels_of(pp);
-        const scene::shaded_image ref = to_image(pp);
-        scene::render_stats sl;
-        scene::render_phong_scanline(r, &sl, nullptr, o.walk_edges);
-        if (sl.pixels == 0) {
+        const study_frame sf(o.scene, o.data_dir, o.size, o.device, o.walk_edges);
+        const scene::rasterised& r = sf.r;
+        const frame_constants& k = sf.k;
+        const scene::device_config& dev = sf.dev;
+        const std::vector<rgb_levels>& colour = sf.colour;
+        const scene::shaded_image ref = to_image(sf.per_pixel);
+        if (sf.pixels == 0) {
             std::fprintf(stderr, "two_line_study: the scene covers no pixel at %ux%u\n", o.size, o.size);
             return tb::exit_failure;
         }
-        const double pixels = double(sl.pixels), scanline = double(sl.total().long_ops()) / pixels;
+        const double pixels = double(sf.pixels), scanline = sf.scanline;
 
         plan_config base;
         base.length = length_policy::adaptive;
@@ -71,7 +68,7 @@ int main(int argc, char* argv[]) {
                     o.scene.c_str(), o.size, o.size, o.device.c_str(), k.n, o.m_max, o.above_slack,
                     o.walk_edges ? "walked" : "not walked", o.nmse,
                     o.perfect_decisions ? ", perfect decisions (a yardstick)" : "");
-        std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels).\n\n", scanline, sl.pixels);
+        std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels).\n\n", scanline, sf.pixels);
         // The emulation's points counted as the planner counts a plan's (emulated_long_ops).
         auto counted = [&](const emulated_frame& f) {
             return emulated_long_ops(r, f, dev, k.n, o.walk_edges).long_ops() / pixels;
