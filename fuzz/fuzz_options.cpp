@@ -213,7 +213,8 @@ std::optional<int> head_study(int argc, char** argv) {
     return std::nullopt;
 }
 
-// The scene options of the studies that render one (components_study, edge_study, two_line_study).
+// The scene options of the studies that render one (components_study, edge_study, two_line_study,
+// cell_study).
 void check_study_scene(const std::string& scene, const std::string& dev, unsigned size) {
     FUZZ_CHECK(in({"head", "sphere", "torus"}, scene), "--scene '%s'", scene.c_str());
     FUZZ_CHECK(device(dev), "--device '%s'", dev.c_str());
@@ -254,6 +255,20 @@ std::optional<int> two_line_study(int argc, char** argv) {
     for (double t : o.tol_mid) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a middle lines' tolerance %g", t);
     FUZZ_CHECK(within(o.m_max, shading::interp::m_min, shading::interp::m_max), "--m-max %u", o.m_max);
     FUZZ_CHECK(within(o.above_slack, -1, int(shading::interp::m_max)), "--above-slack %d", o.above_slack);
+    return std::nullopt;
+}
+
+std::optional<int> cell_study(int argc, char** argv) {
+    cell_study_options o;
+    if (auto rc = parse_cell_study(argc, argv, o)) return rc;
+    check_study_scene(o.scene, o.device, o.size);
+    FUZZ_CHECK(o.nmse > 0.0 && o.nmse <= 1.0, "--nmse %g", o.nmse);
+    FUZZ_CHECK(!o.tol.empty(), "an empty --tol");
+    for (double t : o.tol) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a tolerance %g", t);
+    for (double t : {o.fallback_tol, o.line_tol}) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a tolerance %g", t);
+    for (double a : {o.d2_factor, o.d3_factor}) FUZZ_CHECK(a >= 1e-2 && a <= 1e3, "a factor %g", a);
+    FUZZ_CHECK(within(o.cell_max, 4u, 256u) && (o.cell_max & (o.cell_max - 1)) == 0, "--cell-max %u", o.cell_max);
+    FUZZ_CHECK(within(o.m_max, shading::interp::m_min, shading::interp::m_max), "--m-max %u", o.m_max);
     return std::nullopt;
 }
 
@@ -308,6 +323,7 @@ const program programs[] = {
     {"head_study", head_study},             {"render_pipeline", render_pipeline},
     {"bench_line_tlm", bench_line_tlm},     {"components_study", components_study},
     {"edge_study", edge_study},             {"two_line_study", two_line_study},
+    {"cell_study", cell_study},
 };
 
 }  // namespace

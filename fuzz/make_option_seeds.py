@@ -10,7 +10,7 @@ OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus", "fuzz_o
 PROGRAMS = ["interp_coef_tb", "ua60553_tb", "interp_fd_tb", "ua22802_tb", "interp_horner_tb", "squared_tb",
             "interp_line_tb", "interp_study", "soak_pipeline", "render_reference", "bench_specular_tlm",
             "accuracy_study", "generator_search", "head_study", "render_pipeline", "bench_line_tlm",
-            "components_study", "edge_study", "two_line_study"]
+            "components_study", "edge_study", "two_line_study", "cell_study"]
 BENCH = {  # what every bench's ctest entries pass (cmake/shading.cmake, shading_add_bench)
     "default": "--no-vcd",
     "inject": "--no-vcd --inject-mismatch 3",
@@ -52,6 +52,9 @@ SEEDS = {
     "two_line_study": {"short": "--size 48 --tol-one 1,2 --tol-even 1 --tol-odd 1,2 --tol-mid 1",
                        "scene": "--scene torus --device patent --nmse 1e-4 --m-max 6 --above-slack -1 --walk-edges --perfect-decisions", "empty": "--tol-odd=",
                        "usage": "--m-max 7"},
+    "cell_study": {"short": "--size 48 --tol 1,2",
+                   "scene": "--scene sphere --device patent --nmse 1e-4 --d2-factor 6 --d3-factor 2 --fallback-tol 2 --line-tol 1 --cell-max 64 --m-max 6 --walk-edges --perfect-decisions",
+                   "empty": "--tol=", "nan": "--d3-factor nan", "usage": "--cell-max 48"},
 }
 
 

@@ -349,4 +349,40 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
     return std::nullopt;
 }
 
+std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o) {
+    CLI::App app{"a quadtree of biquadratic cells decided from its lattices' differences, the lines for the rest"};
+    add_study_scene(app, o.scene, o.size, o.data_dir, o.device);
+    app.add_option("--nmse", o.nmse, "the interpolation NMSE allowed (0..1]")->check(CLI::Range(1e-12, 1.0))->check(not_nan());
+    const auto tol = CLI::Range(1e-3, 64.0);
+    app.add_option("--tol", o.tol, "the cells' tolerances (8-bit levels, comma-separated)")->delimiter(',')->check(tol);
+    const auto factor = CLI::Range(1e-2, 1e3);
+    app.add_option("--d2-factor", o.d2_factor, "a cell's lattice second differences allowed, x the tolerance")->check(factor)->check(not_nan());
+    app.add_option("--d3-factor", o.d3_factor, "its family's third differences (x k3) allowed, x the tolerance")->check(factor)->check(not_nan());
+    app.add_option("--fallback-tol", o.fallback_tol, "the smallest cells' row quadratics: their check points' miss allowed (levels)")
+        ->check(tol)
+        ->check(not_nan());
+    app.add_option("--line-tol", o.line_tol, "the rest, by the adaptive policy along columns and rows: its tolerance (levels)")
+        ->check(tol)
+        ->check(not_nan());
+    app.add_option("--cell-max", o.cell_max, "the tiles' size, a power of two 4..256")
+        ->check(CLI::IsMember({4u, 8u, 16u, 32u, 64u, 128u, 256u}));
+    app.add_option("--m-max", o.m_max, "the lines' longest interval 2^m")->check(CLI::Range(interp::m_min, interp::m_max));
+    app.add_flag("--walk-edges", o.walk_edges,
+                 "the geometry side and the scan-line Phong walk each triangle's values from line to line "
+                 "(render_pipeline's)");
+    app.add_flag("--perfect-decisions", o.perfect_decisions,
+                 "a yardstick: every cell and run decided on the true RMS error of what it sends, every point still read");
+    SHADING_CLI_PARSE(app, argc, argv);
+    if (o.tol.empty()) {  // CLI11 converts an empty list value without asking the check
+        std::fprintf(stderr, "cell_study: --tol needs at least one value\n");
+        return 2;
+    }
+    for (double t : o.tol)
+        if (!(t >= 1e-3 && t <= 64.0)) {
+            std::fprintf(stderr, "cell_study: a tolerance of %g is outside 0.001..64\n", t);
+            return 2;
+        }
+    return std::nullopt;
+}
+
 }  // namespace shading::tb

@@ -111,6 +111,22 @@ struct two_line_study_options {
     bool perfect_decisions = false;  // a yardstick: decisions on the true error (render_pipeline's)
 };
 
+// cell_study: the built-in scene, the NMSE limit, the cells' tolerances (levels) and their decision
+// factors, the fallback's and the lines' tolerances, the largest cell, the lines' longest interval
+// 2^m_max, edge walking, perfect decisions.
+struct cell_study_options {
+    std::string scene = "head", data_dir = default_data_dir(), device = "squared";
+    unsigned size = 512;  // 16..4096
+    double nmse = 1e-5;   // (0, 1]
+    std::vector<double> tol{0.7, 0.8, 0.85, 0.9, 0.95, 1.0};
+    double d2_factor = 8.0, d3_factor = 1.0;  // 0.01..1000
+    double fallback_tol = 1.0, line_tol = 1.5;  // levels, 0.001..64
+    unsigned cell_max = 32;  // 4..256, a power of two
+    unsigned m_max = 5;
+    bool walk_edges = false;
+    bool perfect_decisions = false;
+};
+
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);
 std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
 std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
@@ -122,5 +138,6 @@ std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o
 std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o);
 std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o);
 std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_options& o);
+std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o);
 
 }  // namespace shading::tb

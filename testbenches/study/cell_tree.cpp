@@ -1,0 +1,327 @@
+// The quadtree of biquadratic cells decided from its lattices' differences (cell_tree.h).
+#include "cell_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "line_kinks.h"
+
+namespace shading::study {
+
+namespace {
+
+double largest(const rgb_levels& v) { return std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])}); }
+
+// The quadratic through 0, h, 2h at t: its three Lagrange weights.
+std::array<double, 3> quadratic_weights(double t, double h) {
+    return {(t - h) * (t - 2.0 * h) / (2.0 * h * h), -t * (t - 2.0 * h) / (h * h), t * (t - h) / (2.0 * h * h)};
+}
+
+bool power_of_two(unsigned v) { return v != 0 && (v & (v - 1)) == 0; }
+
+}  // namespace
+
+double lattice_second_difference(const std::vector<rgb_levels>& colour, unsigned width, unsigned x0, unsigned y0,
+                                 unsigned s) {
+    const unsigned h = s / 2;
+    auto at = [&](unsigned i, unsigned j) -> const rgb_levels& {
+        return colour[std::size_t(y0 + i * h) * width + x0 + j * h];
+    };
+    double d = 0.0;
+    for (unsigned k = 0; k < 3; ++k)
+        for (int ch = 0; ch < 3; ++ch) {
+            d = std::max(d, std::abs(at(k, 0)[ch] - 2.0 * at(k, 1)[ch] + at(k, 2)[ch]));  // along row k
+            d = std::max(d, std::abs(at(0, k)[ch] - 2.0 * at(1, k)[ch] + at(2, k)[ch]));  // down column k
+        }
+    return d;
+}
+
+double family_third_difference(const std::vector<rgb_levels>& colour, unsigned width, unsigned x0, unsigned y0,
+                               unsigned s, unsigned px, unsigned py) {
+    const unsigned h = s / 2;
+    auto at = [&](unsigned i, unsigned j) -> const rgb_levels& {
+        return colour[std::size_t(py + i * h) * width + px + j * h];
+    };
+    // The child's lattice lines are family lines ci..ci + 2 (rows ri..ri + 2); four points along each,
+    // reaching into the sibling beside (below) it.
+    const unsigned ci = (x0 - px) / h, ri = (y0 - py) / h;
+    const unsigned c0 = ci == 0 ? 0 : 1, r0 = ri == 0 ? 0 : 1;
+    double d = 0.0;
+    for (int ch = 0; ch < 3; ++ch) {
+        for (unsigned k = ri; k < ri + 3; ++k)
+            d = std::max(d, std::abs(at(k, c0 + 3)[ch] - 3.0 * at(k, c0 + 2)[ch] + 3.0 * at(k, c0 + 1)[ch] - at(k, c0)[ch]));
+        for (unsigned k = ci; k < ci + 3; ++k)
+            d = std::max(d, std::abs(at(r0 + 3, k)[ch] - 3.0 * at(r0 + 2, k)[ch] + 3.0 * at(r0 + 1, k)[ch] - at(r0, k)[ch]));
+    }
+    return d * k3;
+}
+
+cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
+                         const pipeline::plan_config& cfg, const cell_tree_config& t) {
+    if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_cells: colours and raster differ in size");
+    if (!power_of_two(t.s_min) || !power_of_two(t.s_max) || t.s_min < 4 || t.s_max < t.s_min || t.s_max > 256)
+        throw std::invalid_argument("emulate_cells: needs cell sizes, powers of two, 4 <= s_min <= s_max <= 256");
+    if (!(t.tol > 0.0) || !(t.d2_factor > 0.0) || !(t.d3_factor > 0.0) || !(t.fallback_tol > 0.0) ||
+        !(t.line_tol > 0.0) || !(t.column_ratio > 0.0))
+        throw std::invalid_argument("emulate_cells: tolerances and factors must be positive");
+    const unsigned W = r.width, H = r.height;
+    auto idx = [W](unsigned x, unsigned y) { return std::size_t(y) * W + x; };
+    auto covered = [&](unsigned x, unsigned y) { return r.tri[idx(x, y)] >= 0; };
+
+    // Each covered pixel's segment (a running number over the frame) and whether it is one patch with
+    // the pixel below.
+    std::vector<int32_t> seg(r.tri.size(), -1);
+    int32_t next = 0;
+    for (unsigned y = 0; y < H; ++y)
+        for (const auto& s : pipeline::line_segments(r, y, cfg, nullptr)) {
+            for (unsigned x = s[0]; x <= s[1]; ++x) seg[idx(x, y)] = next;
+            ++next;
+        }
+    std::vector<uint8_t> down(r.tri.size(), 0);
+    for (unsigned y = 0; y + 1 < H; ++y)
+        for (unsigned x = 0; x < W; ++x) {
+            const int32_t a = r.tri[idx(x, y)], b = r.tri[idx(x, y + 1)];
+            down[idx(x, y)] = a >= 0 && b >= 0 && one_patch(r, a, b);
+        }
+    auto whole = [&](unsigned x0, unsigned y0, unsigned s) {
+        if (x0 + s >= W || y0 + s >= H) return false;
+        for (unsigned y = y0; y <= y0 + s; ++y)
+            for (unsigned x = x0; x <= x0 + s; ++x) {
+                if (seg[idx(x, y)] < 0 || seg[idx(x, y)] != seg[idx(x0, y)]) return false;
+                if (y < y0 + s && !down[idx(x, y)]) return false;
+            }
+        return true;
+    };
+
+    cell_frame f;
+    f.out = colour;
+    f.point.assign(colour.size(), 0);
+    unsigned levels = 0;
+    for (unsigned s = t.s_min; s <= t.s_max; s *= 2) ++levels;
+    f.sent.assign(levels, 0);
+    std::vector<uint8_t> done(colour.size(), 0);
+    auto read = [&](unsigned x, unsigned y) {
+        if (covered(x, y) && !f.point[idx(x, y)]) {
+            f.point[idx(x, y)] = 1;
+            f.order.push_back({x, y});
+        }
+    };
+    auto read_lattice = [&](unsigned x0, unsigned y0, unsigned s, unsigned step) {
+        for (unsigned y = y0; y <= y0 + s; y += step)
+            for (unsigned x = x0; x <= x0 + s; x += step) read(x, y);
+    };
+    auto rms = [&](const std::vector<rgb_levels>& p, unsigned x0, unsigned y0, unsigned s) {
+        double e = 0.0;
+        for (unsigned y = 0; y < s; ++y)
+            for (unsigned x = 0; x < s; ++x)
+                for (int ch = 0; ch < 3; ++ch) {
+                    const double d = p[std::size_t(y) * s + x][ch] - colour[idx(x0 + x, y0 + y)][ch];
+                    e += d * d;
+                }
+        return std::sqrt(e / (3.0 * s * s));
+    };
+    auto deliver = [&](const std::vector<rgb_levels>& p, unsigned x0, unsigned y0, unsigned s) {
+        for (unsigned y = 0; y < s; ++y)
+            for (unsigned x = 0; x < s; ++x) {
+                f.out[idx(x0 + x, y0 + y)] = p[std::size_t(y) * s + x];
+                done[idx(x0 + x, y0 + y)] = 1;
+            }
+    };
+
+    // One cell; family: its parent's corner, the family lattice read (none at the tile size).
+    std::function<void(unsigned, unsigned, unsigned, const std::array<unsigned, 2>*)> cell =
+        [&](unsigned x0, unsigned y0, unsigned s, const std::array<unsigned, 2>* family) {
+            const bool is_whole = whole(x0, y0, s);
+            if (is_whole) {
+                const unsigned h = s / 2;
+                read_lattice(x0, y0, s, h);  // already read where the family was
+                std::vector<rgb_levels> p(std::size_t(s) * s, rgb_levels{0.0, 0.0, 0.0});
+                for (unsigned y = 0; y < s; ++y) {
+                    const auto wy = quadratic_weights(y, h);
+                    for (unsigned x = 0; x < s; ++x) {
+                        const auto wx = quadratic_weights(x, h);
+                        rgb_levels& o = p[std::size_t(y) * s + x];
+                        for (unsigned i = 0; i < 3; ++i)
+                            for (unsigned j = 0; j < 3; ++j)
+                                for (int ch = 0; ch < 3; ++ch)
+                                    o[ch] += wy[i] * wx[j] * colour[idx(x0 + j * h, y0 + i * h)][ch];
+                    }
+                }
+                bool ok;
+                if (t.perfect)
+                    ok = rms(p, x0, y0, s) <= t.tol;
+                else
+                    ok = lattice_second_difference(colour, W, x0, y0, s) <= t.d2_factor * t.tol &&
+                         (!family || family_third_difference(colour, W, x0, y0, s, (*family)[0], (*family)[1]) <=
+                                         t.d3_factor * t.tol);
+                if (ok) {
+                    deliver(p, x0, y0, s);
+                    unsigned k = 0;
+                    while ((t.s_min << k) < s) ++k;
+                    ++f.sent[k];
+                    return;
+                }
+                if (s == t.s_min) {
+                    // Every row read at 0, 2, 4 and sent as the quadratic through them, checked.
+                    for (unsigned y = y0; y < y0 + s; ++y)
+                        for (unsigned x = x0; x <= x0 + s; x += 2) read(x, y);
+                    std::vector<rgb_levels> q(std::size_t(s) * s, rgb_levels{0.0, 0.0, 0.0});
+                    for (unsigned y = 0; y < s; ++y)
+                        for (unsigned x = 0; x < s; ++x) {
+                            const auto w = quadratic_weights(x, 2.0);
+                            for (unsigned j = 0; j < 3; ++j)
+                                for (int ch = 0; ch < 3; ++ch)
+                                    q[std::size_t(y) * s + x][ch] += w[j] * colour[idx(x0 + 2 * j, y0 + y)][ch];
+                        }
+                    bool rows_ok = true;
+                    if (t.perfect) {
+                        rows_ok = rms(q, x0, y0, s) <= t.fallback_tol;
+                        read(x0 + 1, y0 + 1);  // the checks are still read
+                        read(x0 + 3, y0 + 3);
+                    } else {
+                        for (const unsigned c : {1u, 3u}) {
+                            read(x0 + c, y0 + c);
+                            const rgb_levels& v = colour[idx(x0 + c, y0 + c)];
+                            const rgb_levels& e = q[std::size_t(c) * s + c];
+                            if (largest({e[0] - v[0], e[1] - v[1], e[2] - v[2]}) > t.fallback_tol) {
+                                rows_ok = false;
+                                break;
+                            }
+                        }
+                    }
+                    if (rows_ok) {
+                        deliver(q, x0, y0, s);
+                        ++f.fallback_rows;
+                    } else {
+                        std::vector<rgb_levels> exact(std::size_t(s) * s);
+                        for (unsigned y = 0; y < s; ++y)
+                            for (unsigned x = 0; x < s; ++x) {
+                                read(x0 + x, y0 + y);
+                                exact[std::size_t(y) * s + x] = colour[idx(x0 + x, y0 + y)];
+                            }
+                        deliver(exact, x0, y0, s);
+                        ++f.fallback_exact;
+                    }
+                    return;
+                }
+                read_lattice(x0, y0, s, h / 2);  // the children's lattices: their family
+            }
+            if (s > t.s_min) {
+                const unsigned h = s / 2;
+                const std::array<unsigned, 2> me{x0, y0};
+                for (unsigned dy : {0u, h})
+                    for (unsigned dx : {0u, h}) cell(x0 + dx, y0 + dy, h, is_whole ? &me : nullptr);
+            }
+        };
+    for (unsigned y0 = 0; y0 < H; y0 += t.s_max)
+        for (unsigned x0 = 0; x0 < W; x0 += t.s_max) {
+            bool any = false;
+            for (unsigned y = y0; y < std::min(H, y0 + t.s_max) && !any; ++y)
+                for (unsigned x = x0; x < std::min(W, x0 + t.s_max) && !any; ++x) any = covered(x, y);
+            if (any) cell(x0, y0, t.s_max, nullptr);
+        }
+    for (std::size_t i = 0; i < done.size(); ++i) f.pixels_cells += done[i];
+
+    // What no cell delivered: the run each pixel lies in along its row and along its column.
+    const std::size_t before_lines = f.order.size();
+    std::vector<unsigned> row_run(colour.size(), 0), col_run(colour.size(), 0);
+    auto left = [&](unsigned x, unsigned y) { return covered(x, y) && !done[idx(x, y)]; };
+    for (unsigned y = 0; y < H; ++y)
+        for (unsigned x = 0; x < W;) {
+            if (!left(x, y)) {
+                ++x;
+                continue;
+            }
+            unsigned e = x;
+            while (e + 1 < W && left(e + 1, y) && seg[idx(e + 1, y)] == seg[idx(x, y)]) ++e;
+            for (unsigned k = x; k <= e; ++k) row_run[idx(k, y)] = e - x + 1;
+            x = e + 1;
+        }
+    for (unsigned x = 0; x < W; ++x)
+        for (unsigned y = 0; y < H;) {
+            if (!left(x, y)) {
+                ++y;
+                continue;
+            }
+            unsigned e = y;
+            while (e + 1 < H && left(x, e + 1) && down[idx(x, e)]) ++e;
+            for (unsigned k = y; k <= e; ++k) col_run[idx(x, k)] = e - y + 1;
+            y = e + 1;
+        }
+    adaptive_emulation line;
+    line.tol = t.line_tol;
+    line.m_max = t.line_m_max;
+    line.above_slack = -1;
+    line.perfect = t.perfect;
+    // One run: pixels (x, y) in order; sent by the emulated policy, its points read in that order.
+    auto run = [&](const std::vector<std::array<unsigned, 2>>& px) {
+        std::vector<rgb_levels> v;
+        for (const auto& p : px) v.push_back(colour[idx(p[0], p[1])]);
+        const emulated_run er = emulate_adaptive(v, line);
+        for (std::size_t k = 0; k < px.size(); ++k) {
+            if (er.point[k]) read(px[k][0], px[k][1]);
+            f.out[idx(px[k][0], px[k][1])] = er.out[k];
+            done[idx(px[k][0], px[k][1])] = 1;
+        }
+    };
+    std::vector<uint8_t> by_column(colour.size(), 0);
+    for (std::size_t i = 0; i < colour.size(); ++i)
+        by_column[i] = r.tri[i] >= 0 && !done[i] && col_run[i] >= 5 && double(col_run[i]) >= t.column_ratio * row_run[i];
+    for (unsigned x = 0; x < W; ++x)
+        for (unsigned y = 0; y < H;) {
+            if (!by_column[idx(x, y)]) {
+                ++y;
+                continue;
+            }
+            std::vector<std::array<unsigned, 2>> px{{x, y}};
+            unsigned e = y;
+            while (e + 1 < H && by_column[idx(x, e + 1)] && down[idx(x, e)]) px.push_back({x, ++e});
+            f.pixels_columns += px.size();
+            run(px);
+            y = e + 1;
+        }
+    for (unsigned y = 0; y < H; ++y)
+        for (unsigned x = 0; x < W;) {
+            if (!left(x, y)) {
+                ++x;
+                continue;
+            }
+            std::vector<std::array<unsigned, 2>> px{{x, y}};
+            unsigned e = x;
+            while (e + 1 < W && left(e + 1, y) && seg[idx(e + 1, y)] == seg[idx(x, y)]) px.push_back({++e, y});
+            f.pixels_rows += px.size();
+            run(px);
+            x = e + 1;
+        }
+    f.points_lines = f.order.size() - before_lines;
+    // Every point read is delivered as read: the sample stage formed its colour.
+    for (std::size_t i = 0; i < colour.size(); ++i)
+        if (f.point[i]) f.out[i] = colour[i];
+
+    for (std::size_t i = 0; i < colour.size(); ++i) {
+        if (r.tri[i] < 0) continue;
+        ++f.pixels;
+        for (int ch = 0; ch < 3; ++ch) {
+            const double d = f.out[i][ch] - colour[i][ch];
+            f.se += d * d;
+            f.ref2 += colour[i][ch] * colour[i][ch];
+        }
+    }
+    return f;
+}
+
+emulated_cost cell_long_ops(const scene::rasterised& r, const cell_frame& f, const scene::device_config& dev,
+                            unsigned n, bool walk_edges, bool raster_order) {
+    if (f.point.size() != r.tri.size()) throw std::invalid_argument("cell_long_ops: the frame and raster differ in size");
+    std::vector<std::array<unsigned, 2>> points = f.order;
+    if (raster_order)
+        std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) {
+            return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
+        });
+    return points_cost(r, points, dev, n, walk_edges);
+}
+
+}  // namespace shading::study
