@@ -262,6 +262,9 @@ std::optional<int> cell_study(int argc, char** argv) {
     cell_study_options o;
     if (auto rc = parse_cell_study(argc, argv, o)) return rc;
     check_study_scene(o.scene, o.device, o.size);
+    FUZZ_CHECK(o.light.empty() || (o.light.size() == 2 && std::abs(o.light[0]) <= 360.0 && std::abs(o.light[1]) <= 90.0),
+               "--light of %zu values", o.light.size());
+    FUZZ_CHECK(o.n <= 1000u, "--n %u", o.n);
     FUZZ_CHECK(o.nmse > 0.0 && o.nmse <= 1.0, "--nmse %g", o.nmse);
     FUZZ_CHECK(!o.tol.empty(), "an empty --tol");
     for (double t : o.tol) FUZZ_CHECK(t > 0.0 && t <= 64.0, "a tolerance %g", t);

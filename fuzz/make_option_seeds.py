@@ -53,8 +53,8 @@ SEEDS = {
                        "scene": "--scene torus --device patent --nmse 1e-4 --m-max 6 --above-slack -1 --walk-edges --perfect-decisions", "empty": "--tol-odd=",
                        "usage": "--m-max 7"},
     "cell_study": {"short": "--size 48 --tol 1,2",
-                   "scene": "--scene sphere --device patent --nmse 1e-4 --d2-factor 6 --d3-factor 2 --fallback-tol 2 --line-tol 1 --cell-max 64 --m-max 6 --walk-edges --perfect-decisions",
-                   "empty": "--tol=", "nan": "--d3-factor nan", "usage": "--cell-max 48"},
+                   "scene": "--scene sphere --light 35,20 --n 100 --device patent --nmse 1e-4 --d2-factor 6 --d3-factor 2 --fallback-tol 2 --line-tol 1 --cell-max 64 --m-max 6 --walk-edges --perfect-decisions",
+                   "empty": "--tol=", "nan": "--d3-factor nan", "light": "--light 10", "usage": "--cell-max 48"},
 }
 
 

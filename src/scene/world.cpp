@@ -39,6 +39,12 @@ camera frame(const bounds& b, const glm::dvec3& dir, unsigned width, unsigned he
 }
 }  // namespace
 
+glm::dvec3 light_towards(double azimuth_deg, double elevation_deg) {
+    constexpr double pi = 3.14159265358979323846;
+    const double a = azimuth_deg * pi / 180.0, e = elevation_deg * pi / 180.0;
+    return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+}
+
 material skin_material() {
     material m;
     m.ambient = {0.07, 0.05, 0.045};

@@ -96,4 +96,8 @@ world obj_scene(const std::string& path, unsigned width, unsigned height);
 // The defaults for the head (and for user OBJ files).
 material skin_material();
 
+// The direction towards a directional light at azimuth and elevation in degrees (azimuth positive
+// towards +x from +z, elevation up), in the built-in scenes' world coordinates.
+glm::dvec3 light_towards(double azimuth_deg, double elevation_deg);
+
 }  // namespace shading::scene

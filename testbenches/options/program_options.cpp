@@ -3,6 +3,7 @@
 // App. One source for all of them: each source that includes CLI11 pays its inline classes and
 // global validators again (render_options.cpp is the only other one).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -352,6 +353,13 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
 std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o) {
     CLI::App app{"a quadtree of biquadratic cells decided from its lattices' differences, the lines for the rest"};
     add_study_scene(app, o.scene, o.size, o.data_dir, o.device);
+    app.add_option("--light", o.light, "one directional light instead of the scene's: azimuth,elevation in degrees "
+                                       "(render_pipeline's)")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(-360.0, 360.0))
+        ->check(not_nan());
+    app.add_option("--n", o.n, "the specular exponent instead of the scene's (1..1000)")->check(CLI::Range(1u, 1000u));
     app.add_option("--nmse", o.nmse, "the interpolation NMSE allowed (0..1]")->check(CLI::Range(1e-12, 1.0))->check(not_nan());
     const auto tol = CLI::Range(1e-3, 64.0);
     app.add_option("--tol", o.tol, "the cells' tolerances (8-bit levels, comma-separated)")->delimiter(',')->check(tol);
@@ -373,6 +381,10 @@ std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o
     app.add_flag("--perfect-decisions", o.perfect_decisions,
                  "a yardstick: every cell and run decided on the true RMS error of what it sends, every point still read");
     SHADING_CLI_PARSE(app, argc, argv);
+    if (!o.light.empty() && (o.light.size() != 2 || !(std::abs(o.light[1]) <= 90.0))) {
+        std::fprintf(stderr, "cell_study: --light needs azimuth,elevation with the elevation in -90..90\n");
+        return 2;
+    }
     if (o.tol.empty()) {  // CLI11 converts an empty list value without asking the check
         std::fprintf(stderr, "cell_study: --tol needs at least one value\n");
         return 2;

@@ -111,18 +111,21 @@ struct two_line_study_options {
     bool perfect_decisions = false;  // a yardstick: decisions on the true error (render_pipeline's)
 };
 
-// cell_study: the built-in scene, the NMSE limit, the cells' tolerances (levels) and their decision
+// cell_study: the built-in scene, its light (azimuth, elevation in degrees; empty: the scene's) and
+// exponent (0: the scene's), the NMSE limit, the cells' tolerances (levels) and their decision
 // factors, the fallback's and the lines' tolerances, the largest cell, the lines' longest interval
 // 2^m_max, edge walking, perfect decisions.
 struct cell_study_options {
     std::string scene = "head", data_dir = default_data_dir(), device = "squared";
     unsigned size = 512;  // 16..4096
+    std::vector<double> light;  // two values, -360..360 and -90..90
+    unsigned n = 0;             // 0 or 1..1000
     double nmse = 1e-5;   // (0, 1]
     std::vector<double> tol{0.7, 0.8, 0.85, 0.9, 0.95, 1.0};
     double d2_factor = 8.0, d3_factor = 1.0;  // 0.01..1000
     double fallback_tol = 1.0, line_tol = 1.5;  // levels, 0.001..64
     unsigned cell_max = 32;  // 4..256, a power of two
-    unsigned m_max = 5;
+    unsigned m_max = 4;      // the lines': at 5 an interval beside a silhouette misses a lit streak
     bool walk_edges = false;
     bool perfect_decisions = false;
 };

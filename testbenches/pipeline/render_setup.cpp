@@ -11,7 +11,6 @@ namespace shading::render_program {
 
 namespace fs = std::filesystem;
 
-constexpr double pi = 3.14159265358979323846;
 // "v" or "r,g,b" -> a colour; throws scene_error naming the option.
 scene::rgb parse_colour(const std::string& opt, const std::string& s) {
     std::vector<double> v;
@@ -48,8 +47,7 @@ glm::dvec3 parse_light(const std::string& s) {
     } catch (const std::exception&) {
         throw scene::scene_error("--light '" + s + "': expected azimuth,elevation in degrees");
     }
-    const double a = az * pi / 180.0, e = el * pi / 180.0;
-    return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+    return scene::light_towards(az, el);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {

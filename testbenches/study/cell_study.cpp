@@ -33,7 +33,7 @@ int main(int argc, char* argv[]) {
     tb::cell_study_options o;
     if (auto rc = tb::parse_cell_study(argc, argv, o)) return *rc;
     try {
-        const study_frame sf(o.scene, o.data_dir, o.size, o.device, o.walk_edges);
+        const study_frame sf(o.scene, o.data_dir, o.size, o.device, o.walk_edges, o.light, o.n);
         const scene::rasterised& r = sf.r;
         const std::vector<rgb_levels>& colour = sf.colour;
         if (sf.pixels == 0) {
@@ -53,10 +53,13 @@ int main(int argc, char* argv[]) {
         t.line_m_max = o.m_max;
         t.perfect = o.perfect_decisions;
 
+        char light[64] = "the scene's";
+        if (!o.light.empty()) std::snprintf(light, sizeof light, "%g,%g", o.light[0], o.light[1]);
         std::printf("# Cells: a quadtree of biquadratic cells decided from its lattices' differences. %s %ux%u, device "
-                    "%s, n = %u, cells %u..%u, d2 %.3g T, d3 %.3g T, fallback %.3g, lines T = %.3g m <= %u, edges %s, "
+                    "%s, light %s, n = %u, cells %u..%u, d2 %.3g T, d3 %.3g T, fallback %.3g, lines T = %.3g m <= %u, edges %s, "
                     "NMSE limit %.3g%s\n\n",
-                    o.scene.c_str(), o.size, o.size, o.device.c_str(), sf.k.n, t.s_min, t.s_max, t.d2_factor, t.d3_factor,
+                    o.scene.c_str(), o.size, o.size, o.device.c_str(),
+                    light, sf.k.n, t.s_min, t.s_max, t.d2_factor, t.d3_factor,
                     t.fallback_tol, t.line_tol, t.line_m_max, o.walk_edges ? "walked" : "not walked", o.nmse,
                     o.perfect_decisions ? ", perfect decisions (a yardstick)" : "");
         std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels); 3x needs %.2f.\n\n", scanline,

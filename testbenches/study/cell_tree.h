@@ -55,7 +55,7 @@ struct cell_tree_config {
     double fallback_tol = 1.0;   // levels
     double line_tol = 1.5;       // levels
     unsigned s_max = 32, s_min = 4;  // powers of two, 4 <= s_min <= s_max <= 256
-    unsigned line_m_max = 5;
+    unsigned line_m_max = 4;
     double column_ratio = 1.0;
     bool perfect = false;
 };

@@ -5,9 +5,27 @@
 
 namespace shading::study {
 
+namespace {
+
+scene::world with(scene::world w, const std::vector<double>& light, unsigned n) {
+    if (!light.empty()) {
+        if (light.size() != 2) throw scene::scene_error("study_frame: a light is {azimuth, elevation}");
+        const scene::rgb intensity = w.lights.empty() ? scene::rgb{1.0, 1.0, 1.0} : w.lights.front().intensity;
+        w.lights = {{scene::light::kind::directional, scene::light_towards(light[0], light[1]), intensity}};
+    }
+    if (n != 0)
+        for (auto& o : w.objects) o.mat.n = n;
+    scene::validate(w);
+    return w;
+}
+
+}  // namespace
+
 study_frame::study_frame(const std::string& scene, const std::string& data_dir, unsigned size,
-                         const std::string& device, bool walk_edges)
-    : w(scene::builtin_scene(scene, data_dir, size, size)), r(scene::rasterise(w)), k(pipeline::frame_constants_of(w)) {
+                         const std::string& device, bool walk_edges, const std::vector<double>& light, unsigned n)
+    : w(with(scene::builtin_scene(scene, data_dir, size, size), light, n)),
+      r(scene::rasterise(w)),
+      k(pipeline::frame_constants_of(w)) {
     dev.device = scene::parse_device(device);
     per_pixel = pipeline::per_pixel_frame(r, k, dev);
     colour = levels_of(per_pixel);

@@ -1,6 +1,7 @@
 // What the studies that render a built-in scene start from (two_line_study, cell_study and their
 // tests): the scene rasterised, its frame constants, the device, per-pixel shading through it in
-// levels (the interpolation reference), and the scan-line Phong's long operations a pixel.
+// levels (the interpolation reference), and the scan-line Phong's long operations a pixel. As
+// render_pipeline's --light and --n: a light direction replacing the scene's and an exponent.
 #pragma once
 
 #include <string>
@@ -14,9 +15,11 @@ namespace shading::study {
 
 struct study_frame {
     // Throws what builtin_scene, parse_device and frame_constants_of throw. walk_edges: the scan-line
-    // Phong walks each triangle's values from line to line (render_pipeline's --walk-edges).
+    // Phong walks each triangle's values from line to line (render_pipeline's --walk-edges). light:
+    // {azimuth, elevation} in degrees of one directional light instead of the scene's (empty: the
+    // scene's); n: every material's exponent (0: the scene's).
     study_frame(const std::string& scene, const std::string& data_dir, unsigned size, const std::string& device,
-                bool walk_edges);
+                bool walk_edges, const std::vector<double>& light = {}, unsigned n = 0);
     study_frame(const study_frame&) = delete;  // r points at w
     study_frame& operator=(const study_frame&) = delete;
 

@@ -87,11 +87,12 @@ TEST(CellTree, EstimatesByHand) {
 // its second differences are at most 2 x (0.01 + 2e-7 x 64^2) x 16^2 = 5.5 levels, within 8 T, so
 // the four tiles that fit (their closed boxes end at pixel 64) are sent whole: inside [0, 64)^2 the
 // only points are the lattice {0, 16, 32, 48}^2. Column 64 and row 64 are no cell's: column 64 (a
-// column run of 65 against a row run of 1) by the policy along it, 32-pixel intervals read at 0, 8,
-// 16, 24, 32, 40, 48, 56, 64, of which 0, 16, 32, 48, 64 are the tiles' lattice points; row 64
-// (x = 0..63) along it: 0..32 (points 0, 8, 16, 24, 32), 32..48 (36, 40, 44, 48), 48..56 (50, 52,
-// 54, 56), 56..60 (57, 58, 59, 60: the shortest cubic and its check) and the tail 61, 62, 63 exact,
-// of which 0, 16, 32, 48 were read. Every quadratic and cubic reproduces the field: no error.
+// column run of 65 against a row run of 1) by the policy along it (m <= 4), 16-pixel intervals read
+// at 0, 4, 8, 16 and checked at 12, and so on: every fourth pixel, 17 points, of which 0, 16, 32, 48,
+// 64 are the tiles' lattice points; row 64 (x = 0..63) along it: 0..16, 16..32 and 32..48 the same
+// (every fourth pixel), 48..56 (50, 52, 54, 56), 56..60 (57, 58, 59, 60: the shortest cubic and its
+// check) and the tail 61, 62, 63 exact, of which 0, 16, 32, 48 were read. Every quadratic and cubic
+// reproduces the field: no error.
 TEST(CellTree, BiquadraticFieldSentWholeFromItsLattices) {
     const scene::rasterised r = flat_square(65);
     const std::vector<rgb_levels> c = biquadratic(65);
@@ -110,10 +111,10 @@ TEST(CellTree, BiquadraticFieldSentWholeFromItsLattices) {
     for (unsigned y : {0u, 16u, 32u, 48u})
         for (unsigned x : {0u, 16u, 32u, 48u}) lattice.insert({x, y});
     EXPECT_EQ(inside, lattice);
-    // 16 inside, the lattice's 9 on column 64 and row 64 except (64, 64) counted once: 5 + 4, then the
-    // column's 8, 24, 40, 56 and the row's 8, 24, 36, 40, 44, 50, 52, 54, 56, 57, 58, 59, 60, 61, 62, 63.
-    EXPECT_EQ(f.points(), 16u + 9u + 4u + 16u);
-    EXPECT_EQ(f.points_lines, 4u + 16u);
+    // 16 inside, the lattice's 9 on column 64 and row 64 ((64, 64) once: 5 + 4), then the column's 12
+    // others and the row's 20 (4, 8, 12, 20, 24, 28, 36, 40, 44, 50, 52, 54, 56, 57, 58, 59, 60, 61, 62, 63).
+    EXPECT_EQ(f.points(), 16u + 9u + 12u + 20u);
+    EXPECT_EQ(f.points_lines, 12u + 20u);
     EXPECT_LT(f.se, 1e-12);
     EXPECT_GT(f.ref2, 0.0);
 }
