@@ -65,8 +65,8 @@ int main(int argc, char* argv[]) {
         std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels); 3x needs %.2f.\n\n", scanline,
                     sf.pixels, scanline / 3.0);
         std::printf("| T | points / px | cells sent (%u, %u, ...) | smallest: rows / exact | pixels: cells / columns / "
-                    "rows | NMSE | largest error | beyond 4 / 16 | long ops / px, its order (x scan-line) | raster "
-                    "order (x) |\n|---|---|---|---|---|---|---|---|---|---|\n",
+                    "rows | points / px: cells' / lines' | NMSE | largest error | beyond 4 / 16 | long ops / px, its order "
+                    "(x scan-line) | raster order (x) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
                     t.s_min, 2 * t.s_min);
         std::optional<double> best;
         double best_T = 0.0, best_points = 0.0, best_nmse = 0.0, best_raster = 0.0;
@@ -88,8 +88,12 @@ int main(int argc, char* argv[]) {
             const double pts = double(f.points()) / double(f.pixels);
             std::printf("| %.3g | %.4f | ", tol, pts);
             for (std::size_t s = 0; s < f.sent.size(); ++s) std::printf("%s%zu", s ? ", " : "", f.sent[s]);
-            std::printf(" | %zu / %zu | %zu / %zu / %zu | %.3e | %.1f | %zu / %zu | %.2f (%.2fx) | %.2f (%.2fx) |\n",
-                        f.fallback_rows, f.fallback_exact, f.pixels_cells, f.pixels_columns, f.pixels_rows, f.nmse(),
+            const std::size_t line_pixels = f.pixels_columns + f.pixels_rows;
+            std::printf(" | %zu / %zu | %zu / %zu / %zu | %.3f / %.3f | %.3e | %.1f | %zu / %zu | %.2f (%.2fx) | %.2f "
+                        "(%.2fx) |\n",
+                        f.fallback_rows, f.fallback_exact, f.pixels_cells, f.pixels_columns, f.pixels_rows,
+                        double(f.points() - f.points_lines) / double(std::max<std::size_t>(1, f.pixels_cells)),
+                        double(f.points_lines) / double(std::max<std::size_t>(1, line_pixels)), f.nmse(),
                         worst, over4, over16, own, scanline / own, raster, scanline / raster);
             if (f.nmse() <= o.nmse && (!best || own < *best)) {
                 best = own;
