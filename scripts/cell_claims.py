@@ -26,7 +26,7 @@ import sys
 
 TOLS = "0.25,0.35,0.5,0.6,0.7,0.8,0.9,1,1.1,1.2,1.3,1.4,1.7,2,2.5,3,4,6,8"
 CHEAPEST = re.compile(r"The cheapest meeting NMSE <= \S+: T = (\S+), (\S+) points / px \(NMSE (\S+)\), counted (\S+) long "
-                      r"ops / px in its order: (\S+)x")
+                      r"ops / px in its order: (\S+)x the scan-line Phong")
 SCANLINE = re.compile(r"Scan-line Phong: (\S+) long operations per pixel")
 
 

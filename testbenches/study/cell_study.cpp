@@ -62,8 +62,9 @@ int main(int argc, char* argv[]) {
                     light, sf.k.n, t.s_min, t.s_max, t.d2_factor, t.d3_factor,
                     t.fallback_tol, t.line_tol, t.line_m_max, o.walk_edges ? "walked" : "not walked", o.nmse,
                     o.perfect_decisions ? ", perfect decisions (a yardstick)" : "");
-        std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels); 3x needs %.2f.\n\n", scanline,
-                    sf.pixels, scanline / 3.0);
+        std::printf("Scan-line Phong: %.2f long operations per pixel (%zu pixels); 3x needs %.2f. Phong from scratch: "
+                    "%.2f.\n\n",
+                    scanline, sf.pixels, scanline / 3.0, sf.phong);
         std::printf("| T | points / px | cells sent (%u, %u, ...) | smallest: rows / exact | pixels: cells / columns / "
                     "rows | points / px: cells' / lines' | NMSE | largest error | beyond 4 / 16 | long ops / px, its order "
                     "(x scan-line) | raster order (x) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
@@ -107,8 +108,9 @@ int main(int argc, char* argv[]) {
             std::printf("\nThe cheapest meeting NMSE <= %.3g: none of --tol\n", o.nmse);
         else
             std::printf("\nThe cheapest meeting NMSE <= %.3g: T = %.3g, %.4f points / px (NMSE %.3e), counted %.2f long "
-                        "ops / px in its order: %.2fx the scan-line Phong (raster order %.2f: %.2fx)\n",
-                        o.nmse, best_T, best_points, best_nmse, *best, scanline / *best, best_raster,
+                        "ops / px in its order: %.2fx the scan-line Phong, %.2fx the from-scratch Phong (raster order "
+                        "%.2f: %.2fx)\n",
+                        o.nmse, best_T, best_points, best_nmse, *best, scanline / *best, sf.phong / *best, best_raster,
                         scanline / best_raster);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "cell_study: %s\n", e.what());

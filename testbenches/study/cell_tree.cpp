@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -109,10 +108,6 @@ cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_level
             f.order.push_back({x, y});
         }
     };
-    auto read_lattice = [&](unsigned x0, unsigned y0, unsigned s, unsigned step) {
-        for (unsigned y = y0; y <= y0 + s; y += step)
-            for (unsigned x = x0; x <= x0 + s; x += step) read(x, y);
-    };
     auto rms = [&](const std::vector<rgb_levels>& p, unsigned x0, unsigned y0, unsigned s) {
         double e = 0.0;
         for (unsigned y = 0; y < s; ++y)
@@ -131,98 +126,141 @@ cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_level
             }
     };
 
-    // One cell; family: its parent's corner, the family lattice read (none at the tile size).
-    std::function<void(unsigned, unsigned, unsigned, const std::array<unsigned, 2>*)> cell =
-        [&](unsigned x0, unsigned y0, unsigned s, const std::array<unsigned, 2>* family) {
-            const bool is_whole = whole(x0, y0, s);
-            if (is_whole) {
-                const unsigned h = s / 2;
-                read_lattice(x0, y0, s, h);  // already read where the family was
-                std::vector<rgb_levels> p(std::size_t(s) * s, rgb_levels{0.0, 0.0, 0.0});
-                for (unsigned y = 0; y < s; ++y) {
-                    const auto wy = quadratic_weights(y, h);
-                    for (unsigned x = 0; x < s; ++x) {
-                        const auto wx = quadratic_weights(x, h);
-                        rgb_levels& o = p[std::size_t(y) * s + x];
-                        for (unsigned i = 0; i < 3; ++i)
-                            for (unsigned j = 0; j < 3; ++j)
-                                for (int ch = 0; ch < 3; ++ch)
-                                    o[ch] += wy[i] * wx[j] * colour[idx(x0 + j * h, y0 + i * h)][ch];
+    // The biquadratic through the lattice of the cell at (x0, y0) of s pixels.
+    auto biquadratic = [&](unsigned x0, unsigned y0, unsigned s) {
+        const unsigned h = s / 2;
+        std::vector<rgb_levels> p(std::size_t(s) * s, rgb_levels{0.0, 0.0, 0.0});
+        for (unsigned y = 0; y < s; ++y) {
+            const auto wy = quadratic_weights(y, h);
+            for (unsigned x = 0; x < s; ++x) {
+                const auto wx = quadratic_weights(x, h);
+                rgb_levels& o = p[std::size_t(y) * s + x];
+                for (unsigned i = 0; i < 3; ++i)
+                    for (unsigned j = 0; j < 3; ++j)
+                        for (int ch = 0; ch < 3; ++ch) o[ch] += wy[i] * wx[j] * colour[idx(x0 + j * h, y0 + i * h)][ch];
+            }
+        }
+        return p;
+    };
+    // Reads are batched: a level's points are read together, in raster order across the band, before
+    // any cell of the level decides (a geometry unit steps along each line through them).
+    std::vector<std::array<unsigned, 2>> batch;
+    auto want = [&](unsigned x, unsigned y) { batch.push_back({x, y}); };
+    auto flush = [&] {
+        std::sort(batch.begin(), batch.end(),
+                  [](const auto& a, const auto& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; });
+        for (const auto& p : batch) read(p[0], p[1]);
+        batch.clear();
+    };
+    struct pending {
+        unsigned x0, y0, s;
+        bool family;  // its parent was whole: the family lattice over (px, py) was read
+        unsigned px, py;
+    };
+    for (unsigned by = 0; by < H; by += t.s_max) {
+        // Band by band (s_max lines and the lattice row below them), level by level.
+        std::vector<pending> level;
+        for (unsigned x0 = 0; x0 < W; x0 += t.s_max) {
+            bool any = false;
+            for (unsigned y = by; y < std::min(H, by + t.s_max) && !any; ++y)
+                for (unsigned x = x0; x < std::min(W, x0 + t.s_max) && !any; ++x) any = covered(x, y);
+            if (any) level.push_back({x0, by, t.s_max, false, 0, 0});
+        }
+        for (unsigned s = t.s_max; !level.empty(); s /= 2) {
+            const unsigned h = s / 2;
+            std::vector<uint8_t> is_whole(level.size());
+            for (std::size_t c = 0; c < level.size(); ++c) {
+                is_whole[c] = whole(level[c].x0, level[c].y0, s);
+                if (is_whole[c] && !level[c].family)  // with a family its lattice was read with it
+                    for (unsigned y = level[c].y0; y <= level[c].y0 + s; y += h)
+                        for (unsigned x = level[c].x0; x <= level[c].x0 + s; x += h) want(x, y);
+            }
+            flush();
+            std::vector<pending> next, fallback;
+            for (std::size_t c = 0; c < level.size(); ++c) {
+                const pending& e = level[c];
+                if (is_whole[c]) {
+                    const std::vector<rgb_levels> p = biquadratic(e.x0, e.y0, s);
+                    const bool ok = t.perfect ? rms(p, e.x0, e.y0, s) <= t.tol
+                                              : lattice_second_difference(colour, W, e.x0, e.y0, s) <= t.d2_factor * t.tol &&
+                                                    (!e.family || family_third_difference(colour, W, e.x0, e.y0, s, e.px, e.py) <=
+                                                                      t.d3_factor * t.tol);
+                    if (ok) {
+                        deliver(p, e.x0, e.y0, s);
+                        unsigned k = 0;
+                        while ((t.s_min << k) < s) ++k;
+                        ++f.sent[k];
+                        continue;
                     }
+                    if (s == t.s_min) {
+                        fallback.push_back(e);
+                        continue;
+                    }
+                    // The children's lattices, their family, read before any of them decides.
+                    for (unsigned y = e.y0; y <= e.y0 + s; y += h / 2)
+                        for (unsigned x = e.x0; x <= e.x0 + s; x += h / 2) want(x, y);
                 }
-                bool ok;
-                if (t.perfect)
-                    ok = rms(p, x0, y0, s) <= t.tol;
-                else
-                    ok = lattice_second_difference(colour, W, x0, y0, s) <= t.d2_factor * t.tol &&
-                         (!family || family_third_difference(colour, W, x0, y0, s, (*family)[0], (*family)[1]) <=
-                                         t.d3_factor * t.tol);
-                if (ok) {
-                    deliver(p, x0, y0, s);
-                    unsigned k = 0;
-                    while ((t.s_min << k) < s) ++k;
-                    ++f.sent[k];
-                    return;
-                }
-                if (s == t.s_min) {
-                    // Every row read at 0, 2, 4 and sent as the quadratic through them, checked.
-                    for (unsigned y = y0; y < y0 + s; ++y)
-                        for (unsigned x = x0; x <= x0 + s; x += 2) read(x, y);
-                    std::vector<rgb_levels> q(std::size_t(s) * s, rgb_levels{0.0, 0.0, 0.0});
-                    for (unsigned y = 0; y < s; ++y)
-                        for (unsigned x = 0; x < s; ++x) {
+                if (s > t.s_min)
+                    for (unsigned dy : {0u, h})
+                        for (unsigned dx : {0u, h}) next.push_back({e.x0 + dx, e.y0 + dy, h, bool(is_whole[c]), e.x0, e.y0});
+            }
+            flush();
+            if (!fallback.empty()) {
+                // The smallest cells turned down: every row read at 0, 2, 4 and sent as the quadratic
+                // through them, checked at (1, 1), then (3, 3); where a check misses, the pixels exact.
+                const unsigned m = t.s_min;
+                for (const pending& e : fallback)
+                    for (unsigned y = e.y0; y < e.y0 + m; ++y)
+                        for (unsigned x = e.x0; x <= e.x0 + m; x += 2) want(x, y);
+                flush();
+                std::vector<std::vector<rgb_levels>> q(fallback.size());
+                std::vector<uint8_t> rows_ok(fallback.size(), 1);
+                for (std::size_t c = 0; c < fallback.size(); ++c) {
+                    const pending& e = fallback[c];
+                    q[c].assign(std::size_t(m) * m, rgb_levels{0.0, 0.0, 0.0});
+                    for (unsigned y = 0; y < m; ++y)
+                        for (unsigned x = 0; x < m; ++x) {
                             const auto w = quadratic_weights(x, 2.0);
                             for (unsigned j = 0; j < 3; ++j)
                                 for (int ch = 0; ch < 3; ++ch)
-                                    q[std::size_t(y) * s + x][ch] += w[j] * colour[idx(x0 + 2 * j, y0 + y)][ch];
+                                    q[c][std::size_t(y) * m + x][ch] += w[j] * colour[idx(e.x0 + 2 * j, e.y0 + y)][ch];
                         }
-                    bool rows_ok = true;
-                    if (t.perfect) {
-                        rows_ok = rms(q, x0, y0, s) <= t.fallback_tol;
-                        read(x0 + 1, y0 + 1);  // the checks are still read
-                        read(x0 + 3, y0 + 3);
-                    } else {
-                        for (const unsigned c : {1u, 3u}) {
-                            read(x0 + c, y0 + c);
-                            const rgb_levels& v = colour[idx(x0 + c, y0 + c)];
-                            const rgb_levels& e = q[std::size_t(c) * s + c];
-                            if (largest({e[0] - v[0], e[1] - v[1], e[2] - v[2]}) > t.fallback_tol) {
-                                rows_ok = false;
-                                break;
-                            }
-                        }
+                    if (t.perfect) rows_ok[c] = rms(q[c], e.x0, e.y0, m) <= t.fallback_tol;
+                }
+                for (const unsigned k : {1u, 3u}) {
+                    for (std::size_t c = 0; c < fallback.size(); ++c)
+                        if (rows_ok[c] || t.perfect) want(fallback[c].x0 + k, fallback[c].y0 + k);  // perfect: still read
+                    flush();
+                    if (t.perfect) continue;
+                    for (std::size_t c = 0; c < fallback.size(); ++c) {
+                        if (!rows_ok[c]) continue;
+                        const rgb_levels& v = colour[idx(fallback[c].x0 + k, fallback[c].y0 + k)];
+                        const rgb_levels& e = q[c][std::size_t(k) * m + k];
+                        rows_ok[c] = largest({e[0] - v[0], e[1] - v[1], e[2] - v[2]}) <= t.fallback_tol;
                     }
-                    if (rows_ok) {
-                        deliver(q, x0, y0, s);
+                }
+                for (std::size_t c = 0; c < fallback.size(); ++c)
+                    if (!rows_ok[c])
+                        for (unsigned y = fallback[c].y0; y < fallback[c].y0 + m; ++y)
+                            for (unsigned x = fallback[c].x0; x < fallback[c].x0 + m; ++x) want(x, y);
+                flush();
+                for (std::size_t c = 0; c < fallback.size(); ++c) {
+                    if (rows_ok[c]) {
+                        deliver(q[c], fallback[c].x0, fallback[c].y0, m);
                         ++f.fallback_rows;
                     } else {
-                        std::vector<rgb_levels> exact(std::size_t(s) * s);
-                        for (unsigned y = 0; y < s; ++y)
-                            for (unsigned x = 0; x < s; ++x) {
-                                read(x0 + x, y0 + y);
-                                exact[std::size_t(y) * s + x] = colour[idx(x0 + x, y0 + y)];
-                            }
-                        deliver(exact, x0, y0, s);
+                        std::vector<rgb_levels> exact(std::size_t(m) * m);
+                        for (unsigned y = 0; y < m; ++y)
+                            for (unsigned x = 0; x < m; ++x)
+                                exact[std::size_t(y) * m + x] = colour[idx(fallback[c].x0 + x, fallback[c].y0 + y)];
+                        deliver(exact, fallback[c].x0, fallback[c].y0, m);
                         ++f.fallback_exact;
                     }
-                    return;
                 }
-                read_lattice(x0, y0, s, h / 2);  // the children's lattices: their family
             }
-            if (s > t.s_min) {
-                const unsigned h = s / 2;
-                const std::array<unsigned, 2> me{x0, y0};
-                for (unsigned dy : {0u, h})
-                    for (unsigned dx : {0u, h}) cell(x0 + dx, y0 + dy, h, is_whole ? &me : nullptr);
-            }
-        };
-    for (unsigned y0 = 0; y0 < H; y0 += t.s_max)
-        for (unsigned x0 = 0; x0 < W; x0 += t.s_max) {
-            bool any = false;
-            for (unsigned y = y0; y < std::min(H, y0 + t.s_max) && !any; ++y)
-                for (unsigned x = x0; x < std::min(W, x0 + t.s_max) && !any; ++x) any = covered(x, y);
-            if (any) cell(x0, y0, t.s_max, nullptr);
+            level = std::move(next);
         }
+    }
     for (std::size_t i = 0; i < done.size(); ++i) f.pixels_cells += done[i];
 
     // What no cell delivered: the run each pixel lies in along its row and along its column.

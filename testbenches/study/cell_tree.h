@@ -19,7 +19,8 @@
 
 namespace shading::study {
 
-// The scheme, in the order it runs:
+// The scheme, in the order it runs, band by band (s_max lines) and in each band level by level, every
+// level's reads batched in raster order across the band before any of its cells decides:
 //  - tiles of s_max x s_max pixels, aligned to the frame; a cell [x0, x0 + s) x [y0, y0 + s) is
 //    *whole* when every pixel of its closed box [x0, x0 + s] x [y0, y0 + s] is covered, each row of
 //    the box lies in one of the planner's segments (pipeline::line_segments: no silhouette, fold or

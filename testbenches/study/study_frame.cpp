@@ -33,6 +33,9 @@ study_frame::study_frame(const std::string& scene, const std::string& data_dir, 
     scene::render_phong_scanline(r, &sl, nullptr, walk_edges);
     pixels = sl.pixels;
     scanline = sl.pixels ? double(sl.total().long_ops()) / double(sl.pixels) : 0.0;
+    scene::render_stats ph;
+    scene::render_phong(r, &ph);
+    phong = ph.pixels ? double(ph.total().long_ops()) / double(ph.pixels) : 0.0;
 }
 
 }  // namespace shading::study

@@ -1,6 +1,7 @@
 // What the studies that render a built-in scene start from (two_line_study, cell_study and their
 // tests): the scene rasterised, its frame constants, the device, per-pixel shading through it in
-// levels (the interpolation reference), and the scan-line Phong's long operations a pixel. As
+// levels (the interpolation reference), and the scan-line and the from-scratch Phong's long
+// operations a pixel. As
 // render_pipeline's --light and --n: a light direction replacing the scene's and an exponent.
 #pragma once
 
@@ -31,6 +32,7 @@ struct study_frame {
     std::vector<rgb_levels> colour;  // per_pixel in levels
     std::size_t pixels = 0;          // covered
     double scanline = 0.0;           // the scan-line Phong's long operations a covered pixel (0: none covered)
+    double phong = 0.0;              // the from-scratch Phong's (each pixel's geometry from scratch)
 };
 
 }  // namespace shading::study
