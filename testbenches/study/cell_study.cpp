@@ -11,7 +11,7 @@
 //    against the scan-line Phong; with --walk-edges both walk edges;
 //  - the cheapest meeting --nmse, counted in the scheme's order;
 //  - with --perfect-decisions, a yardstick: every decision on the true error of what it sends.
-//   build/bin/cell_study                  (about 2 s at 512)
+//   build/bin/cell_study                  (under 1 s at 512)
 //   build/bin/cell_study --size 48 --tol 1,2
 #include <algorithm>
 #include <cmath>
