@@ -48,8 +48,7 @@ int main(int argc, char* argv[]) {
         t.d3_factor = o.d3_factor;
         t.fallback_tol = o.fallback_tol;
         t.line_tol = o.line_tol;
-        t.s_max = o.cell_max;
-        t.s_min = std::min(4u, o.cell_max);
+        t.s_max = o.cell_max;  // s_min stays 4, the smallest cell with a lattice between its corners
         t.line_m_max = o.m_max;
         t.perfect = o.perfect_decisions;
 

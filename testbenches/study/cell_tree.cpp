@@ -21,6 +21,11 @@ std::array<double, 3> quadratic_weights(double t, double h) {
 
 bool power_of_two(unsigned v) { return v != 0 && (v & (v - 1)) == 0; }
 
+// Raster order: line by line, left to right.
+bool raster_before(const std::array<unsigned, 2>& a, const std::array<unsigned, 2>& b) {
+    return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
+}
+
 }  // namespace
 
 double lattice_second_difference(const std::vector<rgb_levels>& colour, unsigned width, unsigned x0, unsigned y0,
@@ -147,8 +152,7 @@ cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_level
     std::vector<std::array<unsigned, 2>> batch;
     auto want = [&](unsigned x, unsigned y) { batch.push_back({x, y}); };
     auto flush = [&] {
-        std::sort(batch.begin(), batch.end(),
-                  [](const auto& a, const auto& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; });
+        std::sort(batch.begin(), batch.end(), raster_before);
         for (const auto& p : batch) read(p[0], p[1]);
         batch.clear();
     };
@@ -263,39 +267,49 @@ cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_level
     }
     for (std::size_t i = 0; i < done.size(); ++i) f.pixels_cells += done[i];
 
+    // Runs of the pixels where `in` holds, along rows (joined within one segment) or down columns
+    // (joined where a pixel is one patch with the one below), each handed to fn in order.
+    using pixel = std::array<unsigned, 2>;
+    auto runs = [&](bool columns, const auto& in, const auto& fn) {
+        const unsigned outer = columns ? W : H, inner = columns ? H : W;
+        for (unsigned a = 0; a < outer; ++a)
+            for (unsigned b = 0; b < inner;) {
+                auto at = [&](unsigned k) { return columns ? pixel{a, k} : pixel{k, a}; };
+                const pixel first = at(b);
+                if (!in(first[0], first[1])) {
+                    ++b;
+                    continue;
+                }
+                std::vector<pixel> px{first};
+                while (b + px.size() < inner) {
+                    const pixel q = at(b + unsigned(px.size())), last = px.back();
+                    const bool joined = columns ? down[idx(last[0], last[1])] != 0
+                                                : seg[idx(q[0], q[1])] == seg[idx(first[0], first[1])];
+                    if (!joined || !in(q[0], q[1])) break;
+                    px.push_back(q);
+                }
+                fn(px);
+                b += unsigned(px.size());
+            }
+    };
+
     // What no cell delivered: the run each pixel lies in along its row and along its column.
     const std::size_t before_lines = f.order.size();
-    std::vector<unsigned> row_run(colour.size(), 0), col_run(colour.size(), 0);
+    std::vector<std::size_t> row_run(colour.size(), 0), col_run(colour.size(), 0);
     auto left = [&](unsigned x, unsigned y) { return covered(x, y) && !done[idx(x, y)]; };
-    for (unsigned y = 0; y < H; ++y)
-        for (unsigned x = 0; x < W;) {
-            if (!left(x, y)) {
-                ++x;
-                continue;
-            }
-            unsigned e = x;
-            while (e + 1 < W && left(e + 1, y) && seg[idx(e + 1, y)] == seg[idx(x, y)]) ++e;
-            for (unsigned k = x; k <= e; ++k) row_run[idx(k, y)] = e - x + 1;
-            x = e + 1;
-        }
-    for (unsigned x = 0; x < W; ++x)
-        for (unsigned y = 0; y < H;) {
-            if (!left(x, y)) {
-                ++y;
-                continue;
-            }
-            unsigned e = y;
-            while (e + 1 < H && left(x, e + 1) && down[idx(x, e)]) ++e;
-            for (unsigned k = y; k <= e; ++k) col_run[idx(x, k)] = e - y + 1;
-            y = e + 1;
-        }
+    runs(false, left, [&](const std::vector<pixel>& px) {
+        for (const auto& p : px) row_run[idx(p[0], p[1])] = px.size();
+    });
+    runs(true, left, [&](const std::vector<pixel>& px) {
+        for (const auto& p : px) col_run[idx(p[0], p[1])] = px.size();
+    });
     adaptive_emulation line;
     line.tol = t.line_tol;
     line.m_max = t.line_m_max;
     line.above_slack = -1;
     line.perfect = t.perfect;
-    // One run: pixels (x, y) in order; sent by the emulated policy, its points read in that order.
-    auto run = [&](const std::vector<std::array<unsigned, 2>>& px) {
+    // One run: sent by the emulated policy, its points read in the run's order.
+    auto run = [&](const std::vector<pixel>& px) {
         std::vector<rgb_levels> v;
         for (const auto& p : px) v.push_back(colour[idx(p[0], p[1])]);
         const emulated_run er = emulate_adaptive(v, line);
@@ -307,33 +321,15 @@ cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_level
     };
     std::vector<uint8_t> by_column(colour.size(), 0);
     for (std::size_t i = 0; i < colour.size(); ++i)
-        by_column[i] = r.tri[i] >= 0 && !done[i] && col_run[i] >= 5 && double(col_run[i]) >= t.column_ratio * row_run[i];
-    for (unsigned x = 0; x < W; ++x)
-        for (unsigned y = 0; y < H;) {
-            if (!by_column[idx(x, y)]) {
-                ++y;
-                continue;
-            }
-            std::vector<std::array<unsigned, 2>> px{{x, y}};
-            unsigned e = y;
-            while (e + 1 < H && by_column[idx(x, e + 1)] && down[idx(x, e)]) px.push_back({x, ++e});
-            f.pixels_columns += px.size();
-            run(px);
-            y = e + 1;
-        }
-    for (unsigned y = 0; y < H; ++y)
-        for (unsigned x = 0; x < W;) {
-            if (!left(x, y)) {
-                ++x;
-                continue;
-            }
-            std::vector<std::array<unsigned, 2>> px{{x, y}};
-            unsigned e = x;
-            while (e + 1 < W && left(e + 1, y) && seg[idx(e + 1, y)] == seg[idx(x, y)]) px.push_back({++e, y});
-            f.pixels_rows += px.size();
-            run(px);
-            x = e + 1;
-        }
+        by_column[i] = r.tri[i] >= 0 && !done[i] && col_run[i] >= 5 && double(col_run[i]) >= t.column_ratio * double(row_run[i]);
+    runs(true, [&](unsigned x, unsigned y) { return by_column[idx(x, y)] != 0; }, [&](const std::vector<pixel>& px) {
+        f.pixels_columns += px.size();
+        run(px);
+    });
+    runs(false, left, [&](const std::vector<pixel>& px) {
+        f.pixels_rows += px.size();
+        run(px);
+    });
     f.points_lines = f.order.size() - before_lines;
     // Every point read is delivered as read: the sample stage formed its colour.
     for (std::size_t i = 0; i < colour.size(); ++i)
@@ -355,10 +351,7 @@ emulated_cost cell_long_ops(const scene::rasterised& r, const cell_frame& f, con
                             unsigned n, bool walk_edges, bool raster_order) {
     if (f.point.size() != r.tri.size()) throw std::invalid_argument("cell_long_ops: the frame and raster differ in size");
     std::vector<std::array<unsigned, 2>> points = f.order;
-    if (raster_order)
-        std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) {
-            return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
-        });
+    if (raster_order) std::sort(points.begin(), points.end(), raster_before);
     return points_cost(r, points, dev, n, walk_edges);
 }
 

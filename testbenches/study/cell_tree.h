@@ -44,9 +44,10 @@ namespace shading::study {
 //    policy emulated (emulate_adaptive: cubic, split at the check, growth by one level, the exact
 //    fallback, tol = line_tol, m <= line_m_max, no line-above limit).
 // Every point read is delivered as read (the sample stage formed its colour; a check inside a sent
-// cell or interval included). The decisions are adders and compares on colours the sample stage has formed; the biquadratic is
-// forward differences down the lattice columns and along each row (the Lagrange weights' denominators
-// are powers of two): no long operation beyond the points' geometry and colours.
+// cell or interval included). The decisions are adders and compares on colours the sample stage has
+// formed; the biquadratic is forward differences down the lattice columns and along each row (the
+// Lagrange weights' denominators are powers of two): no long operation beyond the points' geometry
+// and colours.
 // perfect: a yardstick, each cell (and each fallback) decided on the true RMS (levels, the three
 // channels) of what it would send, at most tol (fallback_tol); every lattice and check point still read.
 struct cell_tree_config {
