@@ -54,6 +54,27 @@ rgb_codes::value_type golden_output_clamp(uint64_t coef_bits) {
     return std::min(q8, pixel_max);
 }
 
+namespace {
+
+// One channel of an interval after the sample stage: the coefficient units' polynomial, every pixel
+// evaluated and clamped to pixel_fmt.
+void evaluate(const interp::cubic_coefs& coefs, bool deg2, unsigned m, unsigned len, evaluator e, int c,
+              std::vector<rgb_codes>& out) {
+    if (e == evaluator::horner) {
+        for (unsigned p = 0; p < len; ++p) {
+            const uint64_t t = static_cast<uint64_t>(p) << (interp::t_fmt.frac - m);  // k / 2^m in Q1.8
+            out[p][c] = golden_output_clamp(interp::golden_horner(coefs, t, deg2));
+        }
+    } else {
+        // The FD unit is a cubic evaluator: a quadratic enters as A = 0, B = a, C = b, D = c.
+        const interp::cubic_coefs fd = deg2 ? interp::cubic_coefs{0, coefs.a, coefs.b, coefs.c} : coefs;
+        const auto bits = interp::golden_fd(fd, m, len);
+        for (unsigned p = 0; p < len; ++p) out[p][c] = golden_output_clamp(bits[p]);
+    }
+}
+
+}  // namespace
+
 std::vector<rgb_codes> interval_pixels(const interval_job& job, const frame_constants& k,
                                        const scene::device_config& dev, evaluator e, interp::sample_set set,
                                        interp::div3_mode div) {
@@ -73,18 +94,16 @@ std::vector<rgb_codes> interval_pixels(const interval_job& job, const frame_cons
         else
             coefs = interp::golden_cubic_coefs({smp[0][c], smp[1][c], smp[2][c], smp[3][c]}, set, div,
                                                interp::div3_grouping::whole_sum);
-        if (e == evaluator::horner) {
-            for (unsigned p = 0; p < job.len; ++p) {
-                const uint64_t t = static_cast<uint64_t>(p) << (interp::t_fmt.frac - job.m);  // k / 2^m in Q1.8
-                out[p][c] = golden_output_clamp(interp::golden_horner(coefs, t, job.deg2));
-            }
-        } else {
-            // The FD unit is a cubic evaluator: a quadratic enters as A = 0, B = a, C = b, D = c.
-            const interp::cubic_coefs fd = job.deg2 ? interp::cubic_coefs{0, coefs.a, coefs.b, coefs.c} : coefs;
-            const auto bits = interp::golden_fd(fd, job.m, job.len);
-            for (unsigned p = 0; p < job.len; ++p) out[p][c] = golden_output_clamp(bits[p]);
-        }
+        evaluate(coefs, job.deg2, job.m, job.len, e, c, out);
     }
+    return out;
+}
+
+std::vector<rgb_codes> quadratic_pixels(const std::array<rgb_codes, 3>& smp, unsigned m, unsigned len, evaluator e) {
+    if (m < 1 || m > interp::m_max || len < 1 || len > (1u << m)) return {};
+    std::vector<rgb_codes> out(len);
+    for (int c = 0; c < 3; ++c)
+        evaluate(interp::golden_quad_coefs({smp[0][c], smp[1][c], smp[2][c]}), true, m, len, e, c, out);
     return out;
 }
 

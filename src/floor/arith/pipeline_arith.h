@@ -73,5 +73,10 @@ rgb_codes::value_type golden_output_clamp(uint64_t coef_bits);
 std::vector<rgb_codes> interval_pixels(const interval_job& job, const frame_constants& k,
                                        const scene::device_config& dev, evaluator e, interp::sample_set set,
                                        interp::div3_mode div);
+// The quadratic through three colour samples (colour_fmt codes) at t = 0, 1/2, 1 of an interval of
+// 2^m pixels, pixels 0 .. len - 1: interval_pixels' quadratic after the sample stage (golden_quad_coefs,
+// the evaluator, golden_output_clamp). The cells' biquadratic (cells.h) runs it down the lattice
+// columns and then along each row. m outside 1 .. interp::m_max or len outside 1 .. 2^m: no pixels.
+std::vector<rgb_codes> quadratic_pixels(const std::array<rgb_codes, 3>& smp, unsigned m, unsigned len, evaluator e);
 
 }  // namespace shading::pipeline
