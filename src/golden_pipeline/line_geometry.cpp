@@ -7,8 +7,6 @@
 
 namespace shading::pipeline {
 
-namespace {
-
 // The visible surface jumps to another part of the mesh between two neighbouring pixels when their
 // triangles share no vertex (a fold: eyelid, ear, nostril, lips, in front of a surface at nearly
 // the same depth). Integer compares on the rasteriser's triangle indices, counted as decisions.
@@ -28,8 +26,6 @@ bool surface_break(const scene::rasterised& r, std::size_t a, std::size_t b, sce
         }
     return true;
 }
-
-}  // namespace
 
 std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, unsigned y, const plan_config& c,
                                                    scene::op_counts* decision) {

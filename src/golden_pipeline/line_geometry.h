@@ -19,6 +19,11 @@ inline std::array<unsigned, 4> cubic_points(interp::sample_set set) {
 }
 inline constexpr std::array<unsigned, 3> quad_points{0, 4, 8};
 
+// Whether the visible surface jumps to another part of the mesh between the covered pixels of
+// raster indices a and b: their triangles share no vertex or lie on different objects (a fold; the
+// segments' surface_breaks). Its compares are charged to `decision` (null: uncounted).
+bool surface_break(const scene::rasterised& r, std::size_t a, std::size_t b, scene::op_counts* decision);
+
 // One raster line's geometry, computed once per pixel and counted once.
 class line_geometry {
     using cnum = scene::cnum;
@@ -71,10 +76,14 @@ public:
     }
 
     // The stepping geometry unit's count: the same points, left to right, stepped along the line by
-    // one span_stepper over the frame (plan.geometry_stepped, plan.stepping).
+    // one span_stepper over the frame (plan.geometry_stepped, plan.stepping); the points are listed
+    // in plan.points.
     void charge_stepped(scene::span_stepper& stepper, plan& p) const {
         for (unsigned x = 0; x < r_.width; ++x)
-            if (has_geometry(x)) charge_dots(stepper.at(x, y_, &p.geometry_stepped), &p.geometry_stepped);
+            if (has_geometry(x)) {
+                charge_dots(stepper.at(x, y_, &p.geometry_stepped), &p.geometry_stepped);
+                p.points.push_back({x, y_});
+            }
         p.stepping = stepper.stats();
     }
 

@@ -181,6 +181,7 @@ struct plan {
     scene::op_counts geometry_stepped;
     scene::stepping_stats stepping;
     std::size_t geometry_points = 0;   // distinct pixels whose geometry was computed
+    std::vector<std::array<unsigned, 2>> points;  // those pixels {x, y}, line by line, left to right
     // Colour samples the adaptive policies evaluated (golden_sample) at pixels that are no job's
     // sample point: their check points. The sample stage's cost for these is the decision's too.
     std::size_t check_samples = 0;
@@ -211,6 +212,10 @@ std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, u
 
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c);
+// The same over the pixels `taken` (one entry per raster pixel) leaves out: they end segments, as a
+// discontinuity does, and no job covers them (the cells deliver them, cells.h). Not for the optimum.
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c, const std::vector<uint8_t>& taken);
 // The optimum over every plan the pipeline can express for these segments (intervals of 2^m_min ..
 // 2^m_max pixels, quadratic or cubic in c.set, exact pixels, tails as make_plan's), with no decision
 // cost: fewest distinct geometry points such that the frame's NMSE against c.optimal_reference is at

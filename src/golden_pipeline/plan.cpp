@@ -110,8 +110,8 @@ unsigned shift_add_cost(double w) {
 class planner {
 public:
     planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
-            const plan_config& c, plan& p)
-        : r_(r), k_(k), dev_(dev), c_(c), p_(p), stepper_(r, c.walk_edges), lit_(r), cubic_(cubic_points(c.set)),
+            const plan_config& c, plan& p, const std::vector<uint8_t>* taken = nullptr)
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), taken_(taken), stepper_(r, c.walk_edges), lit_(r), cubic_(cubic_points(c.set)),
           w_deg_(lagrange(quad_points, degree_check(c.set))),
           w_len_cubic_(lagrange(cubic_, length_check(c.set))),
           w_len_quad_(lagrange(quad_points, length_check(c.set))),
@@ -124,7 +124,16 @@ public:
         line_geometry lg(r_, y, k_, dev_, p_);
         const std::size_t first_job = p_.jobs.size();
         miss_pos_ = ~0u;  // the quadratic's miss is per line
-        for (const auto& seg : line_segments(r_, y, c_, &p_.decision)) segment(lg, y, seg[0], seg[1]);
+        for (const auto& seg : line_segments(r_, y, c_, &p_.decision)) {
+            // Pixels another unit delivers (taken_, the cells) end the segment's pieces too.
+            unsigned xa = seg[0];
+            for (unsigned x = seg[0]; x <= seg[1] + 1; ++x) {
+                const bool end = x > seg[1] || (taken_ && (*taken_)[r_.index(x, y)]);
+                if (!end) continue;
+                if (x > xa) segment(lg, y, xa, x - 1);
+                xa = x + 1;
+            }
+        }
         if (c_.above_slack >= 0) {
             // This line's levels (each pixel's job's m, exact pixels 0) are the next line's line above.
             above_.assign(r_.width, no_level);
@@ -517,6 +526,7 @@ private:
     const scene::device_config& dev_;
     const plan_config& c_;
     plan& p_;
+    const std::vector<uint8_t>* taken_;  // pixels another unit delivers (make_plan with a map), or null
     scene::span_stepper stepper_;
     lit_planes lit_;  // the lit guard's planes, per triangle as consulted
     std::array<unsigned, 4> cubic_;
@@ -567,10 +577,21 @@ plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene
                const plan_config& c) {
     validate(c);
     if (c.length == length_policy::optimal) return optimal_plan(r, k, dev, c);
+    return make_plan(r, k, dev, c, std::vector<uint8_t>(r.tri.size(), 0));
+}
+
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c, const std::vector<uint8_t>& taken) {
+    validate(c);
+    if (taken.size() != r.tri.size())
+        throw scene::scene_error("make_plan: the taken pixels' map has " + std::to_string(taken.size()) +
+                                 " entries for a raster of " + std::to_string(r.tri.size()) + " pixels");
+    if (c.length == length_policy::optimal)
+        throw scene::scene_error("make_plan: the optimum plans whole segments; it takes no map of taken pixels");
     plan p;
     p.width = r.width;
     p.height = r.height;
-    planner pl(r, k, dev, c, p);
+    planner pl(r, k, dev, c, p, &taken);
     for (unsigned y = 0; y < r.height; ++y) pl.line(y);
     return p;
 }
