@@ -380,7 +380,15 @@ std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o
                  "(render_pipeline's)");
     app.add_flag("--perfect-decisions", o.perfect_decisions,
                  "a yardstick: every cell and run decided on the true RMS error of what it sends, every point still read");
+    app.add_flag("--golden", o.golden,
+                 "the bit-accurate cells (the sample stage's codes, forward differences, the rest by the planner along "
+                 "rows) instead of the real-valued emulation");
     SHADING_CLI_PARSE(app, argc, argv);
+    if (o.golden && (o.perfect_decisions || o.cell_max > (1u << interp::m_max))) {
+        std::fprintf(stderr, "cell_study: --golden takes no --perfect-decisions and cells of at most %u pixels\n",
+                     1u << interp::m_max);
+        return 2;
+    }
     if (!o.light.empty() && (o.light.size() != 2 || !(std::abs(o.light[1]) <= 90.0))) {
         std::fprintf(stderr, "cell_study: --light needs azimuth,elevation with the elevation in -90..90\n");
         return 2;

@@ -114,7 +114,7 @@ struct two_line_study_options {
 // cell_study: the built-in scene, its light (azimuth, elevation in degrees; empty: the scene's) and
 // exponent (0: the scene's), the NMSE limit, the cells' tolerances (levels) and their decision
 // factors, the fallback's and the lines' tolerances, the largest cell, the lines' longest interval
-// 2^m_max, edge walking, perfect decisions.
+// 2^m_max, edge walking, perfect decisions, the bit-accurate model instead of the emulation.
 struct cell_study_options {
     std::string scene = "head", data_dir = default_data_dir(), device = "squared";
     unsigned size = 512;  // 16..4096
@@ -128,6 +128,7 @@ struct cell_study_options {
     unsigned m_max = 4;      // the lines': at 5 an interval beside a silhouette misses a lit streak
     bool walk_edges = false;
     bool perfect_decisions = false;
+    bool golden = false;     // the bit-accurate cells (src/golden_pipeline/cells.h), not the emulation
 };
 
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);

@@ -1,6 +1,6 @@
 // A quadtree of biquadratic cells decided from its lattices' differences (cell_tree.h): is the
 // interpolation target (NMSE <= 1e-5 against per-pixel shading, >= 3x fewer long operations than the
-// scan-line Phong) in reach of a scheme that pays no check point for its decisions? Golden model only.
+// scan-line Phong) in reach of a scheme that pays no check point for its decisions? No SystemC.
 // On one scene (default the head at 512, the squared device, n = 20), at each --tol:
 //  - the points per pixel, the cells sent by size, the smallest cells sent as row quadratics or exact,
 //    the pixels the cells, the columns and the rows delivered;
@@ -10,7 +10,9 @@
 //    stepped in the order the scheme reads them, and in raster order, a colour formed at each),
 //    against the scan-line Phong; with --walk-edges both walk edges;
 //  - the cheapest meeting --nmse, counted in the scheme's order;
-//  - with --perfect-decisions, a yardstick: every decision on the true error of what it sends.
+//  - with --perfect-decisions, a yardstick: every decision on the true error of what it sends;
+//  - with --golden, the bit-accurate cells (src/golden_pipeline/cells.h) instead of the emulation:
+//    the sample stage's codes, forward differences, the rest by the planner along rows.
 //   build/bin/cell_study                  (under 1 s at 512)
 //   build/bin/cell_study --size 48 --tol 1,2
 #include <algorithm>
@@ -23,11 +25,57 @@
 #include "testbenches/common/exit_status.h"
 #include "testbenches/options/tool_options.h"
 #include "cell_tree.h"
+#include "golden_pipeline/cells.h"
 #include "study_frame.h"
 
 using namespace shading;
 using namespace shading::pipeline;
 using namespace shading::study;
+
+namespace {
+
+// The bit-accurate cells (src/golden_pipeline/cells.h) in the emulation's terms: their frame in
+// levels, their points in the order read; the lines run along rows only, by the planner.
+cell_frame golden_cells(const study_frame& sf, const plan_config& cfg, const cell_tree_config& t) {
+    cell_config g;
+    g.tol = t.tol;
+    g.d2_factor = t.d2_factor;
+    g.d3_factor = t.d3_factor;
+    g.fallback_tol = t.fallback_tol;
+    g.s_max = t.s_max;
+    g.s_min = t.s_min;
+    g.line_tol = t.line_tol;
+    g.line_m_max = t.line_m_max;
+    plan_config c = cfg;
+    c.eval = evaluator::fd;
+    const cell_plan p = make_cell_plan(sf.r, sf.k, sf.dev, c, g);
+    const frame fr = golden_cell_frame(p, sf.k, sf.dev, c);
+    cell_frame f;
+    f.out.assign(fr.px.size(), rgb_levels{0.0, 0.0, 0.0});
+    f.point.assign(fr.px.size(), 0);
+    for (std::size_t i = 0; i < fr.px.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) f.out[i][ch] = double(fr.px[i][ch]) * pixel_fmt.lsb();
+    for (const auto& q : p.points) f.point[sf.r.index(q[0], q[1])] = 1;
+    f.order = p.points;
+    f.sent = p.sent;
+    f.fallback_rows = p.fallback_rows;
+    f.fallback_exact = p.fallback_exact;
+    f.pixels = p.pixels;
+    f.pixels_cells = p.pixels_cells;
+    f.pixels_rows = p.pixels_lines;
+    f.points_lines = p.points_lines;
+    for (std::size_t i = 0; i < fr.px.size(); ++i) {
+        if (sf.r.tri[i] < 0) continue;
+        for (int ch = 0; ch < 3; ++ch) {
+            const double d = f.out[i][ch] - sf.colour[i][ch];
+            f.se += d * d;
+            f.ref2 += sf.colour[i][ch] * sf.colour[i][ch];
+        }
+    }
+    return f;
+}
+
+}  // namespace
 
 int main(int argc, char* argv[]) {
     tb::cell_study_options o;
@@ -72,7 +120,7 @@ int main(int argc, char* argv[]) {
         double best_T = 0.0, best_points = 0.0, best_nmse = 0.0, best_raster = 0.0;
         for (double tol : o.tol) {
             t.tol = tol;
-            const cell_frame f = emulate_cells(r, colour, cfg, t);
+            const cell_frame f = o.golden ? golden_cells(sf, cfg, t) : emulate_cells(r, colour, cfg, t);
             double worst = 0.0;
             std::size_t over4 = 0, over16 = 0;
             for (std::size_t i = 0; i < colour.size(); ++i) {

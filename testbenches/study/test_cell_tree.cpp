@@ -12,6 +12,7 @@
 
 #include "scene/scene.h"
 #include "cell_tree.h"
+#include "flat_square.h"
 #include "line_kinks.h"
 #include "study_frame.h"
 
@@ -19,27 +20,6 @@ namespace {
 
 using namespace shading;
 using namespace shading::study;
-
-// A flat square seen square-on by an orthographic camera: every pixel of the size x size frame
-// covered, one segment a line, one patch throughout. Its shading is not used: the tests give the
-// colours.
-scene::rasterised flat_square(unsigned size) {
-    scene::world w;
-    w.name = "flat";
-    w.cam.fov_y_deg = 0.0;  // orthographic
-    w.cam.ortho_height = 2.0;
-    w.cam.width = w.cam.height = size;
-    scene::mesh m;
-    m.positions = {{-1.5, -1.5, 0.0}, {1.5, -1.5, 0.0}, {1.5, 1.5, 0.0}, {-1.5, 1.5, 0.0}};
-    m.normals = {{0.0, 0.0, 1.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, 1.0}};
-    m.triangles = {{0, 1, 2}, {0, 2, 3}};
-    w.objects.push_back({"square", m, scene::material{}});
-    w.lights.push_back({scene::light::kind::directional, {0.0, 0.0, 1.0}, {1.0, 1.0, 1.0}});
-    static std::vector<scene::world> keep;  // the raster points at its world
-    keep.reserve(8);
-    keep.push_back(w);
-    return scene::rasterise(keep.back());
-}
 
 // A biquadratic in x and y (every term x^a y^b with a, b <= 2), in three channels.
 std::vector<rgb_levels> biquadratic(unsigned size) {

@@ -1,0 +1,407 @@
+// The cells (cells.h): the plan, the biquadratic and the frame, on the sample stage's codes.
+#include "golden_pipeline/cells.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "golden_pipeline/line_geometry.h"
+
+namespace shading::pipeline {
+
+namespace {
+
+bool power_of_two(unsigned v) { return v != 0 && (v & (v - 1)) == 0; }
+unsigned log2_of(unsigned v) {
+    unsigned m = 0;
+    while ((1u << m) < v) ++m;
+    return m;
+}
+uint64_t levels_to_codes(double levels) {
+    return static_cast<uint64_t>(std::floor(levels * double(1u << colour_fmt.frac)));
+}
+uint64_t abs_diff(int64_t v) { return static_cast<uint64_t>(v < 0 ? -v : v); }
+
+using pixel = std::array<unsigned, 2>;
+bool raster_before(const pixel& a, const pixel& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }
+
+class cell_planner {
+public:
+    cell_planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                 const plan_config& c, const cell_config& t, cell_plan& p)
+        : r_(r), k_(k), dev_(dev), c_(c), t_(t), lim_(cell_limits_of(t)), p_(p), W(r.width), H(r.height),
+          seg_(r.tri.size(), -1), down_(r.tri.size(), 0), read_(r.tri.size(), 0), taken_(r.tri.size(), 0),
+          smp_(r.tri.size()), col_(r.tri.size()) {
+        int32_t next = 0;
+        for (unsigned y = 0; y < H; ++y)
+            for (const auto& s : line_segments(r, y, c, &p.decision)) {
+                for (unsigned x = s[0]; x <= s[1]; ++x) seg_[r.index(x, y)] = next;
+                ++next;
+            }
+        for (unsigned y = 0; y + 1 < H; ++y)
+            for (unsigned x = 0; x < W; ++x)
+                down_[r.index(x, y)] = r.covered(x, y) && r.covered(x, y + 1) &&
+                                       !surface_break(r, r.index(x, y), r.index(x, y + 1), &p.decision);
+    }
+
+    void run() {
+        p_.sent.assign(log2_of(t_.s_max) - log2_of(t_.s_min) + 1, 0);
+        for (unsigned by = 0; by < H; by += t_.s_max) band(by);
+        for (std::size_t i = 0; i < taken_.size(); ++i) p_.pixels_cells += taken_[i];
+        lines();
+        for (std::size_t i = 0; i < r_.tri.size(); ++i) p_.pixels += r_.tri[i] >= 0;
+    }
+
+private:
+    struct pending {
+        unsigned x0, y0, s;
+        bool family;  // its parent was whole: the family lattice over (px, py) was read
+        unsigned px, py;
+    };
+
+    std::size_t idx(unsigned x, unsigned y) const { return r_.index(x, y); }
+
+    bool whole(unsigned x0, unsigned y0, unsigned s) const {
+        if (x0 + s >= W || y0 + s >= H) return false;
+        for (unsigned y = y0; y <= y0 + s; ++y)
+            for (unsigned x = x0; x <= x0 + s; ++x) {
+                if (seg_[idx(x, y)] < 0 || seg_[idx(x, y)] != seg_[idx(x0, y)]) return false;
+                if (y < y0 + s && !down_[idx(x, y)]) return false;
+            }
+        return true;
+    }
+
+    // The geometry side reads a point once: its geometry and the sample stage's colour.
+    void want(unsigned x, unsigned y) { batch_.push_back({x, y}); }
+    void flush() {
+        std::sort(batch_.begin(), batch_.end(), raster_before);
+        for (const pixel& q : batch_) read(q[0], q[1]);
+        batch_.clear();
+    }
+    void read(unsigned x, unsigned y) {
+        const std::size_t i = idx(x, y);
+        if (read_[i] || !r_.covered(x, y)) return;
+        read_[i] = 1;
+        smp_[i] = sample_of(scene::geometry_at(r_, x, y, nullptr));
+        col_[i] = golden_sample(dev_, k_, smp_[i]);
+        p_.points.push_back({x, y});
+        p_.point_geometry.push_back(smp_[i]);
+    }
+    const rgb_codes& colour(unsigned x, unsigned y) const { return col_[idx(x, y)]; }
+
+    // (a): the lattice's second differences.
+    bool second_differences_pass(unsigned x0, unsigned y0, unsigned s) {
+        const unsigned h = s / 2;
+        for (unsigned k = 0; k < 3; ++k)
+            for (int ch = 0; ch < 3; ++ch) {
+                auto d2 = [&](unsigned xa, unsigned ya, unsigned dx, unsigned dy) {
+                    const int64_t a = int64_t(colour(xa, ya)[ch]), b = int64_t(colour(xa + dx, ya + dy)[ch]),
+                                  c = int64_t(colour(xa + 2 * dx, ya + 2 * dy)[ch]);
+                    p_.decision.add += 2;  // 2 b is a shift
+                    ++p_.decision.cmp;
+                    return abs_diff(a - 2 * b + c) <= lim_.d2;
+                };
+                if (!d2(x0, y0 + k * h, h, 0) || !d2(x0 + k * h, y0, 0, h)) return false;
+            }
+        return true;
+    }
+    // (b): the third differences through the family lattice (spacing h = s/2 over the parent at px, py).
+    bool third_differences_pass(unsigned x0, unsigned y0, unsigned s, unsigned px, unsigned py) {
+        const unsigned h = s / 2;
+        const unsigned ci = (x0 - px) / h, ri = (y0 - py) / h;
+        const unsigned c0 = ci == 0 ? 0 : 1, r0 = ri == 0 ? 0 : 1;
+        auto at = [&](unsigned i, unsigned j, int ch) { return int64_t(colour(px + j * h, py + i * h)[ch]); };
+        for (int ch = 0; ch < 3; ++ch) {
+            auto d3 = [&](int64_t a, int64_t b, int64_t c, int64_t d) {
+                p_.decision.add += 5;  // 3 c and 3 b: a shift and an add each
+                ++p_.decision.cmp;
+                return abs_diff(d - 3 * c + 3 * b - a) <= lim_.d3;
+            };
+            for (unsigned k = ri; k < ri + 3; ++k)
+                if (!d3(at(k, c0, ch), at(k, c0 + 1, ch), at(k, c0 + 2, ch), at(k, c0 + 3, ch))) return false;
+            for (unsigned k = ci; k < ci + 3; ++k)
+                if (!d3(at(r0, k, ch), at(r0 + 1, k, ch), at(r0 + 2, k, ch), at(r0 + 3, k, ch))) return false;
+        }
+        return true;
+    }
+
+    void take(unsigned x0, unsigned y0, unsigned s) {
+        for (unsigned y = y0; y < y0 + s; ++y)
+            for (unsigned x = x0; x < x0 + s; ++x) taken_[idx(x, y)] = 1;
+    }
+
+    void band(unsigned by) {
+        std::vector<pending> level;
+        for (unsigned x0 = 0; x0 < W; x0 += t_.s_max) {
+            bool any = false;
+            for (unsigned y = by; y < std::min(H, by + t_.s_max) && !any; ++y)
+                for (unsigned x = x0; x < std::min(W, x0 + t_.s_max) && !any; ++x) any = r_.covered(x, y);
+            if (any) level.push_back({x0, by, t_.s_max, false, 0, 0});
+        }
+        for (unsigned s = t_.s_max; !level.empty(); s /= 2) {
+            const unsigned h = s / 2;
+            std::vector<uint8_t> is_whole(level.size());
+            for (std::size_t c = 0; c < level.size(); ++c) {
+                is_whole[c] = whole(level[c].x0, level[c].y0, s);
+                if (is_whole[c] && !level[c].family)  // with a family its lattice was read with it
+                    for (unsigned y = level[c].y0; y <= level[c].y0 + s; y += h)
+                        for (unsigned x = level[c].x0; x <= level[c].x0 + s; x += h) want(x, y);
+            }
+            flush();
+            std::vector<pending> next, fallback;
+            for (std::size_t c = 0; c < level.size(); ++c) {
+                const pending& e = level[c];
+                if (is_whole[c]) {
+                    if (second_differences_pass(e.x0, e.y0, s) &&
+                        (!e.family || third_differences_pass(e.x0, e.y0, s, e.px, e.py))) {
+                        send(e.x0, e.y0, s);
+                        continue;
+                    }
+                    if (s == t_.s_min) {
+                        fallback.push_back(e);
+                        continue;
+                    }
+                    // The children's lattices, their family, read before any of them decides.
+                    for (unsigned y = e.y0; y <= e.y0 + s; y += h / 2)
+                        for (unsigned x = e.x0; x <= e.x0 + s; x += h / 2) want(x, y);
+                }
+                if (s > t_.s_min)
+                    for (unsigned dy : {0u, h})
+                        for (unsigned dx : {0u, h}) next.push_back({e.x0 + dx, e.y0 + dy, h, bool(is_whole[c]), e.x0, e.y0});
+            }
+            flush();
+            if (!fallback.empty()) fallbacks(fallback);
+            level = std::move(next);
+        }
+    }
+
+    void send(unsigned x0, unsigned y0, unsigned s) {
+        cell_job cell;
+        cell.x0 = x0;
+        cell.y0 = y0;
+        cell.s = s;
+        for (unsigned i = 0; i < 3; ++i)
+            for (unsigned j = 0; j < 3; ++j) cell.lattice[3 * i + j] = smp_[idx(x0 + j * s / 2, y0 + i * s / 2)];
+        p_.cells.push_back(cell);
+        ++p_.sent[log2_of(s) - log2_of(t_.s_min)];
+        take(x0, y0, s);
+    }
+
+    interval_job row_job(unsigned x0, unsigned y) const {
+        interval_job job;
+        job.y = y;
+        job.x0 = x0;
+        job.len = t_.s_min;
+        job.m = log2_of(t_.s_min);  // the quadratic through 0, s/2, s
+        job.deg2 = true;
+        for (unsigned i = 0; i < 3; ++i) job.s[i] = smp_[idx(x0 + i * t_.s_min / 2, y)];
+        job.s[3] = job.s[2];
+        return job;
+    }
+    interval_job exact_job(unsigned x, unsigned y) const {
+        interval_job job;
+        job.y = y;
+        job.x0 = x;
+        const sample_geometry s = smp_[idx(x, y)];
+        job.s = {s, s, s, s};
+        return job;
+    }
+
+    // The smallest cells turned down: each row read at 0, s/2, s and sent as the quadratic through
+    // them, checked at (1, 1), then (3, 3); where a check misses, the cell's pixels exact.
+    void fallbacks(const std::vector<pending>& fallback) {
+        const unsigned m = t_.s_min;
+        for (const pending& e : fallback)
+            for (unsigned y = e.y0; y < e.y0 + m; ++y)
+                for (unsigned x = e.x0; x <= e.x0 + m; x += m / 2) want(x, y);
+        flush();
+        std::vector<uint8_t> rows_ok(fallback.size(), 1);
+        for (const unsigned k : {1u, 3u}) {
+            for (std::size_t c = 0; c < fallback.size(); ++c)
+                if (rows_ok[c]) want(fallback[c].x0 + k, fallback[c].y0 + k);
+            flush();
+            for (std::size_t c = 0; c < fallback.size(); ++c) {
+                if (!rows_ok[c]) continue;
+                const pending& e = fallback[c];
+                const auto px = interval_pixels(row_job(e.x0, e.y0 + k), k_, dev_, c_.eval, c_.set, c_.div);
+                const rgb_codes& v = colour(e.x0 + k, e.y0 + k);
+                for (int ch = 0; ch < 3; ++ch) {
+                    ++p_.decision.add;
+                    ++p_.decision.cmp;
+                    if (abs_diff(int64_t(px[k][ch]) - int64_t(v[ch])) > lim_.fallback) rows_ok[c] = 0;
+                }
+            }
+        }
+        for (std::size_t c = 0; c < fallback.size(); ++c)
+            if (!rows_ok[c])
+                for (unsigned y = fallback[c].y0; y < fallback[c].y0 + m; ++y)
+                    for (unsigned x = fallback[c].x0; x < fallback[c].x0 + m; ++x) want(x, y);
+        flush();
+        for (std::size_t c = 0; c < fallback.size(); ++c) {
+            const pending& e = fallback[c];
+            for (unsigned y = e.y0; y < e.y0 + m; ++y) {
+                if (rows_ok[c]) {
+                    p_.jobs.push_back(row_job(e.x0, y));
+                } else {
+                    for (unsigned x = e.x0; x < e.x0 + m; ++x) p_.jobs.push_back(exact_job(x, y));
+                }
+            }
+            ++(rows_ok[c] ? p_.fallback_rows : p_.fallback_exact);
+            take(e.x0, e.y0, m);
+        }
+    }
+
+    // What no cell delivered: the adaptive length policy over the rest of each line.
+    void lines() {
+        plan_config lc = c_;
+        lc.length = length_policy::adaptive;
+        lc.degree = degree_policy::cubic;
+        lc.m_min = interp::m_min;
+        lc.m_max = t_.line_m_max;
+        lc.length_tol = t_.line_tol;
+        lc.split_at_check = true;
+        lc.exact_fallback = true;
+        lc.perfect_decisions = false;
+        lc.above_slack = -1;
+        lc.lit_guard = false;
+        const plan lp = make_plan(r_, k_, dev_, lc, taken_);
+        p_.decision += lp.decision;
+        const std::size_t before = p_.points.size();
+        for (const pixel& q : lp.points) read(q[0], q[1]);
+        p_.points_lines = p_.points.size() - before;
+        for (const interval_job& job : lp.jobs) {
+            p_.jobs.push_back(job);
+            p_.pixels_lines += job.len;
+        }
+    }
+
+    const scene::rasterised& r_;
+    const frame_constants& k_;
+    const scene::device_config& dev_;
+    const plan_config& c_;
+    const cell_config& t_;
+    const cell_limits lim_;
+    cell_plan& p_;
+    const unsigned W, H;
+    std::vector<int32_t> seg_;     // each covered pixel's segment (a running number over the frame)
+    std::vector<uint8_t> down_;    // one surface with the pixel below
+    std::vector<uint8_t> read_, taken_;
+    std::vector<sample_geometry> smp_;
+    std::vector<rgb_codes> col_;
+    std::vector<pixel> batch_;
+};
+
+}  // namespace
+
+void validate(const cell_config& t) {
+    auto fail = [](const std::string& what) { throw scene::scene_error("cells: " + what); };
+    if (!power_of_two(t.s_min) || !power_of_two(t.s_max) || t.s_min < 4 || t.s_max < t.s_min ||
+        t.s_max > (1u << interp::m_max))
+        fail("cell sizes must be powers of two with 4 <= s_min <= s_max <= " + std::to_string(1u << interp::m_max) +
+             " (got " + std::to_string(t.s_min) + ", " + std::to_string(t.s_max) + ")");
+    if (t.s_min != 4) fail("the fallback's row quadratics need s_min = 4 (got " + std::to_string(t.s_min) + ")");
+    if (!(t.tol > 0.0) || !(t.d2_factor > 0.0) || !(t.d3_factor > 0.0) || !(t.fallback_tol > 0.0) || !(t.line_tol > 0.0))
+        fail("tolerances and factors must be positive");
+    if (!(t.tol * t.d2_factor < 1e6) || !(t.tol * t.d3_factor < 1e6) || !(t.fallback_tol < 1e6))
+        fail("tolerances must be below 1e6 levels");
+    if (t.line_m_max < interp::m_min || t.line_m_max > interp::m_max)
+        fail("line_m_max must be " + std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max) + " (got " +
+             std::to_string(t.line_m_max) + ")");
+}
+
+cell_limits cell_limits_of(const cell_config& t) {
+    cell_limits l;
+    l.d2 = levels_to_codes(t.d2_factor * t.tol);
+    l.d3 = levels_to_codes(t.d3_factor * t.tol / cell_k3);
+    l.fallback = levels_to_codes(t.fallback_tol);
+    return l;
+}
+
+cell_plan make_cell_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                         const plan_config& c, const cell_config& t) {
+    validate(c);
+    validate(t);
+    cell_plan p;
+    p.width = r.width;
+    p.height = r.height;
+    cell_planner(r, k, dev, c, t, p).run();
+    return p;
+}
+
+std::array<rgb_codes, 9> cell_lattice_colours(const cell_job& cell, const frame_constants& k,
+                                              const scene::device_config& dev) {
+    std::array<rgb_codes, 9> out{};
+    for (std::size_t i = 0; i < 9; ++i) out[i] = golden_sample(dev, k, cell.lattice[i]);
+    return out;
+}
+
+std::vector<rgb_codes> cell_pixels(const std::array<rgb_codes, 9>& lattice, unsigned s, evaluator e) {
+    if (!power_of_two(s) || s < 4 || s > (1u << interp::m_max))
+        throw scene::scene_error("cell_pixels: a cell of " + std::to_string(s) + " pixels; sizes are powers of two, 4.." +
+                                 std::to_string(1u << interp::m_max));
+    const unsigned m = log2_of(s);
+    // Down each lattice column: three colours for every row of the cell.
+    std::array<std::vector<rgb_codes>, 3> column;
+    for (unsigned j = 0; j < 3; ++j) column[j] = quadratic_pixels({lattice[j], lattice[3 + j], lattice[6 + j]}, m, s, e);
+    std::vector<rgb_codes> out;
+    out.reserve(std::size_t(s) * s);
+    for (unsigned y = 0; y < s; ++y) {
+        const auto row = quadratic_pixels({column[0][y], column[1][y], column[2][y]}, m, s, e);
+        out.insert(out.end(), row.begin(), row.end());
+    }
+    return out;
+}
+
+frame golden_cell_frame(const cell_plan& p, const frame_constants& k, const scene::device_config& dev,
+                        const plan_config& c) {
+    frame f;
+    f.width = p.width;
+    f.height = p.height;
+    const std::size_t n = std::size_t(p.width) * p.height;
+    f.px.assign(n, rgb_codes{});
+    f.covered.assign(n, 0);
+    f.degree.assign(n, 0);
+    f.log2_len.assign(n, 0);
+    f.zone.assign(n, 0);
+    auto put = [&](unsigned x, unsigned y, const rgb_codes& v, uint8_t degree, uint8_t m) {
+        if (x >= p.width || y >= p.height)
+            throw scene::scene_error("golden_cell_frame: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                     ") is outside the frame");
+        const std::size_t i = std::size_t(y) * p.width + x;
+        f.px[i] = v;
+        f.covered[i] = 1;
+        f.degree[i] = degree;
+        f.log2_len[i] = m;
+    };
+    for (const cell_job& cell : p.cells) {
+        const auto px = cell_pixels(cell_lattice_colours(cell, k, dev), cell.s, c.eval);
+        for (unsigned y = 0; y < cell.s; ++y)
+            for (unsigned x = 0; x < cell.s; ++x)
+                put(cell.x0 + x, cell.y0 + y, px[std::size_t(y) * cell.s + x], 2, uint8_t(log2_of(cell.s)));
+    }
+    for (const interval_job& job : p.jobs) {
+        const auto px = golden_interval(job, k, dev, c.eval, c.set, c.div);
+        for (unsigned i = 0; i < job.len; ++i)
+            put(job.x0 + i, job.y, px[i], job.m == 0 ? 1 : (job.deg2 ? 2 : 3), uint8_t(job.m));
+    }
+    if (p.point_geometry.size() != p.points.size())
+        throw scene::scene_error("golden_cell_frame: the plan lists " + std::to_string(p.points.size()) + " points and " +
+                                 std::to_string(p.point_geometry.size()) + " geometries");
+    for (std::size_t i = 0; i < p.points.size(); ++i)
+        put(p.points[i][0], p.points[i][1], golden_sample(dev, k, p.point_geometry[i]), 1, 0);
+    return f;
+}
+
+cell_counts cell_ops(const scene::rasterised& r, const cell_plan& p, const scene::device_config& dev, unsigned n,
+                     bool walk_edges, bool raster_order) {
+    std::vector<std::array<unsigned, 2>> points = p.points;
+    if (raster_order) std::sort(points.begin(), points.end(), raster_before);
+    const stepped_count g = stepped_geometry(r, points, walk_edges);
+    cell_counts out;
+    out.geometry = g.ops;
+    out.stepping = g.stats;
+    out.colours = scene::times(colour_sample_ops(dev, n), points.size());
+    return out;
+}
+
+}  // namespace shading::pipeline

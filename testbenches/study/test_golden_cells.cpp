@@ -1,0 +1,266 @@
+// The bit-accurate cells (src/golden_pipeline/cells.h): the decision unit's constants and the
+// biquadratic worked by hand, the biquadratic against the real-valued one, a flat square's points
+// hand-counted, the planner's map of taken pixels, and on the head at 512 the same cell decisions as
+// the real-valued emulation (cell_tree.h, a separate implementation), every pixel delivered once and
+// the interpolation target's figures.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "golden_pipeline/cells.h"
+#include "cell_tree.h"
+#include "flat_square.h"
+#include "study_frame.h"
+
+namespace {
+
+using namespace shading;
+using namespace shading::pipeline;
+using study::rgb_levels;
+
+// floor(8 x 0.9 x 256) = floor(1843.2); 0.9 x 256 / k3 = 230.4 x 9 sqrt 3 = 3591.58...; 1 x 256.
+TEST(GoldenCells, LimitsByHand) {
+    EXPECT_NEAR(cell_k3, 1.0 / (9.0 * std::sqrt(3.0)), 1e-15);
+    const cell_limits l = cell_limits_of(cell_config{});
+    EXPECT_EQ(l.d2, 1843u);
+    EXPECT_EQ(l.d3, 3591u);
+    EXPECT_EQ(l.fallback, 256u);
+}
+
+std::array<rgb_codes, 9> lattice_of(const std::array<uint64_t, 9>& v) {
+    std::array<rgb_codes, 9> out{};
+    for (std::size_t i = 0; i < 9; ++i) out[i] = {v[i], v[i] / 2, v[i] / 4};
+    return out;
+}
+
+// A constant lattice gives that constant everywhere. A ramp of 512 codes a lattice step (s/2 pixels)
+// along x, the same on every lattice row, gives 1000 + 1024 x / s on every row: at s = 4, 1000,
+// 1256, 1512, 1768 (a / 2: 500, 628, 756, 884); down y the same on every column.
+TEST(GoldenCells, ConstantAndRampLatticesByHand) {
+    for (evaluator e : {evaluator::fd, evaluator::horner}) {
+        const auto flat = cell_pixels(lattice_of({777, 777, 777, 777, 777, 777, 777, 777, 777}), 8, e);
+        ASSERT_EQ(flat.size(), 64u);
+        for (const rgb_codes& p : flat) EXPECT_EQ(p, (rgb_codes{777, 388, 194}));
+        const auto along_x = cell_pixels(lattice_of({1000, 1512, 2024, 1000, 1512, 2024, 1000, 1512, 2024}), 4, e);
+        const auto down_y = cell_pixels(lattice_of({1000, 1000, 1000, 1512, 1512, 1512, 2024, 2024, 2024}), 4, e);
+        ASSERT_EQ(along_x.size(), 16u);
+        const uint64_t want[4] = {1000, 1256, 1512, 1768};
+        const uint64_t half[4] = {500, 628, 756, 884};
+        for (unsigned y = 0; y < 4; ++y)
+            for (unsigned x = 0; x < 4; ++x) {
+                EXPECT_EQ(along_x[y * 4 + x][0], want[x]) << x << "," << y;
+                EXPECT_EQ(along_x[y * 4 + x][1], half[x]);
+                EXPECT_EQ(down_y[y * 4 + x][0], want[y]) << x << "," << y;
+            }
+    }
+}
+
+// Random lattices of every size, both evaluators: each pixel within 2.5 codes (under a hundredth of a
+// level) of the real-valued biquadratic through the lattice. Each stage floors to Q8.8 (under a code
+// each); the row quadratic's weights have magnitudes summing to at most 1.25, so the column stage's
+// floor moves a pixel by under 1.25 codes; Horner's products drop bits too. Codes 0x4000..0xA000 keep
+// every column value inside the pixel format (a quadratic through three values overshoots their
+// spread by at most an eighth), where the clamp would part the two.
+TEST(GoldenCells, WithinCodesOfTheRealValuedBiquadratic) {
+    std::mt19937 rng(20261204);
+    std::uniform_int_distribution<uint64_t> code(0x4000, 0xA000);
+    auto w = [](double t) {  // the quadratic through 0, 1/2, 1 at t: its Lagrange weights
+        return std::array<double, 3>{2.0 * (t - 0.5) * (t - 1.0), -4.0 * t * (t - 1.0), 2.0 * t * (t - 0.5)};
+    };
+    double worst = 0.0;
+    for (evaluator e : {evaluator::fd, evaluator::horner})
+        for (unsigned s = 4; s <= 64; s *= 2)
+            for (int trial = 0; trial < 20; ++trial) {
+                std::array<rgb_codes, 9> lat{};
+                for (auto& v : lat) v = {code(rng), code(rng), code(rng)};
+                const auto px = cell_pixels(lat, s, e);
+                ASSERT_EQ(px.size(), std::size_t(s) * s);
+                for (unsigned y = 0; y < s; ++y)
+                    for (unsigned x = 0; x < s; ++x) {
+                        const auto wy = w(double(y) / s), wx = w(double(x) / s);
+                        for (int ch = 0; ch < 3; ++ch) {
+                            double v = 0.0;
+                            for (unsigned i = 0; i < 3; ++i)
+                                for (unsigned j = 0; j < 3; ++j) v += wy[i] * wx[j] * double(lat[3 * i + j][ch]);
+                            worst = std::max(worst, std::abs(double(px[y * s + x][ch]) - v));
+                        }
+                    }
+            }
+    EXPECT_LE(worst, 2.5);
+    EXPECT_GT(worst, 0.0);  // the floors are there: the test can see them
+}
+
+// Every covered pixel of the frame delivered by exactly one cell or job; none outside.
+std::vector<unsigned> deliveries(const cell_plan& p) {
+    std::vector<unsigned> n(std::size_t(p.width) * p.height, 0);
+    for (const cell_job& c : p.cells)
+        for (unsigned y = c.y0; y < c.y0 + c.s; ++y)
+            for (unsigned x = c.x0; x < c.x0 + c.s; ++x) ++n[std::size_t(y) * p.width + x];
+    for (const interval_job& j : p.jobs)
+        for (unsigned i = 0; i < j.len; ++i) ++n[std::size_t(j.y) * p.width + j.x0 + i];
+    return n;
+}
+
+// The flat square at 65 x 65, one colour throughout: the four 32-pixel tiles whose closed boxes end
+// at pixel 64 are whole and sent (second differences 0), reading the lattice {0, 16, 32, 48, 64}^2
+// (25 points). Column 64 and row 64 are no cell's and go to the planner along rows: row 64 is one
+// segment of 65 pixels, four 16-pixel intervals read at 0, 4, 8, 16 and checked at 12 (every fourth
+// pixel, 17 points, 5 of them the lattice's), and each pixel of column 64 above it is a run of one,
+// an exact pixel (64 points, 4 of them the lattice's): 25 + 12 + 60 = 97 points. The frame is
+// per-pixel shading's, code for code.
+TEST(GoldenCells, FlatSquareHandCounted) {
+    const scene::rasterised r = study::flat_square(65);
+    const frame_constants k = frame_constants_of(*r.src);
+    scene::device_config dev;
+    dev.device = scene::parse_device("squared");
+    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, cell_config{});
+    ASSERT_EQ(p.sent.size(), 4u);
+    EXPECT_EQ(p.sent[3], 4u);
+    EXPECT_EQ(p.sent[0] + p.sent[1] + p.sent[2], 0u);
+    EXPECT_EQ(p.pixels, 65u * 65u);
+    EXPECT_EQ(p.pixels_cells, 64u * 64u);
+    EXPECT_EQ(p.pixels_lines, 129u);
+    EXPECT_EQ(p.points.size(), 97u);
+    EXPECT_EQ(p.points_lines, 72u);
+    for (unsigned v : deliveries(p)) EXPECT_EQ(v, 1u);
+    plan_config fd;
+    fd.eval = evaluator::fd;
+    const frame f = golden_cell_frame(p, k, dev, fd);
+    const frame ref = per_pixel_frame(r, k, dev);
+    EXPECT_EQ(f.px, ref.px);
+    EXPECT_EQ(f.covered, ref.covered);
+}
+
+bool same_jobs(const std::vector<interval_job>& a, const std::vector<interval_job>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].y != b[i].y || a[i].x0 != b[i].x0 || a[i].len != b[i].len || a[i].m != b[i].m ||
+            a[i].deg2 != b[i].deg2 || a[i].s != b[i].s)
+            return false;
+    return true;
+}
+
+class GoldenCellsHead : public ::testing::Test {
+protected:
+    const study::study_frame head{"head", SHADING_SOURCE_DIR, 512, "squared", false};
+    const scene::rasterised& r = head.r;
+    plan_config cfg() const {
+        plan_config c;
+        c.eval = evaluator::fd;
+        return c;
+    }
+    cell_config at(double tol) const {
+        cell_config t;
+        t.tol = tol;
+        return t;
+    }
+};
+
+// make_plan with a map of taken pixels: an empty map plans as make_plan does; a taken block ends the
+// segments around it, no job covers it and every other covered pixel is still some job's, once.
+TEST_F(GoldenCellsHead, PlannerLeavesTakenPixels) {
+    plan_config c = cfg();
+    c.length = length_policy::adaptive;
+    c.split_at_check = true;
+    const plan whole = make_plan(r, head.k, head.dev, c);
+    EXPECT_TRUE(same_jobs(make_plan(r, head.k, head.dev, c, std::vector<uint8_t>(r.tri.size(), 0)).jobs, whole.jobs));
+    EXPECT_EQ(whole.points.size(), whole.geometry_points);
+    std::vector<uint8_t> taken(r.tri.size(), 0);
+    for (unsigned y = 200; y < 264; ++y)
+        for (unsigned x = 230; x < 290; ++x) taken[r.index(x, y)] = 1;
+    const plan p = make_plan(r, head.k, head.dev, c, taken);
+    std::vector<unsigned> n(r.tri.size(), 0);
+    for (const interval_job& j : p.jobs)
+        for (unsigned i = 0; i < j.len; ++i) ++n[r.index(j.x0 + i, j.y)];
+    std::size_t taken_covered = 0;
+    for (std::size_t i = 0; i < n.size(); ++i) {
+        if (taken[i]) {
+            EXPECT_EQ(n[i], 0u);
+            taken_covered += r.tri[i] >= 0;
+        } else {
+            EXPECT_EQ(n[i], r.tri[i] >= 0 ? 1u : 0u);
+        }
+    }
+    EXPECT_GT(taken_covered, 3000u);  // the block lies on the face
+    for (const auto& q : p.points) EXPECT_FALSE(taken[r.index(q[0], q[1])]);
+    EXPECT_THROW(make_plan(r, head.k, head.dev, c, std::vector<uint8_t>(5, 0)), scene::scene_error);
+}
+
+// The cells decide on the sample stage's codes with integer limits; the emulation on the same colours
+// in levels with real-valued ones: the same cells are sent. The fallbacks' row quadratics are fixed
+// point here, so their checks may differ a little; the lines run along rows only here.
+TEST_F(GoldenCellsHead, SameCellsAsTheEmulation) {
+    for (double tol : {0.5, 0.9, 2.0}) {
+        const cell_plan p = make_cell_plan(r, head.k, head.dev, cfg(), at(tol));
+        study::cell_tree_config t;
+        t.tol = tol;
+        const study::cell_frame e = study::emulate_cells(r, head.colour, plan_config{}, t);
+        EXPECT_EQ(p.sent, e.sent) << tol;
+        EXPECT_EQ(p.fallback_rows + p.fallback_exact, e.fallback_rows + e.fallback_exact) << tol;
+        EXPECT_NEAR(double(p.fallback_exact), double(e.fallback_exact), 0.05 * double(e.fallback_exact) + 2.0) << tol;
+        EXPECT_NEAR(double(p.points.size()), double(e.points()), 0.05 * double(e.points())) << tol;
+    }
+}
+
+// On the head at 512 at T = 0.9: every covered pixel delivered once; the points distinct and
+// covered, each pixel there per-pixel shading's colour; the bookkeeping adds up; against per-pixel
+// shading through the device the NMSE is within the target's 1e-5; counted with edges walked (where
+// the order is free) the long operations are at least 3x fewer than the scan-line Phong's.
+TEST_F(GoldenCellsHead, FrameAndTarget) {
+    const cell_plan p = make_cell_plan(r, head.k, head.dev, cfg(), at(0.9));
+    const std::vector<unsigned> n = deliveries(p);
+    for (std::size_t i = 0; i < n.size(); ++i) ASSERT_EQ(n[i], r.tri[i] >= 0 ? 1u : 0u) << i;
+    for (const interval_job& j : p.jobs) EXPECT_TRUE(interval_valid(j));
+    EXPECT_EQ(p.pixels, head.pixels);
+    EXPECT_EQ(p.pixels_cells + p.pixels_lines, p.pixels);
+    std::set<std::pair<unsigned, unsigned>> once;
+    for (const auto& q : p.points) {
+        ASSERT_TRUE(r.covered(q[0], q[1]));
+        once.insert({q[0], q[1]});
+    }
+    EXPECT_EQ(once.size(), p.points.size());
+    const frame f = golden_cell_frame(p, head.k, head.dev, cfg());
+    for (const auto& q : p.points) EXPECT_EQ(f.px[r.index(q[0], q[1])], head.per_pixel.px[r.index(q[0], q[1])]);
+    EXPECT_EQ(f.covered, head.per_pixel.covered);
+    const error_stats e = compare(to_image(f), to_image(head.per_pixel));
+    EXPECT_LE(e.nmse, 1e-5);
+    EXPECT_GT(e.nmse, 1e-6);  // an interpolation, not a copy
+
+    const cell_counts walked = cell_ops(r, p, head.dev, head.k.n, true);
+    EXPECT_EQ(walked.long_ops(), cell_ops(r, p, head.dev, head.k.n, true, true).long_ops());
+    EXPECT_EQ(walked.colours.long_ops(), colour_sample_ops(head.dev, head.k.n).long_ops() * p.points.size());
+    const study::study_frame walk{"head", SHADING_SOURCE_DIR, 512, "squared", true};
+    EXPECT_GE(walk.scanline / (walked.long_ops() / double(p.pixels)), 3.0);
+    // Not walked, the scheme's order starts more runs than raster order.
+    EXPECT_GT(cell_ops(r, p, head.dev, head.k.n, false).long_ops(), cell_ops(r, p, head.dev, head.k.n, false, true).long_ops());
+}
+
+TEST(GoldenCells, BadInputRefused) {
+    auto with = [](auto change) {
+        cell_config t;
+        change(t);
+        return t;
+    };
+    EXPECT_NO_THROW(validate(cell_config{}));
+    EXPECT_THROW(validate(with([](auto& t) { t.s_min = 8; })), scene::scene_error);
+    EXPECT_THROW(validate(with([](auto& t) { t.s_max = 128; })), scene::scene_error);
+    EXPECT_THROW(validate(with([](auto& t) { t.s_max = 24; })), scene::scene_error);
+    EXPECT_THROW(validate(with([](auto& t) { t.tol = 0.0; })), scene::scene_error);
+    EXPECT_THROW(validate(with([](auto& t) { t.d2_factor = std::nan(""); })), scene::scene_error);
+    EXPECT_THROW(validate(with([](auto& t) { t.line_m_max = 7; })), scene::scene_error);
+    EXPECT_THROW(cell_pixels({}, 3, evaluator::fd), scene::scene_error);
+    EXPECT_THROW(cell_pixels({}, 128, evaluator::fd), scene::scene_error);
+    EXPECT_TRUE(quadratic_pixels({}, 0, 1, evaluator::fd).empty());
+    EXPECT_TRUE(quadratic_pixels({}, 2, 5, evaluator::fd).empty());
+    cell_plan bad;
+    bad.width = bad.height = 4;
+    bad.points.push_back({1, 1});
+    EXPECT_THROW(golden_cell_frame(bad, frame_constants{}, scene::device_config{}, plan_config{}), scene::scene_error);
+}
+
+}  // namespace
