@@ -2,7 +2,8 @@
 """The cells (cell_study: a quadtree of biquadratic cells decided from its lattices' differences) over
 the claims sweep's scenes x lights x n: per case, the cheapest tolerance on a grid meeting the
 interpolation NMSE, its long operations counted in the scheme's own order against the scan-line
-Phong, with edges not walked and walked (both sides). The decision factors stay at cell_study's
+Phong, with edges not walked and walked (both sides); with --golden the bit-accurate cells
+(src/golden_pipeline/cells.h) instead of the real-valued emulation. The decision factors stay at cell_study's
 defaults, chosen on the head at 512 with its default light and n = 20: the sweep says whether they
 hold elsewhere. Per mode the worst and median ratio, per scene the lowest and highest, and how many
 cases reach 3x; one row per case.
@@ -12,7 +13,7 @@ within the NMSE has no ratio (counted apart).
 
 Usage: scripts/cell_claims.py OUT.md [--size 512] [--nmse 1e-5] [--jobs N] [--scenes head sphere torus]
                               [--lights -40,25 35,20 10,60] [--ns 5 20 100 500] [--tols 0.25,...]
-                              [--bin PATH] [--data-dir DIR]
+                              [--bin PATH] [--data-dir DIR] [--golden]
 A negative azimuth reads as an option to argparse: give it alone as --lights=-40,25.
 Standard library only. Exit 0 on success, 1 if a run failed, 2 on bad usage.
 """
@@ -37,6 +38,8 @@ def run(args, scene, light, n, walk):
         cmd += ["--data-dir", args.data_dir]
     if walk:
         cmd.append("--walk-edges")
+    if args.golden:
+        cmd.append("--golden")
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)}: exit {p.returncode}: {p.stderr.strip()}")
@@ -60,6 +63,7 @@ def main():
     ap.add_argument("--tols", default=TOLS)
     ap.add_argument("--bin", default=os.path.join("build", "bin", "cell_study"))
     ap.add_argument("--data-dir", default="")
+    ap.add_argument("--golden", action="store_true", help="the bit-accurate cells (cell_study --golden)")
     args = ap.parse_args()
     if not os.access(args.bin, os.X_OK):
         print(f"cell_claims: no {args.bin}: build first (README)", file=sys.stderr)
@@ -74,8 +78,9 @@ def main():
         except RuntimeError as e:
             print(f"cell_claims: {e}", file=sys.stderr)
             return 1
-    lines = [f"# The cells over the claims sweep ({args.size}x{args.size}, interpolation NMSE <= {args.nmse:g}, "
-             f"squared device, cell_study's default factors)", "",
+    model = "the bit-accurate cells" if args.golden else "the cells, emulated"
+    lines = [f"# {model[0].upper() + model[1:]} over the claims sweep ({args.size}x{args.size}, interpolation NMSE "
+             f"<= {args.nmse:g}, squared device, cell_study's default factors)", "",
              "| scene | light | n | T | points / px | NMSE | long ops / px | x scan-line | walked: T | long ops / px | "
              "x scan-line |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for (s, li, n) in cases:
