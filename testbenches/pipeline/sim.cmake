@@ -12,6 +12,10 @@ if(TARGET shading_pipeline_sim)
   # jobs, every evaluator and device), and small renders against the golden frame.
   shading_add_gtest(test_pipeline_fast SOURCES test_pipeline_fast.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
 endif()
+# The cell unit (modules/pipeline/cell_unit.h) against the golden cells (src/golden_pipeline/cells.h).
+if(TARGET shading_pipeline)
+  shading_add_gtest(test_cell_unit SOURCES test_cell_unit.cpp LIBS shading_pipeline TIMEOUT 300)
+endif()
 # The soak of the fast pipeline (scripts/soak.sh; opt-in, no ctest entry: 1000 renders take minutes).
 if(TARGET shading_pipeline_sim)
   add_executable(soak_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/soak_pipeline.cpp)

@@ -1,0 +1,168 @@
+// Testbench of the cell unit (modules/pipeline/cell_unit.h) in three parts, for its GoogleTest suite:
+//   cell_stimulus  drives the handshake: at a falling edge the cell's pins and start = 1; start = 0
+//                  once ready has fallen; the next cell once ready has risen again
+//   frame_buffer   the monitor: samples the pixel stream at the rising edges where px_valid = 1
+//   cell_checker   compares every write with the golden model's pixel there (cell_pixels, forward
+//                  differences), counts mismatches and pixels written twice or never, and records
+//                  each cell's first and last write (the streaming rate)
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <sstream>
+#include <systemc>
+#include <vector>
+
+#include "core/report_ids.h"
+#include "golden_pipeline/cells.h"
+#include "pipeline/cell_unit.h"
+#include "pipeline/frame_buffer.h"
+
+namespace shading::tb {
+
+// One cell as the geometry side hands it over: its corner, m (s = 2^m) and lattice colours.
+struct cell_input {
+    unsigned x0 = 0, y0 = 0, m = 2;
+    std::array<pipeline::rgb_codes, 9> lattice{};
+};
+
+inline sc_core::sc_time cell_period() { return sc_core::sc_time(20, sc_core::SC_NS); }
+
+class cell_stimulus : public sc_core::sc_module {
+public:
+    sc_core::sc_in<bool> clk{"clk"}, ready{"ready"};
+    sc_core::sc_out<bool> start{"start"};
+    sc_core::sc_out<cell_unit::coord_t> x0{"x0"}, y0{"y0"};
+    sc_core::sc_out<cell_unit::m_t> m{"m"};
+    sc_core::sc_vector<sc_core::sc_out<pipe::sample_t>> lat_r{"lat_r", 9}, lat_g{"lat_g", 9}, lat_b{"lat_b", 9};
+
+    SC_HAS_PROCESS(cell_stimulus);
+    cell_stimulus(const sc_core::sc_module_name& name, std::vector<cell_input> cells)
+        : sc_module(name), cells_(std::move(cells)) {
+        SC_THREAD(run);
+    }
+    bool finished() const { return finished_; }
+
+private:
+    void run() {
+        for (const cell_input& c : cells_) {
+            wait(clk.negedge_event());
+            while (!ready.read()) wait(clk.negedge_event());
+            x0.write(c.x0);
+            y0.write(c.y0);
+            m.write(c.m);
+            for (std::size_t i = 0; i < 9; ++i) {
+                lat_r[i].write(c.lattice[i][0]);
+                lat_g[i].write(c.lattice[i][1]);
+                lat_b[i].write(c.lattice[i][2]);
+            }
+            start.write(true);
+            do wait(clk.negedge_event());
+            while (ready.read());
+            start.write(false);
+        }
+        wait(clk.negedge_event());
+        while (!ready.read()) wait(clk.negedge_event());
+        finished_ = true;
+    }
+
+    std::vector<cell_input> cells_;
+    bool finished_ = false;
+};
+
+// The golden pixels of every cell, placed in a width x height frame; the checker compares the
+// frame buffer's writes with them as they come.
+class cell_checker {
+public:
+    cell_checker(const std::vector<cell_input>& cells, unsigned width, unsigned height)
+        : width_(width), want_(std::size_t(width) * height), cell_of_(std::size_t(width) * height, -1),
+          first_(cells.size()), last_(cells.size()) {
+        for (std::size_t k = 0; k < cells.size(); ++k) {
+            const cell_input& c = cells[k];
+            // A size outside m_min .. m_max is taken as the nearest (cell_ctrl's rule for bad input).
+            const unsigned s = 1u << std::clamp(c.m, interp::m_min, interp::m_max);
+            const auto px = pipeline::cell_pixels(c.lattice, s, pipeline::evaluator::fd);
+            for (unsigned y = 0; y < s; ++y)
+                for (unsigned x = 0; x < s; ++x) {
+                    const std::size_t at = std::size_t(c.y0 + y) * width + c.x0 + x;
+                    want_.at(at) = px[std::size_t(y) * s + x];
+                    cell_of_.at(at) = int(k);
+                }
+        }
+    }
+    void on_write(unsigned x, unsigned y, const frame_buffer::rgb& v) {
+        const std::size_t at = std::size_t(y) * width_ + x;
+        const int k = cell_of_.at(at);
+        const uint64_t edge = static_cast<uint64_t>(sc_core::sc_time_stamp() / cell_period());
+        if (k < 0) {
+            ++stray_;
+            return;
+        }
+        if (!first_[std::size_t(k)]) first_[std::size_t(k)] = edge;
+        last_[std::size_t(k)] = edge;
+        const pipeline::rgb_codes& w = want_[at];
+        if (v[0] != w[0] || v[1] != w[1] || v[2] != w[2]) {
+            if (mismatches_++ < 5) {
+                std::ostringstream m;
+                m << "cell unit: pixel (" << x << ", " << y << ") is " << v[0] << ", " << v[1] << ", " << v[2]
+                  << "; the golden model's " << w[0] << ", " << w[1] << ", " << w[2];
+                SC_REPORT_WARNING(msg::mismatch, m.str().c_str());
+            }
+        }
+    }
+    // Pixels of a cell the frame buffer wrote other than once.
+    std::size_t not_once(const frame_buffer& fb) const {
+        std::size_t n = 0;
+        for (std::size_t at = 0; at < cell_of_.size(); ++at)
+            if (cell_of_[at] >= 0 && fb.written(unsigned(at % width_), unsigned(at / width_)) != 1) ++n;
+        return n;
+    }
+    std::size_t mismatches() const { return mismatches_; }
+    std::size_t stray() const { return stray_; }
+    // Clocks from the cell's first pixel to its last (s^2 - 1 when its rows stream back to back).
+    std::optional<uint64_t> span(std::size_t k) const {
+        if (!first_.at(k)) return std::nullopt;
+        return *last_.at(k) - *first_.at(k);
+    }
+
+private:
+    unsigned width_;
+    std::vector<pipeline::rgb_codes> want_;
+    std::vector<int> cell_of_;
+    std::vector<std::optional<uint64_t>> first_, last_;
+    std::size_t mismatches_ = 0, stray_ = 0;
+};
+
+class cell_unit_bench : public sc_core::sc_module {
+public:
+    sc_core::sc_clock clk{"clk", cell_period()};
+    sc_core::sc_signal<bool> start{"start"}, ready{"ready"}, px_valid{"px_valid"};
+    sc_core::sc_signal<cell_unit::coord_t> x0{"x0"}, y0{"y0"}, px_x{"px_x"}, px_y{"px_y"};
+    sc_core::sc_signal<cell_unit::m_t> m{"m"};
+    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> lat_r{"lat_r", 9}, lat_g{"lat_g", 9}, lat_b{"lat_b", 9};
+    sc_core::sc_signal<pipe::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
+
+    cell_stimulus src;
+    cell_unit dut{"dut"};
+    frame_buffer fb;
+    cell_checker checker;
+
+    cell_unit_bench(const sc_core::sc_module_name& name, const std::vector<cell_input>& cells, unsigned width,
+                    unsigned height)
+        : sc_module(name), src("src", cells), fb("fb", width, height), checker(cells, width, height) {
+        src.clk(clk); src.ready(ready); src.start(start); src.x0(x0); src.y0(y0); src.m(m);
+        dut.clk(clk); dut.start(start); dut.ready(ready); dut.in_x0(x0); dut.in_y0(y0); dut.in_m(m);
+        for (std::size_t i = 0; i < 9; ++i) {
+            src.lat_r[i](lat_r[i]); src.lat_g[i](lat_g[i]); src.lat_b[i](lat_b[i]);
+            dut.in_lat_r[i](lat_r[i]); dut.in_lat_g[i](lat_g[i]); dut.in_lat_b[i](lat_b[i]);
+        }
+        dut.px_valid(px_valid); dut.px_x(px_x); dut.px_y(px_y); dut.px_r(px_r); dut.px_g(px_g); dut.px_b(px_b);
+        fb.clk(clk); fb.valid(px_valid); fb.x(px_x); fb.y(px_y); fb.r(px_r); fb.g(px_g); fb.b(px_b);
+        fb.on_write([this](unsigned x, unsigned y, const frame_buffer::rgb& v) { checker.on_write(x, y, v); });
+    }
+    bool finished() const { return src.finished(); }
+};
+
+}  // namespace shading::tb

@@ -1,0 +1,141 @@
+// The cell unit (modules/pipeline/cell_unit.h) against the golden model's cell_pixels, bit for bit:
+// random lattices over the whole code range (clamps included) in cells of every size, each pixel
+// written once and a cell's rows streamed back to back (s^2 - 1 clocks from its first pixel to its
+// last: one pixel a clock), the cells of the head's bit-accurate plan, and a bad size reported and
+// taken as the nearest. One elaboration per test process.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cell_unit_bench.h"
+#include "core/report_ids.h"
+#include "golden_pipeline/cells.h"
+#include "scene/scene.h"
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+
+namespace {
+
+using namespace shading;
+using namespace shading::pipeline;
+using tb::cell_input;
+
+// Runs the cells through the unit in a frame of width x height under a watchdog far beyond their
+// clocks (sim_guard.h; with SHADING_TRACE=DIR the waveforms go to DIR/<Suite.Test>.vcd). The bench
+// stays elaborated: SystemC cannot tear a design down.
+tb::cell_unit_bench& run(const std::vector<cell_input>& cells, unsigned width, unsigned height) {
+    auto* bench = new tb::cell_unit_bench("tb", cells, width, height);
+    uint64_t clocks = 100;
+    for (const cell_input& c : cells) clocks += 2 * ((1ull << (2 * c.m)) + (1ull << c.m) + 16);
+    EXPECT_TRUE(tb::run_to_completion(*bench, tb::cell_period() * double(clocks)));
+    return *bench;
+}
+
+// Cells of 4, 8, 16, 32 and 64 pixels side by side (one row of the frame each), three of each size,
+// lattices over the whole code range: the biquadratic overshoots and the clamps are exercised.
+TEST(CellUnit, RandomLatticesBitExact) {
+    std::mt19937 rng(20261204);
+    std::uniform_int_distribution<uint64_t> code(0, 0xFFFF);
+    std::vector<cell_input> cells;
+    unsigned y = 0;
+    for (unsigned m = interp::m_min; m <= interp::m_max; ++m) {
+        for (unsigned k = 0; k < 3; ++k) {
+            cell_input c;
+            c.x0 = k << m;
+            c.y0 = y;
+            c.m = m;
+            for (auto& v : c.lattice) v = {code(rng), code(rng), code(rng)};
+            cells.push_back(c);
+        }
+        y += 1u << m;
+    }
+    auto& b = run(cells, 3u << interp::m_max, y);
+    EXPECT_EQ(b.checker.mismatches(), 0u);
+    EXPECT_EQ(b.checker.not_once(b.fb), 0u);
+    EXPECT_EQ(b.checker.stray(), 0u);
+    EXPECT_EQ(b.dut.ctl.cells(), cells.size());
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+        const uint64_t s = 1ull << cells[k].m;
+        ASSERT_TRUE(b.checker.span(k).has_value()) << k;
+        EXPECT_EQ(*b.checker.span(k), s * s - 1) << k;
+    }
+}
+
+// Hand-worked: a ramp of 512 codes a lattice step along x in a 4-pixel cell gives 1000, 1256, 1512,
+// 1768 on every row (the golden model's hand-worked case); the unit writes exactly those.
+TEST(CellUnit, RampByHand) {
+    cell_input c;
+    c.x0 = 4;
+    c.y0 = 8;
+    c.m = 2;
+    const uint64_t v[3] = {1000, 1512, 2024};
+    for (unsigned i = 0; i < 3; ++i)
+        for (unsigned j = 0; j < 3; ++j) c.lattice[3 * i + j] = {v[j], v[j], v[j]};
+    auto& b = run({c}, 16, 16);
+    EXPECT_EQ(b.checker.mismatches(), 0u);
+    const uint16_t want[4] = {1000, 1256, 1512, 1768};
+    for (unsigned y = 8; y < 12; ++y)
+        for (unsigned x = 4; x < 8; ++x) {
+            EXPECT_EQ(b.fb.written(x, y), 1u);
+            EXPECT_EQ(b.fb.pixel(x, y)[0], want[x - 4]) << x << "," << y;
+        }
+    EXPECT_EQ(b.fb.writes(), 16u);
+}
+
+// The cells the bit-accurate plan sends on the head at 256: the unit's frame equals the golden
+// frame's pixels there, except where a point's own colour replaces the biquadratic's.
+TEST(CellUnit, HeadPlanCells) {
+    const scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 256, 256);
+    const scene::rasterised r = scene::rasterise(w);
+    const frame_constants k = frame_constants_of(w);
+    scene::device_config dev;
+    dev.device = scene::parse_device("squared");
+    plan_config c;
+    c.eval = evaluator::fd;
+    const cell_plan p = make_cell_plan(r, k, dev, c, cell_config{});
+    ASSERT_GT(p.cells.size(), 20u);
+    std::vector<cell_input> cells;
+    for (const cell_job& j : p.cells) {
+        cell_input ci;
+        ci.x0 = j.x0;
+        ci.y0 = j.y0;
+        ci.m = 0;
+        while ((1u << ci.m) < j.s) ++ci.m;
+        ci.lattice = cell_lattice_colours(j, k, dev);
+        cells.push_back(ci);
+    }
+    auto& b = run(cells, r.width, r.height);
+    EXPECT_EQ(b.checker.mismatches(), 0u);
+    EXPECT_EQ(b.checker.not_once(b.fb), 0u);
+    const frame g = golden_cell_frame(p, k, dev, c);
+    std::vector<uint8_t> point(r.tri.size(), 0);
+    for (const auto& q : p.points) point[r.index(q[0], q[1])] = 1;
+    std::size_t compared = 0;
+    for (const cell_job& j : p.cells)
+        for (unsigned y = j.y0; y < j.y0 + j.s; ++y)
+            for (unsigned x = j.x0; x < j.x0 + j.s; ++x) {
+                if (point[r.index(x, y)]) continue;
+                const auto& v = b.fb.pixel(x, y);
+                const rgb_codes& want = g.px[r.index(x, y)];
+                ASSERT_TRUE(v[0] == want[0] && v[1] == want[1] && v[2] == want[2]) << x << "," << y;
+                ++compared;
+            }
+    EXPECT_GT(compared, 10000u);
+}
+
+// m = 7 is no cell size: reported (shading/input) and taken as 2^6; the cell is still delivered.
+TEST(CellUnit, BadSizeReported) {
+    tb::report_log::get().expect(msg::input);
+    cell_input c;
+    c.m = 7;
+    for (auto& v : c.lattice) v = {4096, 4096, 4096};
+    auto& b = run({c}, 64, 64);
+    EXPECT_GE(tb::report_log::get().count(msg::input), 1u);
+    EXPECT_EQ(b.fb.writes(), 64u * 64u);
+    EXPECT_EQ(b.fb.pixel(63, 63)[0], 4096u);
+}
+
+}  // namespace
