@@ -387,9 +387,36 @@ frame golden_cell_frame(const cell_plan& p, const frame_constants& k, const scen
     if (p.point_geometry.size() != p.points.size())
         throw scene::scene_error("golden_cell_frame: the plan lists " + std::to_string(p.points.size()) + " points and " +
                                  std::to_string(p.point_geometry.size()) + " geometries");
-    for (std::size_t i = 0; i < p.points.size(); ++i)
-        put(p.points[i][0], p.points[i][1], golden_sample(dev, k, p.point_geometry[i]), 1, 0);
+    for (const interval_job& job : point_jobs(p)) put(job.x0, job.y, golden_sample(dev, k, job.s[0]), 1, 0);
     return f;
+}
+
+std::vector<interval_job> point_jobs(const cell_plan& p) {
+    std::vector<uint8_t> in_job(std::size_t(p.width) * p.height, 0);
+    for (const interval_job& job : p.jobs)
+        for (unsigned i = 0; i < job.len; ++i) in_job.at(std::size_t(job.y) * p.width + job.x0 + i) = 1;
+    std::vector<interval_job> out;
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+        const unsigned x = p.points[i][0], y = p.points[i][1];
+        if (in_job.at(std::size_t(y) * p.width + x)) continue;
+        interval_job job;
+        job.y = y;
+        job.x0 = x;
+        job.s = {p.point_geometry[i], p.point_geometry[i], p.point_geometry[i], p.point_geometry[i]};
+        out.push_back(job);
+    }
+    return out;
+}
+
+plan pipeline_plan(const cell_plan& p) {
+    plan out;
+    out.width = p.width;
+    out.height = p.height;
+    out.jobs = p.jobs;
+    const std::vector<interval_job> pts = point_jobs(p);
+    out.jobs.insert(out.jobs.end(), pts.begin(), pts.end());
+    for (const interval_job& job : out.jobs) out.pixels += job.len;
+    return out;
 }
 
 cell_counts cell_ops(const scene::rasterised& r, const cell_plan& p, const scene::device_config& dev, unsigned n,

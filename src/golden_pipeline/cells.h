@@ -98,12 +98,18 @@ std::array<rgb_codes, 9> cell_lattice_colours(const cell_job& cell, const frame_
 std::vector<rgb_codes> cell_pixels(const std::array<rgb_codes, 9>& lattice, unsigned s, evaluator e);
 
 // The frame the scheme delivers: cell_pixels for every cell, golden_interval for every job (c.eval,
-// c.set, c.div); degree 2 and log2_len log2 s on a cell's pixels. Then at every point the colour the
-// sample stage formed there (golden_sample; degree 1): the frame buffer takes a point's colour as it
-// takes an exact pixel's, and the interpolated value there is dropped (a check point's colour is
-// exact, where the polynomial only came within the tolerance of it).
+// c.set, c.div); degree 2 and log2_len log2 s on a cell's pixels. Then at every point inside a cell
+// the colour the sample stage formed there, as an exact pixel (point_jobs; degree 1): the biquadratic
+// only comes within a tolerance of it. Points inside an interval keep the interval's pixel, as the
+// shading pipeline delivers them.
 frame golden_cell_frame(const cell_plan& p, const frame_constants& k, const scene::device_config& dev,
                         const plan_config& c);
+// The exact pixels (m = 0 jobs) of the points no job covers, in the order read.
+std::vector<interval_job> point_jobs(const cell_plan& p);
+// What the shading pipeline (modules/pipeline/shading_pipeline.h) takes of the scheme: the plan's
+// jobs, then point_jobs. With the cells from the cell unit (modules/pipeline/cell_unit.h) first, its
+// frame buffer's content over theirs is golden_cell_frame.
+plan pipeline_plan(const cell_plan& p);
 
 // The long operations' side of the count: each point's geometry stepped (stepped_geometry) in the
 // order read (or, with raster_order, line by line), and one colour formed at each (colour_sample_ops).

@@ -208,7 +208,8 @@ TEST_F(GoldenCellsHead, SameCellsAsTheEmulation) {
 }
 
 // On the head at 512 at T = 0.9: every covered pixel delivered once; the points distinct and
-// covered, each pixel there per-pixel shading's colour; the bookkeeping adds up; against per-pixel
+// covered, those inside cells per-pixel shading's colour there (and no other point outside a job);
+// the pipeline's part is the jobs and those points; the bookkeeping adds up; against per-pixel
 // shading through the device the NMSE is within the target's 1e-5; counted with edges walked (where
 // the order is free) the long operations are at least 3x fewer than the scan-line Phong's.
 TEST_F(GoldenCellsHead, FrameAndTarget) {
@@ -225,7 +226,21 @@ TEST_F(GoldenCellsHead, FrameAndTarget) {
     }
     EXPECT_EQ(once.size(), p.points.size());
     const frame f = golden_cell_frame(p, head.k, head.dev, cfg());
-    for (const auto& q : p.points) EXPECT_EQ(f.px[r.index(q[0], q[1])], head.per_pixel.px[r.index(q[0], q[1])]);
+    std::vector<uint8_t> in_cell(r.tri.size(), 0);
+    for (const cell_job& c : p.cells)
+        for (unsigned y = c.y0; y < c.y0 + c.s; ++y)
+            for (unsigned x = c.x0; x < c.x0 + c.s; ++x) in_cell[r.index(x, y)] = 1;
+    std::size_t cell_points = 0;
+    for (const auto& q : p.points)
+        if (in_cell[r.index(q[0], q[1])]) {
+            EXPECT_EQ(f.px[r.index(q[0], q[1])], head.per_pixel.px[r.index(q[0], q[1])]);
+            ++cell_points;
+        }
+    EXPECT_EQ(point_jobs(p).size(), cell_points);  // the points no job covers are the cells' own
+    const plan pp = pipeline_plan(p);
+    EXPECT_EQ(pp.jobs.size(), p.jobs.size() + cell_points);
+    const std::size_t cell_pixels_total = std::size_t(std::count(in_cell.begin(), in_cell.end(), uint8_t(1)));
+    EXPECT_EQ(pp.pixels, p.pixels - cell_pixels_total + cell_points);
     EXPECT_EQ(f.covered, head.per_pixel.covered);
     const error_stats e = compare(to_image(f), to_image(head.per_pixel));
     EXPECT_LE(e.nmse, 1e-5);
