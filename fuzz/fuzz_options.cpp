@@ -214,7 +214,7 @@ std::optional<int> head_study(int argc, char** argv) {
 }
 
 // The scene options of the studies that render one (components_study, edge_study, two_line_study,
-// cell_study).
+// cell_study, render_cells).
 void check_study_scene(const std::string& scene, const std::string& dev, unsigned size) {
     FUZZ_CHECK(in({"head", "sphere", "torus"}, scene), "--scene '%s'", scene.c_str());
     FUZZ_CHECK(device(dev), "--device '%s'", dev.c_str());
@@ -275,6 +275,18 @@ std::optional<int> cell_study(int argc, char** argv) {
     return std::nullopt;
 }
 
+std::optional<int> render_cells(int argc, char** argv) {
+    render_cells_options o;
+    if (auto rc = parse_render_cells(argc, argv, o)) return rc;
+    check_study_scene(o.scene, o.device, o.size);
+    FUZZ_CHECK(o.size <= 1024u, "--size %u", o.size);
+    FUZZ_CHECK(o.light.empty() || (o.light.size() == 2 && std::abs(o.light[0]) <= 360.0 && std::abs(o.light[1]) <= 90.0),
+               "--light of %zu values", o.light.size());
+    FUZZ_CHECK(o.n <= 1000u, "--n %u", o.n);
+    FUZZ_CHECK(o.tol > 0.0 && o.tol <= 64.0, "--tol %g", o.tol);
+    return std::nullopt;
+}
+
 std::optional<int> render_pipeline(int argc, char** argv) {
 #if SHADING_FUZZ_RENDER_OPTIONS
     namespace rp = shading::render_program;
@@ -326,7 +338,7 @@ const program programs[] = {
     {"head_study", head_study},             {"render_pipeline", render_pipeline},
     {"bench_line_tlm", bench_line_tlm},     {"components_study", components_study},
     {"edge_study", edge_study},             {"two_line_study", two_line_study},
-    {"cell_study", cell_study},
+    {"cell_study", cell_study},             {"render_cells", render_cells},
 };
 
 }  // namespace

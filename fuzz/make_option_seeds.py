@@ -10,7 +10,7 @@ OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus", "fuzz_o
 PROGRAMS = ["interp_coef_tb", "ua60553_tb", "interp_fd_tb", "ua22802_tb", "interp_horner_tb", "squared_tb",
             "interp_line_tb", "interp_study", "soak_pipeline", "render_reference", "bench_specular_tlm",
             "accuracy_study", "generator_search", "head_study", "render_pipeline", "bench_line_tlm",
-            "components_study", "edge_study", "two_line_study", "cell_study"]
+            "components_study", "edge_study", "two_line_study", "cell_study", "render_cells"]
 BENCH = {  # what every bench's ctest entries pass (cmake/shading.cmake, shading_add_bench)
     "default": "--no-vcd",
     "inject": "--no-vcd --inject-mismatch 3",
@@ -55,6 +55,9 @@ SEEDS = {
     "cell_study": {"short": "--size 48 --tol 1,2",
                    "scene": "--scene sphere --light 35,20 --n 100 --device patent --nmse 1e-4 --d2-factor 6 --d3-factor 2 --fallback-tol 2 --line-tol 1 --cell-max 64 --m-max 6 --walk-edges --perfect-decisions",
                    "empty": "--tol=", "nan": "--d3-factor nan", "light": "--light 10", "usage": "--cell-max 48"},
+    "render_cells": {"short": "--size 96 --tol 1",
+                     "scene": "--scene torus --light 35,20 --n 100 --device patent --size 1024 --tol 2 --walk-edges",
+                     "nan": "--tol nan", "light": "--light 10", "usage": "--size 8"},
 }
 
 

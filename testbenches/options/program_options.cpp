@@ -350,6 +350,29 @@ std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_op
     return std::nullopt;
 }
 
+std::optional<int> parse_render_cells(int argc, char** argv, render_cells_options& o) {
+    CLI::App app{"the cells rendered in SystemC: the cell unit and the shading pipeline against the golden frame"};
+    app.add_option("--scene", o.scene, "built-in scene")->check(CLI::IsMember({"head", "sphere", "torus"}));
+    app.add_option("--size", o.size, "image width and height")->check(CLI::Range(16u, 1024u));
+    app.add_option("--data-dir", o.data_dir, "repository root holding data/head/");
+    app.add_option("--device", o.device, "specular device")->check(CLI::IsMember(device_names()));
+    app.add_option("--light", o.light, "one directional light instead of the scene's: azimuth,elevation in degrees")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(-360.0, 360.0))
+        ->check(not_nan());
+    app.add_option("--n", o.n, "the specular exponent instead of the scene's (1..1000)")->check(CLI::Range(1u, 1000u));
+    app.add_option("--tol", o.tol, "the cells' tolerance (8-bit levels)")->check(CLI::Range(1e-3, 64.0))->check(not_nan());
+    app.add_flag("--walk-edges", o.walk_edges,
+                 "count the geometry side and the scan-line Phong walking each triangle's values from line to line");
+    SHADING_CLI_PARSE(app, argc, argv);
+    if (!o.light.empty() && (o.light.size() != 2 || !(std::abs(o.light[1]) <= 90.0))) {
+        std::fprintf(stderr, "render_cells: --light needs azimuth,elevation with the elevation in -90..90\n");
+        return 2;
+    }
+    return std::nullopt;
+}
+
 std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o) {
     CLI::App app{"a quadtree of biquadratic cells decided from its lattices' differences, the lines for the rest"};
     add_study_scene(app, o.scene, o.size, o.data_dir, o.device);

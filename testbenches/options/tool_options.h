@@ -131,6 +131,17 @@ struct cell_study_options {
     bool golden = false;     // the bit-accurate cells (src/golden_pipeline/cells.h), not the emulation
 };
 
+// render_cells: the built-in scene, its light and exponent as cell_study's, the cells' tolerance (levels)
+// with cell_study's other defaults, edge walking (the counts only).
+struct render_cells_options {
+    std::string scene = "head", data_dir = default_data_dir(), device = "squared";
+    unsigned size = 512;        // 16..1024
+    std::vector<double> light;  // two values, -360..360 and -90..90
+    unsigned n = 0;             // 0 or 1..1000
+    double tol = 0.9;           // 0.001..64
+    bool walk_edges = false;
+};
+
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);
 std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
 std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
@@ -143,5 +154,6 @@ std::optional<int> parse_components_study(int argc, char** argv, components_stud
 std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o);
 std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_options& o);
 std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o);
+std::optional<int> parse_render_cells(int argc, char** argv, render_cells_options& o);
 
 }  // namespace shading::tb

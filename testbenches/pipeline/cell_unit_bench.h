@@ -19,6 +19,7 @@
 #include "golden_pipeline/cells.h"
 #include "pipeline/cell_unit.h"
 #include "pipeline/frame_buffer.h"
+#include "pipeline_sim.h"
 
 namespace shading::tb {
 
@@ -102,6 +103,7 @@ public:
         }
         if (!first_[std::size_t(k)]) first_[std::size_t(k)] = edge;
         last_[std::size_t(k)] = edge;
+        last_edge_ = std::max(last_edge_, edge);
         const pipeline::rgb_codes& w = want_[at];
         if (v[0] != w[0] || v[1] != w[1] || v[2] != w[2]) {
             if (mismatches_++ < 5) {
@@ -120,6 +122,7 @@ public:
         return n;
     }
     std::size_t mismatches() const { return mismatches_; }
+    uint64_t last_edge() const { return last_edge_; }  // the clock edge of the last write
     std::size_t stray() const { return stray_; }
     // Clocks from the cell's first pixel to its last (s^2 - 1 when its rows stream back to back).
     std::optional<uint64_t> span(std::size_t k) const {
@@ -133,6 +136,7 @@ private:
     std::vector<int> cell_of_;
     std::vector<std::optional<uint64_t>> first_, last_;
     std::size_t mismatches_ = 0, stray_ = 0;
+    uint64_t last_edge_ = 0;
 };
 
 class cell_unit_bench : public sc_core::sc_module {
@@ -164,5 +168,74 @@ public:
     }
     bool finished() const { return src.finished(); }
 };
+
+// The cells of a plan as the geometry side hands them to the unit: the lattice colours the sample
+// stage forms (cell_lattice_colours).
+inline std::vector<cell_input> cell_inputs(const pipeline::cell_plan& p, const pipeline::frame_constants& k,
+                                           const scene::device_config& dev) {
+    std::vector<cell_input> out;
+    for (const pipeline::cell_job& j : p.cells) {
+        cell_input c;
+        c.x0 = j.x0;
+        c.y0 = j.y0;
+        while ((1u << c.m) < j.s) ++c.m;
+        c.lattice = pipeline::cell_lattice_colours(j, k, dev);
+        out.push_back(c);
+    }
+    return out;
+}
+
+// The scheme's whole frame in SystemC (one elaboration: call once per process): the plan's cells
+// through the cell unit, its intervals and the cells' points through the shading pipeline
+// (pipeline_plan; c as simulate_frame takes it), the pipeline's frame buffer over the cell unit's,
+// compared code for code with golden_cell_frame.
+struct cells_run {
+    pipeline::frame f;                  // the composed frame
+    std::size_t differ = 0;             // covered pixels not the golden model's (or delivered by neither)
+    std::size_t stray = 0;              // uncovered pixels written
+    std::size_t unit_mismatches = 0, pipeline_mismatches = 0;  // each bench's own checker
+    uint64_t unit_clocks = 0, pipeline_clocks = 0;
+    bool finished = false;
+};
+inline cells_run simulate_cells(const scene::rasterised& r, const pipeline::cell_plan& p,
+                                const pipeline::frame_constants& k, const scene::device_config& dev,
+                                const pipeline::plan_config& c) {
+    const std::vector<cell_input> cells = cell_inputs(p, k, dev);
+    uint64_t clocks = 100;
+    for (const cell_input& ci : cells) clocks += 2 * ((1ull << (2 * ci.m)) + (1ull << ci.m) + 16);
+    auto* unit = new cell_unit_bench("cells", cells, r.width, r.height);  // elaborated with the pipeline's
+    const pipeline::sim_result res = pipeline::simulate_frame(pipeline::pipeline_plan(p), k, dev, c);
+    if (!unit->finished()) sc_core::sc_start(cell_period() * double(clocks));
+    cells_run out;
+    out.finished = unit->finished();
+    out.unit_mismatches = unit->checker.mismatches() + unit->checker.not_once(unit->fb) + unit->checker.stray();
+    out.pipeline_mismatches = res.mismatches;
+    out.unit_clocks = unit->checker.last_edge();
+    out.pipeline_clocks = res.clocks;
+    const pipeline::frame g = pipeline::golden_cell_frame(p, k, dev, c);
+    out.f = g;
+    for (unsigned y = 0; y < r.height; ++y)
+        for (unsigned x = 0; x < r.width; ++x) {
+            const std::size_t at = r.index(x, y);
+            const bool by_unit = unit->fb.written(x, y) != 0, by_pipe = res.f.covered[at] != 0;
+            if (!r.covered(x, y)) {
+                out.stray += by_unit || by_pipe;
+                continue;
+            }
+            pipeline::rgb_codes v{};
+            if (by_pipe) {
+                v = res.f.px[at];
+            } else if (by_unit) {
+                const auto& u = unit->fb.pixel(x, y);
+                v = {u[0], u[1], u[2]};
+            } else {
+                ++out.differ;  // delivered by neither
+                continue;
+            }
+            out.differ += v != g.px[at];
+            out.f.px[at] = v;
+        }
+    return out;  // the benches stay elaborated: SystemC cannot tear a design down
+}
 
 }  // namespace shading::tb

@@ -12,9 +12,19 @@ if(TARGET shading_pipeline_sim)
   # jobs, every evaluator and device), and small renders against the golden frame.
   shading_add_gtest(test_pipeline_fast SOURCES test_pipeline_fast.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
 endif()
-# The cell unit (modules/pipeline/cell_unit.h) against the golden cells (src/golden_pipeline/cells.h).
-if(TARGET shading_pipeline)
-  shading_add_gtest(test_cell_unit SOURCES test_cell_unit.cpp LIBS shading_pipeline TIMEOUT 300)
+# The cell unit (modules/pipeline/cell_unit.h) against the golden cells (src/golden_pipeline/cells.h),
+# and with the pipeline taking the rest, the scheme's whole frame.
+if(TARGET shading_pipeline_sim)
+  shading_add_gtest(test_cell_unit SOURCES test_cell_unit.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
+  # The cells rendered in SystemC (render_cells.cpp): exit 0 when the frame is the golden one.
+  add_executable(render_cells ${CMAKE_CURRENT_SOURCE_DIR}/render_cells.cpp)
+  target_link_libraries(render_cells PRIVATE shading_pipeline_sim shading_pipeline shading_line_kinks shading_options
+                        shading_tb_common)
+  set_target_properties(render_cells PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  add_test(NAME pipeline.render_cells COMMAND render_cells --size 96 --tol 1 WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  set_tests_properties(pipeline.render_cells PROPERTIES TIMEOUT 300 LABELS render_cells
+                       PASS_REGULAR_EXPRESSION "the frame is the golden model's")
+  shading_add_usage_test(render_cells ARGS --size 8)
 endif()
 # The soak of the fast pipeline (scripts/soak.sh; opt-in, no ctest entry: 1000 renders take minutes).
 if(TARGET shading_pipeline_sim)

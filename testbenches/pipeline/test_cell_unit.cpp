@@ -1,8 +1,9 @@
 // The cell unit (modules/pipeline/cell_unit.h) against the golden model's cell_pixels, bit for bit:
 // random lattices over the whole code range (clamps included) in cells of every size, each pixel
 // written once and a cell's rows streamed back to back (s^2 - 1 clocks from its first pixel to its
-// last: one pixel a clock), the cells of the head's bit-accurate plan, and a bad size reported and
-// taken as the nearest. One elaboration per test process.
+// last: one pixel a clock), the cells of the head's bit-accurate plan, the scheme's whole frame with
+// the shading pipeline taking the rest, and a bad size reported and taken as the nearest. One
+// elaboration per test process.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -97,16 +98,7 @@ TEST(CellUnit, HeadPlanCells) {
     c.eval = evaluator::fd;
     const cell_plan p = make_cell_plan(r, k, dev, c, cell_config{});
     ASSERT_GT(p.cells.size(), 20u);
-    std::vector<cell_input> cells;
-    for (const cell_job& j : p.cells) {
-        cell_input ci;
-        ci.x0 = j.x0;
-        ci.y0 = j.y0;
-        ci.m = 0;
-        while ((1u << ci.m) < j.s) ++ci.m;
-        ci.lattice = cell_lattice_colours(j, k, dev);
-        cells.push_back(ci);
-    }
+    const std::vector<cell_input> cells = tb::cell_inputs(p, k, dev);
     auto& b = run(cells, r.width, r.height);
     EXPECT_EQ(b.checker.mismatches(), 0u);
     EXPECT_EQ(b.checker.not_once(b.fb), 0u);
@@ -124,6 +116,31 @@ TEST(CellUnit, HeadPlanCells) {
                 ++compared;
             }
     EXPECT_GT(compared, 10000u);
+}
+
+// The scheme's whole frame in SystemC, the head at 192: the planned cells through the cell unit, the
+// plan's intervals and the cells' points through the shading pipeline (fd, any m per interval), the
+// pipeline's frame buffer over the cell unit's: code for code the golden model's frame.
+TEST(CellUnit, HeadFrameEndToEnd) {
+    const scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 192, 192);
+    const scene::rasterised r = scene::rasterise(w);
+    const frame_constants k = frame_constants_of(w);
+    scene::device_config dev;
+    dev.device = scene::parse_device("squared");
+    plan_config c;
+    c.eval = evaluator::fd;
+    c.length = length_policy::adaptive;  // the pipeline's fd channel built for any m per interval
+    const cell_plan p = make_cell_plan(r, k, dev, c, cell_config{});
+    ASSERT_GT(p.cells.size(), 50u);
+    ASSERT_GT(p.jobs.size(), 1000u);
+    const tb::cells_run run = tb::simulate_cells(r, p, k, dev, c);
+    EXPECT_TRUE(run.finished);
+    EXPECT_EQ(run.unit_mismatches, 0u);
+    EXPECT_EQ(run.pipeline_mismatches, 0u);
+    EXPECT_EQ(run.differ, 0u);
+    EXPECT_EQ(run.stray, 0u);
+    EXPECT_GT(run.unit_clocks, 0u);
+    EXPECT_GT(run.pipeline_clocks, 0u);
 }
 
 // m = 7 is no cell size: reported (shading/input) and taken as 2^6; the cell is still delivered.
