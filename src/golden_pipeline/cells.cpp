@@ -354,15 +354,7 @@ std::vector<rgb_codes> cell_pixels(const std::array<rgb_codes, 9>& lattice, unsi
 
 frame golden_cell_frame(const cell_plan& p, const frame_constants& k, const scene::device_config& dev,
                         const plan_config& c) {
-    frame f;
-    f.width = p.width;
-    f.height = p.height;
-    const std::size_t n = std::size_t(p.width) * p.height;
-    f.px.assign(n, rgb_codes{});
-    f.covered.assign(n, 0);
-    f.degree.assign(n, 0);
-    f.log2_len.assign(n, 0);
-    f.zone.assign(n, 0);
+    frame f = empty_frame(p.width, p.height);
     auto put = [&](unsigned x, unsigned y, const rgb_codes& v, uint8_t degree, uint8_t m) {
         if (x >= p.width || y >= p.height)
             throw scene::scene_error("golden_cell_frame: pixel (" + std::to_string(x) + ", " + std::to_string(y) +

@@ -73,7 +73,6 @@ std::vector<rgb_codes> golden_interval(const interval_job& job, const frame_cons
     return interval_pixels(job, k, dev, e, set, div);
 }
 
-namespace {
 frame empty_frame(unsigned w, unsigned h) {
     frame f;
     f.width = w;
@@ -86,7 +85,6 @@ frame empty_frame(unsigned w, unsigned h) {
     f.zone.assign(n, 0);
     return f;
 }
-}  // namespace
 
 frame golden_frame(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c) {
     frame f = empty_frame(p.width, p.height);

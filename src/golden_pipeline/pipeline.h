@@ -253,6 +253,8 @@ struct frame {
     std::vector<uint8_t> log2_len;      // m of the pixel's interval (0 exact)
     std::vector<uint8_t> zone;
 };
+// A w x h frame with nothing covered (every code 0).
+frame empty_frame(unsigned w, unsigned h);
 // Runs golden_interval over every job of the plan into a frame (the frame buffer's content).
 frame golden_frame(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c);
 // The same frame with every covered pixel an exact sample (golden_sample at every pixel, clamped to

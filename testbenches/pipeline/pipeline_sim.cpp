@@ -21,7 +21,7 @@ sim_result simulate_frame(const plan& p, const frame_constants& k, const scene::
               ", outside " + std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max);
     if (!bad.empty()) {
         sim_result r;
-        r.f = sim_detail::empty_frame(p);
+        r.f = empty_frame(p.width, p.height);
         r.mismatches = p.pixels;
         SC_REPORT_ERROR(msg::config, bad.c_str());
         return r;

@@ -20,18 +20,6 @@
 
 namespace shading::pipeline::sim_detail {
 
-inline frame empty_frame(const plan& p) {
-    frame f;
-    f.width = p.width;
-    f.height = p.height;
-    const std::size_t n = std::size_t(p.width) * p.height;
-    f.px.assign(n, rgb_codes{});
-    f.covered.assign(n, 0);
-    f.degree.assign(n, 0);
-    f.log2_len.assign(n, 0);
-    f.zone.assign(n, 0);
-    return f;
-}
 
 // This process's CPU time (user + system): on a shared machine the simulator's speed, where wall
 // time also counts the other processes.
@@ -54,7 +42,7 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
                const typename AGen::config& gen, const sim_options& o) {
     sim_result res;
     res.period_ns = pipeline_period().to_seconds() * 1e9;
-    res.f = empty_frame(p);
+    res.f = empty_frame(p.width, p.height);
     auto bench = std::make_unique<pipeline_bench<AGen, EVAL, FAST>>("tb", p, k, dev, c, gen, o.progress);
     bench->checker.inject_mismatch(o.inject_mismatch);
     bench->checker.keep_order(o.keep_write_order);

@@ -35,6 +35,25 @@ tb::cell_unit_bench& run(const std::vector<cell_input>& cells, unsigned width, u
     return *bench;
 }
 
+// The head at size x size with the squared device, planned into cells (forward differences; the
+// pipeline's channel built for any m per interval, as simulate_frame takes the rest).
+struct head_cells {
+    explicit head_cells(unsigned size)
+        : w(scene::builtin_scene("head", SHADING_SOURCE_DIR, size, size)), r(scene::rasterise(w)),
+          k(frame_constants_of(w)) {
+        dev.device = scene::parse_device("squared");
+        c.eval = evaluator::fd;
+        c.length = length_policy::adaptive;
+        p = make_cell_plan(r, k, dev, c, cell_config{});
+    }
+    scene::world w;
+    scene::rasterised r;  // points at w
+    frame_constants k;
+    scene::device_config dev;
+    plan_config c;
+    cell_plan p;
+};
+
 // Cells of 4, 8, 16, 32 and 64 pixels side by side (one row of the frame each), three of each size,
 // lattices over the whole code range: the biquadratic overshoots and the clamps are exercised.
 TEST(CellUnit, RandomLatticesBitExact) {
@@ -89,20 +108,15 @@ TEST(CellUnit, RampByHand) {
 // The cells the bit-accurate plan sends on the head at 256: the unit's frame equals the golden
 // frame's pixels there, except where a point's own colour replaces the biquadratic's.
 TEST(CellUnit, HeadPlanCells) {
-    const scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 256, 256);
-    const scene::rasterised r = scene::rasterise(w);
-    const frame_constants k = frame_constants_of(w);
-    scene::device_config dev;
-    dev.device = scene::parse_device("squared");
-    plan_config c;
-    c.eval = evaluator::fd;
-    const cell_plan p = make_cell_plan(r, k, dev, c, cell_config{});
+    const head_cells h(256);
+    const scene::rasterised& r = h.r;
+    const cell_plan& p = h.p;
     ASSERT_GT(p.cells.size(), 20u);
-    const std::vector<cell_input> cells = tb::cell_inputs(p, k, dev);
+    const std::vector<cell_input> cells = tb::cell_inputs(p, h.k, h.dev);
     auto& b = run(cells, r.width, r.height);
     EXPECT_EQ(b.checker.mismatches(), 0u);
     EXPECT_EQ(b.checker.not_once(b.fb), 0u);
-    const frame g = golden_cell_frame(p, k, dev, c);
+    const frame g = golden_cell_frame(p, h.k, h.dev, h.c);
     std::vector<uint8_t> point(r.tri.size(), 0);
     for (const auto& q : p.points) point[r.index(q[0], q[1])] = 1;
     std::size_t compared = 0;
@@ -122,18 +136,11 @@ TEST(CellUnit, HeadPlanCells) {
 // plan's intervals and the cells' points through the shading pipeline (fd, any m per interval), the
 // pipeline's frame buffer over the cell unit's: code for code the golden model's frame.
 TEST(CellUnit, HeadFrameEndToEnd) {
-    const scene::world w = scene::builtin_scene("head", SHADING_SOURCE_DIR, 192, 192);
-    const scene::rasterised r = scene::rasterise(w);
-    const frame_constants k = frame_constants_of(w);
-    scene::device_config dev;
-    dev.device = scene::parse_device("squared");
-    plan_config c;
-    c.eval = evaluator::fd;
-    c.length = length_policy::adaptive;  // the pipeline's fd channel built for any m per interval
-    const cell_plan p = make_cell_plan(r, k, dev, c, cell_config{});
+    const head_cells h(192);
+    const cell_plan& p = h.p;
     ASSERT_GT(p.cells.size(), 50u);
     ASSERT_GT(p.jobs.size(), 1000u);
-    const tb::cells_run run = tb::simulate_cells(r, p, k, dev, c);
+    const tb::cells_run run = tb::simulate_cells(h.r, p, h.k, h.dev, h.c);
     EXPECT_TRUE(run.finished);
     EXPECT_EQ(run.unit_mismatches, 0u);
     EXPECT_EQ(run.pipeline_mismatches, 0u);
