@@ -6,17 +6,20 @@
 // elaboration per test process.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "cell_unit_bench.h"
+#include "core/trace.h"
 #include "core/report_ids.h"
 #include "golden_pipeline/cells.h"
 #include "scene/scene.h"
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
+#include "testbenches/common/vcd_names.h"
 
 namespace {
 
@@ -86,7 +89,7 @@ TEST(CellUnit, RandomLatticesBitExact) {
 
 // Hand-worked: a ramp of 512 codes a lattice step along x in a 4-pixel cell gives 1000, 1256, 1512,
 // 1768 on every row (the golden model's hand-worked case); the unit writes exactly those.
-TEST(CellUnit, RampByHand) {
+cell_input ramp_cell() {
     cell_input c;
     c.x0 = 4;
     c.y0 = 8;
@@ -94,7 +97,11 @@ TEST(CellUnit, RampByHand) {
     const uint64_t v[3] = {1000, 1512, 2024};
     for (unsigned i = 0; i < 3; ++i)
         for (unsigned j = 0; j < 3; ++j) c.lattice[3 * i + j] = {v[j], v[j], v[j]};
-    auto& b = run({c}, 16, 16);
+    return c;
+}
+
+TEST(CellUnit, RampByHand) {
+    auto& b = run({ramp_cell()}, 16, 16);
     EXPECT_EQ(b.checker.mismatches(), 0u);
     const uint16_t want[4] = {1000, 1256, 1512, 1768};
     for (unsigned y = 8; y < 12; ++y)
@@ -160,6 +167,46 @@ TEST(CellUnit, BadSizeReported) {
     EXPECT_GE(tb::report_log::get().count(msg::input), 1u);
     EXPECT_EQ(b.fb.writes(), 64u * 64u);
     EXPECT_EQ(b.fb.pixel(63, 63)[0], 4096u);
+}
+
+// traces/cell_unit.gtkw is hand-written for the VCD this test writes (SHADING_TRACE=traces: to
+// traces/cell_unit.vcd, else a temporary folder) of the ramp cell: every net it lists exists, and a
+// user sees it at first sight as intended (vcd_names.h, view_problems): dump file beside the view,
+// marker inside the opening window and off every edge, every bus a number in its format, the pixel
+// stream on top. At the marker pixel (4, 8) is on the stream: 1000 codes, valid.
+TEST(CellUnitView, GtkwaveViewMatchesItsVcd) {
+    const char* env = std::getenv("SHADING_TRACE");
+    const std::string dir = env != nullptr && *env != '\0' ? std::string(env) : ::testing::TempDir();
+    auto* bench = new tb::cell_unit_bench("tb", {ramp_cell()}, 16, 16);
+    bool px_at_marker = false;
+    {
+        vcd_file vcd(dir + "/cell_unit");
+        vcd.trace(*bench);
+        sc_core::sc_start(sc_core::sc_time(177, sc_core::SC_NS));
+        px_at_marker = bench->px_valid.read() && bench->px_x.read() == 4 && bench->px_y.read() == 8 &&
+                       bench->px_r.read() == 1000;
+        sc_core::sc_start(sc_core::sc_time(600, sc_core::SC_NS));
+    }
+    EXPECT_TRUE(px_at_marker);
+    EXPECT_TRUE(bench->finished());
+    EXPECT_EQ(bench->checker.mismatches(), 0u);
+    const std::string gtkw = tb::source_path("traces/cell_unit.gtkw"), vcd = dir + "/cell_unit.vcd";
+    const auto declared = tb::vcd_declared(vcd);
+    const auto shown = tb::gtkw_listed(gtkw);
+    EXPECT_GE(shown.size(), 30u);
+    for (const auto& s : shown) EXPECT_EQ(declared.count(s), 1u) << s << " is in the view but not in the VCD";
+    tb::view_formats f;
+    for (const char* s : {"tb.px_r", "tb.px_g", "tb.px_b", "tb.lat_r_0", "tb.lat_r_1", "tb.lat_r_2", "tb.dut.ch_r.lat_0",
+                          "tb.dut.ch_r.col_px_0", "tb.dut.ch_r.col_px_1", "tb.dut.ch_r.col_px_2", "tb.dut.ch_r.col_rd_0",
+                          "tb.dut.ch_r.col_rd_1", "tb.dut.ch_r.col_rd_2"})
+        f[s] = interp::sample_fmt;
+    for (const char* s : {"tb.px_x", "tb.px_y", "tb.x0", "tb.y0"}) f[s] = qfmt{16, false, 0};
+    f["tb.m"] = qfmt{3, false, 0};
+    f["tb.dut.wa"] = f["tb.dut.ra"] = qfmt{6, false, 0};
+    for (const char* s : {"tb.dut.ch_r.row_a", "tb.dut.ch_r.row_b", "tb.dut.ch_r.row_c"}) f[s] = interp::coef_fmt;
+    const auto problems = tb::view_problems(gtkw, vcd, "cell_unit", f,
+                                            {"tb.px_valid", "tb.px_x", "tb.px_y", "tb.px_r", "tb.px_g", "tb.px_b"});
+    EXPECT_TRUE(problems.empty()) << tb::joined(problems);
 }
 
 }  // namespace
