@@ -42,7 +42,7 @@ struct cell_config {
     double d2_factor = 8.0;
     double d3_factor = 1.0;
     double fallback_tol = 1.0;   // levels
-    unsigned s_max = 32, s_min = 4;  // powers of two, 4 <= s_min <= s_max <= 2^interp::m_max
+    unsigned s_max = 32, s_min = 4;  // powers of two, s_min = 4 (the fallback's rows), s_max <= 2^interp::m_max
     double line_tol = 1.5;       // levels
     unsigned line_m_max = 4;     // interp::m_min .. interp::m_max
 };
@@ -79,11 +79,12 @@ struct cell_plan {
     std::size_t fallback_rows = 0, fallback_exact = 0;  // s_min cells sent as row quadratics / exact
     std::size_t pixels = 0, pixels_cells = 0, pixels_lines = 0;  // covered; by cells and fallbacks; by lines
     std::size_t points_lines = 0;   // points the lines added
-    scene::op_counts decision;      // the cells' differences and compares, the segments' and lines' decisions
+    scene::op_counts decision;      // the cells' differences and compares; the segments' fold compares, charged by
+                                    // the cells and again by the lines, which each test them; the lines' estimates
 };
 
-// c: the segments' rules (depth_step, surface_breaks), and the lines' sample set and /3 mode; its
-// length and degree fields are not read. Throws scene::scene_error for an invalid configuration.
+// c: the segments' rules (depth_step, surface_breaks), the evaluator whose pixels the fallbacks'
+// checks read, and the lines' sample set and /3 mode; its length and degree fields are not read. Throws scene::scene_error for an invalid configuration.
 cell_plan make_cell_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                          const plan_config& c, const cell_config& t);
 

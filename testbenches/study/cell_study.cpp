@@ -25,6 +25,7 @@
 #include "testbenches/common/exit_status.h"
 #include "testbenches/options/tool_options.h"
 #include "cell_tree.h"
+#include "line_kinks.h"
 #include "golden_pipeline/cells.h"
 #include "study_frame.h"
 
@@ -51,10 +52,8 @@ cell_frame golden_cells(const study_frame& sf, const plan_config& cfg, const cel
     const cell_plan p = make_cell_plan(sf.r, sf.k, sf.dev, c, g);
     const frame fr = golden_cell_frame(p, sf.k, sf.dev, c);
     cell_frame f;
-    f.out.assign(fr.px.size(), rgb_levels{0.0, 0.0, 0.0});
+    f.out = levels_of(fr);
     f.point.assign(fr.px.size(), 0);
-    for (std::size_t i = 0; i < fr.px.size(); ++i)
-        for (int ch = 0; ch < 3; ++ch) f.out[i][ch] = double(fr.px[i][ch]) * pixel_fmt.lsb();
     for (const auto& q : p.points) f.point[sf.r.index(q[0], q[1])] = 1;
     f.order = p.points;
     f.sent = p.sent;
