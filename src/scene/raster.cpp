@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -37,6 +38,26 @@ bool pixel_range(double lo, double hi, unsigned n, int& first, int& last) {
 
 std::size_t rasterised::covered_pixels() const {
     return static_cast<std::size_t>(std::count_if(tri.begin(), tri.end(), [](int32_t t) { return t >= 0; }));
+}
+
+rasterised transposed(const rasterised& r) {
+    rasterised t;
+    t.src = r.src;
+    t.width = r.height;
+    t.height = r.width;
+    t.eye = r.eye;
+    t.view_dir = r.view_dir;
+    t.setups = r.setups;
+    for (triangle_setup& ts : t.setups)
+        for (glm::dvec3& g : ts.plane) std::swap(g.x, g.y);
+    t.depth.resize(r.depth.size());
+    t.tri.resize(r.tri.size());
+    for (unsigned y = 0; y < r.height; ++y)
+        for (unsigned x = 0; x < r.width; ++x) {
+            t.depth[t.index(y, x)] = r.depth[r.index(x, y)];
+            t.tri[t.index(y, x)] = r.tri[r.index(x, y)];
+        }
+    return t;
 }
 
 rasterised rasterise(const world& s) {

@@ -50,6 +50,12 @@ struct rasterised {
 // The scene must outlive the result (it points at it). Throws scene_error on an invalid scene.
 rasterised rasterise(const world& s);
 
+// The frame transposed: pixel (x, y) of the result is pixel (y, x) of r, its lines r's columns; each
+// set-up plane a x + b y + c becomes b x + a y + c. geometry_at(transposed(r), y, x) equals
+// geometry_at(r, x, y) bit for bit (the two products are added in the other order, which IEEE
+// addition does not see), so a planner written for raster lines runs down columns on it unchanged.
+rasterised transposed(const rasterised& r);
+
 // A maximal run of covered pixels [x_begin, x_end) on one raster line.
 struct span {
     unsigned x_begin, x_end;

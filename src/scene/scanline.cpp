@@ -44,20 +44,22 @@ void span_stepper::setup(int32_t t, op_counts* ops) {
     ++stats_.triangle_setups;
 }
 
-pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops) {
+pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops, bool down) {
     const int32_t t = r_.tri[r_.index(x, y)];
     if (!grad_[static_cast<std::size_t>(t)].ready) setup(t, ops);
     gradients& g = grad_[static_cast<std::size_t>(t)];
     auto c = [ops](double v) { return cnum(v, ops); };
     // Counted values start from the stored ones, charging `ops` from here on.
     auto rebind = [&c](cnum v) { return c(v.value()); };
-    if (t == tri_ && y == y_ && x > x_) {
-        // Step d pixels right: + d a per component (shift, or shift-and-add: popcount(d) adds).
-        const unsigned d = x - x_;
+    const bool across = t == tri_ && y == y_ && x > x_, below = down && t == tri_ && x == x_ && y > y_;
+    if (across || below) {
+        // Step d pixels right (+ d a per component) or d lines down (+ d b): a shift, or
+        // shift-and-add, popcount(d) adds.
+        const unsigned d = across ? x - x_ : y - y_;
         const unsigned ones = popcount(d);
         auto step = [&](cnum v, const plane3& pl) {
             if (ops) ops->add += ones - 1;
-            return rebind(v) + c(d * pl.a);
+            return rebind(v) + c(d * (across ? pl.a : pl.b));
         };
         for (int k = 0; k < 3; ++k) {
             cnum* un = k == 0 ? &un_.x : k == 1 ? &un_.y : &un_.z;

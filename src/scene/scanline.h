@@ -11,7 +11,8 @@
 //    rasteriser's plane of lambda_i / w_i (raster.h: its set-up, shared by every path, is not counted).
 //  - run start, where a point is not on the triangle of the point before it on the line (or lies
 //    left of it): every stepped component evaluated at the pixel centre, a x + b y + c (2 mul, 2 add).
-//  - step, to a point d pixels right of the point before on the same triangle: each component + d a;
+//  - step, to a point d pixels right of the point before on the same triangle: each component + d a
+//    (or, for a point read down a column, d lines below it: + d b);
 //    d a is a shift of the x gradient when d is a power of two, a shift-and-add network otherwise:
 //    popcount(d) adds per component.
 //  - edge walking (optional, `walk_edges`): a scan-line renderer's active-edge walker carries each
@@ -47,8 +48,10 @@ public:
     // walk_edges: run starts on a triangle already visited are walked to, not evaluated (above).
     explicit span_stepper(const rasterised& r, bool walk_edges = false);
     // The geometry at covered pixel (x, y), charged to `ops` (nullptr: uncounted). Points of one line
-    // in increasing x step; anything else starts a run.
-    pixel_geometry at(unsigned x, unsigned y, op_counts* ops);
+    // in increasing x step; anything else starts a run. With `down`, the point steps instead from the
+    // point before it when that lies above it in the same column on the same triangle: + d b per
+    // component, d lines down (the same adds, the other gradient; for runs read down a column).
+    pixel_geometry at(unsigned x, unsigned y, op_counts* ops, bool down = false);
     const stepping_stats& stats() const { return stats_; }
 
 private:

@@ -174,6 +174,29 @@ TEST(ScanlinePhong, SparseStepsCountedByHand) {
     EXPECT_EQ(st.stats().triangle_setups, 1u);
 }
 
+// Points read down a column (the cells' column runs): column 0 holds lines 0..6. Lines 0, 1, 3, 4
+// with `down`: set-up 27 mul 18 add, a run start at line 0 (6 mul 6 add), then steps of 1, 2 and 1
+// lines (+ d b: one add per component each, d = 2 a shift), 4 points x (12 mul, 7 add, 2 sqrt, 2 div):
+// mul 27 + 6 + 48 = 81, add 18 + 6 + 9 + 28 = 61, as the 4-pixel span across. Line 2 after them lies
+// above: a run start (18 mul, 13 add). Without `down` each of lines 1, 3, 4 is a run start too.
+TEST(ScanlinePhong, DownAColumnCountedByHand) {
+    const world s = one_triangle(false);
+    const rasterised r = rasterise(s);
+    auto column = [&r](span_stepper& st, std::initializer_list<unsigned> ys, bool down) {
+        op_counts ops;
+        for (unsigned y : ys) expect_same_geometry(st.at(0, y, &ops, down), geometry_at(r, 0, y, nullptr));
+        return ops;
+    };
+    span_stepper st(r);
+    EXPECT_EQ(column(st, {0, 1, 3, 4}, true), counts(81, 8, 8, 61));
+    EXPECT_EQ(column(st, {2}, true), counts(18, 2, 2, 13));
+    EXPECT_EQ(st.stats().steps, 3u);
+    EXPECT_EQ(st.stats().run_starts, 2u);
+    span_stepper across(r);
+    EXPECT_EQ(column(across, {0, 1, 3, 4}, false), counts(81 + 18, 8, 8, 61 - 9 + 18));
+    EXPECT_EQ(across.stats().run_starts, 4u);
+}
+
 // The whole single triangle through both references (28 pixels, 7 runs, 21 steps):
 //   scan-line geometry: mul 27 + 7 x 6 + 28 x 12 = 405, add 18 + 7 x 6 + 21 x 3 + 28 x 7 = 319,
 //                       sqrt 56, div 56 (517 long, 18.46 a pixel);
@@ -276,6 +299,32 @@ TEST(ScanlineEdgeWalk, SingleTriangleFrameCountedByHand) {
     EXPECT_EQ(a.geometry, counts(369, 56, 56, 328)) << a.geometry;
     EXPECT_EQ(a.shading, b.shading);
     EXPECT_LT(difference(ia, ib).worst, 1e-10);
+}
+
+// The transposed frame (a planner's lines run down the columns on it): on the head at 128 x 96
+// (perspective, non-square, so a swapped index shows), every pixel's triangle and depth at (y, x),
+// and geometry_at there the same values bit for bit: the planes' two products are added in the
+// other order, which IEEE addition does not see.
+TEST(ScanlineTransposed, HeadGeometryBitForBit) {
+    const world s = builtin_scene("head", SHADING_SOURCE_DIR, 128, 96);
+    const rasterised r = rasterise(s);
+    const rasterised t = transposed(r);
+    ASSERT_EQ(t.width, 96u);
+    ASSERT_EQ(t.height, 128u);
+    std::size_t covered = 0;
+    for (unsigned y = 0; y < r.height; ++y)
+        for (unsigned x = 0; x < r.width; ++x) {
+            ASSERT_EQ(t.tri[t.index(y, x)], r.tri[r.index(x, y)]);
+            ASSERT_EQ(t.depth[t.index(y, x)], r.depth[r.index(x, y)]);
+            if (!r.covered(x, y)) continue;
+            ++covered;
+            const pixel_geometry a = geometry_at(r, x, y, nullptr), b = geometry_at(t, y, x, nullptr);
+            auto same = [](const cvec3& u, const cvec3& w) {
+                return u.x.value() == w.x.value() && u.y.value() == w.y.value() && u.z.value() == w.z.value();
+            };
+            ASSERT_TRUE(same(a.n, b.n) && same(a.p, b.p) && same(a.v, b.v) && same(a.h[0], b.h[0])) << x << ", " << y;
+        }
+    EXPECT_GT(covered, 2000u);
 }
 
 // On the head (perspective: U_N, U_P and Q walked) the walked values still give the per-pixel
