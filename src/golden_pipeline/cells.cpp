@@ -78,7 +78,7 @@ private:
         for (const pixel& q : batch_) read(q[0], q[1]);
         batch_.clear();
     }
-    void read(unsigned x, unsigned y) {
+    void read(unsigned x, unsigned y, bool down = false) {
         const std::size_t i = idx(x, y);
         if (read_[i] || !r_.covered(x, y)) return;
         read_[i] = 1;
@@ -86,6 +86,7 @@ private:
         col_[i] = golden_sample(dev_, k_, smp_[i]);
         p_.points.push_back({x, y});
         p_.point_geometry.push_back(smp_[i]);
+        p_.point_down.push_back(down ? 1 : 0);
     }
     const rgb_codes& colour(unsigned x, unsigned y) const { return col_[idx(x, y)]; }
 
@@ -251,7 +252,8 @@ private:
         }
     }
 
-    // What no cell delivered: the adaptive length policy over the rest of each line.
+    // What no cell delivered: the adaptive length policy down the columns where their runs are the
+    // longer, then over the rest of each line.
     void lines() {
         plan_config lc = c_;
         lc.length = length_policy::adaptive;
@@ -264,15 +266,68 @@ private:
         lc.perfect_decisions = false;
         lc.above_slack = -1;
         lc.lit_guard = false;
-        const plan lp = make_plan(r_, k_, dev_, lc, taken_);
-        p_.decision += lp.decision;
         const std::size_t before = p_.points.size();
+        std::vector<uint8_t> rows_taken = taken_;
+        if (t_.column_ratio > 0.0) {
+            const std::vector<uint8_t> by_column = column_runs();
+            const scene::rasterised rt = scene::transposed(r_);
+            std::vector<uint8_t> others(rt.tri.size(), 1);  // the column planner's taken map
+            for (unsigned y = 0; y < H; ++y)
+                for (unsigned x = 0; x < W; ++x)
+                    if (by_column[idx(x, y)]) others[rt.index(y, x)] = 0;
+            const plan cp = make_plan(rt, k_, dev_, lc, others);
+            p_.decision += cp.decision;
+            for (const pixel& q : cp.points) read(q[1], q[0], true);
+            for (const interval_job& job : cp.jobs) {
+                p_.column_jobs.push_back(job);
+                p_.pixels_columns += job.len;
+                for (unsigned i = 0; i < job.len; ++i) rows_taken[idx(job.y, job.x0 + i)] = 1;
+            }
+        }
+        const plan lp = make_plan(r_, k_, dev_, lc, rows_taken);
+        p_.decision += lp.decision;
         for (const pixel& q : lp.points) read(q[0], q[1]);
         p_.points_lines = p_.points.size() - before;
         for (const interval_job& job : lp.jobs) {
             p_.jobs.push_back(job);
-            p_.pixels_lines += job.len;
+            p_.pixels_rows += job.len;
         }
+    }
+
+    // The pixels no cell took whose run of such pixels down their column (joined where a pixel is
+    // one surface with the one below) is at least 5 and column_ratio x their run along their row
+    // (within one segment): a strip beside a silhouette that runs down the frame is long one way and
+    // a pixel or two wide the other (counters and compares on the taken map, not counted).
+    std::vector<uint8_t> column_runs() const {
+        const std::size_t n = r_.tri.size();
+        auto rest = [&](unsigned x, unsigned y) { return r_.covered(x, y) && !taken_[idx(x, y)]; };
+        std::vector<unsigned> row_run(n, 0), col_run(n, 0);
+        for (unsigned y = 0; y < H; ++y)
+            for (unsigned x = 0; x < W;) {
+                if (!rest(x, y)) {
+                    ++x;
+                    continue;
+                }
+                unsigned e = x + 1;
+                while (e < W && rest(e, y) && seg_[idx(e, y)] == seg_[idx(x, y)]) ++e;
+                for (unsigned i = x; i < e; ++i) row_run[idx(i, y)] = e - x;
+                x = e;
+            }
+        for (unsigned x = 0; x < W; ++x)
+            for (unsigned y = 0; y < H;) {
+                if (!rest(x, y)) {
+                    ++y;
+                    continue;
+                }
+                unsigned e = y + 1;
+                while (e < H && rest(x, e) && down_[idx(x, e - 1)]) ++e;
+                for (unsigned i = y; i < e; ++i) col_run[idx(x, i)] = e - y;
+                y = e;
+            }
+        std::vector<uint8_t> out(n, 0);
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = col_run[i] >= 5 && double(col_run[i]) >= t_.column_ratio * double(row_run[i]);
+        return out;
     }
 
     const scene::rasterised& r_;
@@ -304,6 +359,7 @@ void validate(const cell_config& t) {
         fail("tolerances and factors must be positive");
     if (!(t.tol * t.d2_factor < 1e6) || !(t.tol * t.d3_factor < 1e6) || !(t.fallback_tol < 1e6))
         fail("tolerances must be below 1e6 levels");
+    if (!(t.column_ratio >= 0.0) || !(t.column_ratio < 1e6)) fail("column_ratio must be 0 (rows only) or positive, below 1e6");
     if (t.line_m_max < interp::m_min || t.line_m_max > interp::m_max)
         fail("line_m_max must be " + std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max) + " (got " +
              std::to_string(t.line_m_max) + ")");
@@ -376,6 +432,11 @@ frame golden_cell_frame(const cell_plan& p, const frame_constants& k, const scen
         for (unsigned i = 0; i < job.len; ++i)
             put(job.x0 + i, job.y, px[i], job.m == 0 ? 1 : (job.deg2 ? 2 : 3), uint8_t(job.m));
     }
+    for (const interval_job& job : p.column_jobs) {
+        const auto px = golden_interval(job, k, dev, c.eval, c.set, c.div);
+        for (unsigned i = 0; i < job.len; ++i)
+            put(job.y, job.x0 + i, px[i], job.m == 0 ? 1 : (job.deg2 ? 2 : 3), uint8_t(job.m));
+    }
     if (p.point_geometry.size() != p.points.size())
         throw scene::scene_error("golden_cell_frame: the plan lists " + std::to_string(p.points.size()) + " points and " +
                                  std::to_string(p.point_geometry.size()) + " geometries");
@@ -387,6 +448,8 @@ std::vector<interval_job> point_jobs(const cell_plan& p) {
     std::vector<uint8_t> in_job(std::size_t(p.width) * p.height, 0);
     for (const interval_job& job : p.jobs)
         for (unsigned i = 0; i < job.len; ++i) in_job.at(std::size_t(job.y) * p.width + job.x0 + i) = 1;
+    for (const interval_job& job : p.column_jobs)
+        for (unsigned i = 0; i < job.len; ++i) in_job.at(std::size_t(job.x0 + i) * p.width + job.y) = 1;
     std::vector<interval_job> out;
     for (std::size_t i = 0; i < p.points.size(); ++i) {
         const unsigned x = p.points[i][0], y = p.points[i][1];
@@ -402,20 +465,52 @@ std::vector<interval_job> point_jobs(const cell_plan& p) {
 
 plan pipeline_plan(const cell_plan& p) {
     plan out;
-    out.width = p.width;
-    out.height = p.height;
+    out.width = std::max(p.width, p.height);
+    out.height = p.height + p.width;
     out.jobs = p.jobs;
+    for (interval_job job : p.column_jobs) {
+        job.y += p.height;
+        out.jobs.push_back(job);
+    }
     const std::vector<interval_job> pts = point_jobs(p);
     out.jobs.insert(out.jobs.end(), pts.begin(), pts.end());
     for (const interval_job& job : out.jobs) out.pixels += job.len;
     return out;
 }
 
+frame cells_frame_of(const cell_plan& p, const frame& stacked) {
+    const unsigned sw = std::max(p.width, p.height), sh = p.height + p.width;
+    if (stacked.px.size() != std::size_t(sw) * sh || stacked.covered.size() != stacked.px.size() ||
+        stacked.degree.size() != stacked.px.size() || stacked.log2_len.size() != stacked.px.size() ||
+        stacked.zone.size() != stacked.px.size())
+        throw scene::scene_error("cells_frame_of: a frame of " + std::to_string(stacked.px.size()) + " pixels; " +
+                                 std::to_string(sw) + " x " + std::to_string(sh) + " expected");
+    frame f = empty_frame(p.width, p.height);
+    auto copy = [&](std::size_t from, unsigned x, unsigned y) {
+        if (!stacked.covered[from]) return;
+        const std::size_t i = std::size_t(y) * p.width + x;
+        if (f.covered[i])
+            throw scene::scene_error("cells_frame_of: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                     ") delivered along its row and down its column");
+        f.px[i] = stacked.px[from];
+        f.covered[i] = 1;
+        f.degree[i] = stacked.degree[from];
+        f.log2_len[i] = stacked.log2_len[from];
+        f.zone[i] = stacked.zone[from];
+    };
+    for (unsigned y = 0; y < p.height; ++y)
+        for (unsigned x = 0; x < p.width; ++x) {
+            copy(std::size_t(y) * sw + x, x, y);
+            copy(std::size_t(p.height + x) * sw + y, x, y);
+        }
+    return f;
+}
+
 cell_counts cell_ops(const scene::rasterised& r, const cell_plan& p, const scene::device_config& dev, unsigned n,
                      bool walk_edges, bool raster_order) {
     std::vector<std::array<unsigned, 2>> points = p.points;
     if (raster_order) std::sort(points.begin(), points.end(), raster_before);
-    const stepped_count g = stepped_geometry(r, points, walk_edges);
+    const stepped_count g = stepped_geometry(r, points, walk_edges, raster_order ? std::vector<uint8_t>{} : p.point_down);
     cell_counts out;
     out.geometry = g.ops;
     out.stepping = g.stats;

@@ -35,8 +35,12 @@ namespace shading::pipeline {
 //    (interval_job, m = 2), checked at (1, 1) and then (3, 3) against the colour there within
 //    floor(fallback_tol x 256) codes; where a check misses, its pixels are exact (m = 0 jobs);
 //  - the pixels no cell delivered (next to silhouettes, folds and segment ends, where a tile does not
-//    fit) by make_plan over the rest of each line (the taken map): adaptive length, cubic, split at
-//    the check, the exact fallback, length_tol = line_tol, m <= line_m_max.
+//    fit) by make_plan (the taken map): adaptive length, cubic, split at the check, the exact
+//    fallback, length_tol = line_tol, m <= line_m_max; first down the columns, over the pixels whose
+//    run of such pixels down their column (joined where a pixel is one surface with the one below)
+//    is at least 5 pixels and at least column_ratio x their run along their row (within one
+//    segment), by make_plan on the transposed frame (scene::transposed); then along the rows, over
+//    the rest of each line.
 struct cell_config {
     double tol = 0.9;            // levels
     double d2_factor = 8.0;
@@ -45,6 +49,7 @@ struct cell_config {
     unsigned s_max = 32, s_min = 4;  // powers of two, s_min = 4 (the fallback's rows), s_max <= 2^interp::m_max
     double line_tol = 1.5;       // levels
     unsigned line_m_max = 4;     // interp::m_min .. interp::m_max
+    double column_ratio = 1.0;   // >= 0; 0: no column runs, the rest along rows only
 };
 // Throws scene::scene_error naming what is wrong.
 void validate(const cell_config& t);
@@ -69,16 +74,22 @@ struct cell_job {
 struct cell_plan {
     unsigned width = 0, height = 0;
     std::vector<cell_job> cells;
-    // The s_min cells' fallbacks (row quadratics, exact pixels), then the other pixels' intervals.
+    // The s_min cells' fallbacks (row quadratics, exact pixels), then the rows' intervals.
     std::vector<interval_job> jobs;
+    // The columns' intervals, in the transposed frame: job.y is the column, job.x0 its first line,
+    // the pixels (job.y, job.x0 + i).
+    std::vector<interval_job> column_jobs;
     // Every pixel whose geometry and colour were formed, once, in the order the scheme reads them,
-    // and its geometry (what the sample stage is given there).
+    // and its geometry (what the sample stage is given there); point_down[i] where it was read down
+    // a column (the columns' runs: the geometry side steps it from the point above).
     std::vector<std::array<unsigned, 2>> points;
     std::vector<sample_geometry> point_geometry;
+    std::vector<uint8_t> point_down;
     std::vector<std::size_t> sent;   // cells sent by size: sent[k] of s_min << k pixels
     std::size_t fallback_rows = 0, fallback_exact = 0;  // s_min cells sent as row quadratics / exact
-    std::size_t pixels = 0, pixels_cells = 0, pixels_lines = 0;  // covered; by cells and fallbacks; by lines
-    std::size_t points_lines = 0;   // points the lines added
+    std::size_t pixels = 0, pixels_cells = 0;  // covered; by cells and fallbacks
+    std::size_t pixels_columns = 0, pixels_rows = 0;  // by the columns' and the rows' intervals
+    std::size_t points_lines = 0;   // points the columns and rows added
     scene::op_counts decision;      // the cells' differences and compares; the segments' fold compares, charged by
                                     // the cells and again by the lines, which each test them; the lines' estimates
 };
@@ -98,8 +109,8 @@ std::array<rgb_codes, 9> cell_lattice_colours(const cell_job& cell, const frame_
 // size outside 4 .. 2^interp::m_max or not a power of two.
 std::vector<rgb_codes> cell_pixels(const std::array<rgb_codes, 9>& lattice, unsigned s, evaluator e);
 
-// The frame the scheme delivers: cell_pixels for every cell, golden_interval for every job (c.eval,
-// c.set, c.div); degree 2 and log2_len log2 s on a cell's pixels. Then at every point inside a cell
+// The frame the scheme delivers: cell_pixels for every cell, golden_interval for every job and
+// column job (c.eval, c.set, c.div); degree 2 and log2_len log2 s on a cell's pixels. Then at every point inside a cell
 // the colour the sample stage formed there, as an exact pixel (point_jobs; degree 1): the biquadratic
 // only comes within a tolerance of it. Points inside an interval keep the interval's pixel, as the
 // shading pipeline delivers them.
@@ -108,12 +119,20 @@ frame golden_cell_frame(const cell_plan& p, const frame_constants& k, const scen
 // The exact pixels (m = 0 jobs) of the points no job covers, in the order read.
 std::vector<interval_job> point_jobs(const cell_plan& p);
 // What the shading pipeline (modules/pipeline/shading_pipeline.h) takes of the scheme: the plan's
-// jobs, then point_jobs. With the cells from the cell unit (modules/pipeline/cell_unit.h) first, its
-// frame buffer's content over theirs is golden_cell_frame.
+// jobs, its column jobs, then point_jobs. The pipeline interpolates along whatever run its job
+// describes; a column job's pixels go down the column. So the plan's frame is the cells' frame with
+// the transposed frame stacked below it (width max(W, H), height H + W): a column job's descriptor is
+// y = H + its column, x0 its first line, and cells_frame_of folds that part back. With the cells
+// from the cell unit (modules/pipeline/cell_unit.h) first, the pipeline's frame buffer, folded, over
+// theirs is golden_cell_frame.
 plan pipeline_plan(const cell_plan& p);
+// The W x H frame of a pipeline_plan's frame buffer (its stacked part transposed back). Throws
+// scene::scene_error for a frame of another size or a pixel delivered in both parts.
+frame cells_frame_of(const cell_plan& p, const frame& stacked);
 
 // The long operations' side of the count: each point's geometry stepped (stepped_geometry) in the
-// order read (or, with raster_order, line by line), and one colour formed at each (colour_sample_ops).
+// order read, the columns' points down their columns (or, with raster_order, line by line), and one
+// colour formed at each (colour_sample_ops).
 // The cells' evaluators are forward differences and their decisions adders and compares.
 struct cell_counts {
     scene::op_counts geometry, colours;

@@ -54,14 +54,18 @@ std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, u
 }
 
 stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
-                               bool walk_edges) {
+                               bool walk_edges, const std::vector<uint8_t>& down) {
+    if (!down.empty() && down.size() != points.size())
+        throw std::invalid_argument("stepped_geometry: " + std::to_string(down.size()) + " column flags for " +
+                                    std::to_string(points.size()) + " points");
     scene::span_stepper stepper(r, walk_edges);
     stepped_count out;
-    for (const auto& pt : points) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& pt = points[i];
         if (pt[0] >= r.width || pt[1] >= r.height || !r.covered(pt[0], pt[1]))
             throw std::invalid_argument("stepped_geometry: (" + std::to_string(pt[0]) + ", " + std::to_string(pt[1]) +
                                         ") is not a covered pixel");
-        line_geometry::charge_dots(stepper.at(pt[0], pt[1], &out.ops), &out.ops);
+        line_geometry::charge_dots(stepper.at(pt[0], pt[1], &out.ops, !down.empty() && down[i] != 0), &out.ops);
     }
     out.stats = stepper.stats();
     return out;

@@ -299,8 +299,9 @@ struct stepped_count {
     scene::op_counts ops;
     scene::stepping_stats stats;
 };
+// down: empty, or one flag a point, set where the point is read down a column (span_stepper::at).
 stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
-                               bool walk_edges);
+                               bool walk_edges, const std::vector<uint8_t>& down = {});
 
 // ---- Error measures over covered pixels and the three channels, in 8-bit units ----
 // Levels beyond which error_stats counts pixels: the NMSE and the largest error alone cannot say

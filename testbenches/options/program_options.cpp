@@ -404,8 +404,8 @@ std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o
     app.add_flag("--perfect-decisions", o.perfect_decisions,
                  "a yardstick: every cell and run decided on the true RMS error of what it sends, every point still read");
     app.add_flag("--golden", o.golden,
-                 "the bit-accurate cells (the sample stage's codes, forward differences, the rest by the planner along "
-                 "rows) instead of the real-valued emulation");
+                 "the bit-accurate cells (the sample stage's codes, forward differences, the rest by the planner down "
+                 "columns and along rows) instead of the real-valued emulation");
     SHADING_CLI_PARSE(app, argc, argv);
     if (o.golden && (o.perfect_decisions || o.cell_max > (1u << interp::m_max))) {
         std::fprintf(stderr, "cell_study: --golden takes no --perfect-decisions and cells of at most %u pixels\n",

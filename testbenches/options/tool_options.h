@@ -138,7 +138,7 @@ struct render_cells_options {
     unsigned size = 512;        // 16..1024
     std::vector<double> light;  // two values, -360..360 and -90..90
     unsigned n = 0;             // 0 or 1..1000
-    double tol = 0.9;           // 0.001..64
+    double tol = 0.89;          // 0.001..64: the head at 512's cheapest within interpolation NMSE 1e-5
     bool walk_edges = false;
 };
 

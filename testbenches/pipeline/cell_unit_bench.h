@@ -204,8 +204,11 @@ inline cells_run simulate_cells(const scene::rasterised& r, const pipeline::cell
     uint64_t clocks = 100;
     for (const cell_input& ci : cells) clocks += 2 * ((1ull << (2 * ci.m)) + (1ull << ci.m) + 16);
     auto* unit = new cell_unit_bench("cells", cells, r.width, r.height);  // elaborated with the pipeline's
-    const pipeline::sim_result res = pipeline::simulate_frame(pipeline::pipeline_plan(p), k, dev, c);
-    if (!unit->finished()) sc_core::sc_start(cell_period() * double(clocks));
+    // The pipeline's bench stops the simulation: not before the cell unit has finished too.
+    pipeline::sim_options o;
+    o.others_done = [unit] { return unit->finished(); };
+    o.at_least_ns = cell_period().to_seconds() * 1e9 * double(clocks);
+    const pipeline::sim_result res = pipeline::simulate_frame(pipeline::pipeline_plan(p), k, dev, c, o);
     cells_run out;
     out.finished = unit->finished();
     out.unit_mismatches = unit->checker.mismatches() + unit->checker.not_once(unit->fb) + unit->checker.stray();
@@ -213,18 +216,19 @@ inline cells_run simulate_cells(const scene::rasterised& r, const pipeline::cell
     out.unit_clocks = unit->checker.last_edge();
     out.pipeline_clocks = res.clocks;
     const pipeline::frame g = pipeline::golden_cell_frame(p, k, dev, c);
+    const pipeline::frame piped = pipeline::cells_frame_of(p, res.f);  // the column jobs' part folded back
     out.f = g;
     for (unsigned y = 0; y < r.height; ++y)
         for (unsigned x = 0; x < r.width; ++x) {
             const std::size_t at = r.index(x, y);
-            const bool by_unit = unit->fb.written(x, y) != 0, by_pipe = res.f.covered[at] != 0;
+            const bool by_unit = unit->fb.written(x, y) != 0, by_pipe = piped.covered[at] != 0;
             if (!r.covered(x, y)) {
                 out.stray += by_unit || by_pipe;
                 continue;
             }
             pipeline::rgb_codes v{};
             if (by_pipe) {
-                v = res.f.px[at];
+                v = piped.px[at];
             } else if (by_unit) {
                 const auto& u = unit->fb.pixel(x, y);
                 v = {u[0], u[1], u[2]};

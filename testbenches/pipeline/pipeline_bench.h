@@ -269,11 +269,13 @@ public:
     geometry_source src;
     pipeline_checker checker;
 
+    // others_done (empty: none): a unit run beside the pipeline in the same simulation, which the
+    // source waits for too before it stops the simulation.
     pipeline_bench(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
                    const scene::device_config& dev, const plan_config& c, const typename AGen::config& gen,
-                   std::function<void(std::size_t, std::size_t)> progress)
+                   std::function<void(std::size_t, std::size_t)> progress, std::function<bool()> others_done = {})
         : sc_module(name), dut(make_dut("dut", dev, gen, c)), fb("fb", p.width, p.height),
-          src("src", p, k, [this] { return dut.idle(); }),
+          src("src", p, k, [this, others_done] { return dut.idle() && (!others_done || others_done()); }),
           checker(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
         bind_pipeline_inputs(dut, *this);
         dut.ready(ready);

@@ -27,6 +27,11 @@ struct sim_options {
     // sim_result::write_order is filled (8 bytes per write); off for long runs (soak_pipeline),
     // whose memory would otherwise grow with the log.
     bool keep_write_order = true;
+    // A unit simulated beside the pipeline (the cell unit, cell_unit_bench.h): the simulation stops
+    // when the pipeline has drained and others_done() holds, and the watchdog allows at least
+    // at_least_ns.
+    std::function<bool()> others_done;
+    double at_least_ns = 0.0;
 };
 
 struct sim_result {

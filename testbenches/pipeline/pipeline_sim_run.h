@@ -43,7 +43,7 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
     sim_result res;
     res.period_ns = pipeline_period().to_seconds() * 1e9;
     res.f = empty_frame(p.width, p.height);
-    auto bench = std::make_unique<pipeline_bench<AGen, EVAL, FAST>>("tb", p, k, dev, c, gen, o.progress);
+    auto bench = std::make_unique<pipeline_bench<AGen, EVAL, FAST>>("tb", p, k, dev, c, gen, o.progress, o.others_done);
     bench->checker.inject_mismatch(o.inject_mismatch);
     bench->checker.keep_order(o.keep_write_order);
     std::unique_ptr<vcd_file> vcd;
@@ -60,7 +60,7 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
     }
     const auto t0 = std::chrono::steady_clock::now();
     const double c0 = cpu_seconds();
-    sc_core::sc_start(time_limit(p));
+    sc_core::sc_start(std::max(time_limit(p), sc_core::sc_time(o.at_least_ns, sc_core::SC_NS)));
     res.cpu_seconds = cpu_seconds() - c0;
     res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!bench->finished()) {

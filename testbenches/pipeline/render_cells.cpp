@@ -5,7 +5,7 @@
 // against per-pixel shading through the device and the largest error, and the long operations a
 // pixel counted as cell_study counts them (the points' geometry stepped in the order read, a colour
 // at each) against the scan-line Phong. Exit 0 when the SystemC frame is the golden one, 1 if not.
-//   build/bin/render_cells                       (the head at 512, T = 0.9; about 10 s)
+//   build/bin/render_cells                       (the head at 512, T = 0.89; about 4 s)
 //   build/bin/render_cells --walk-edges
 //   build/bin/render_cells --size 96 --scene torus --tol 2
 #include <algorithm>
@@ -49,9 +49,10 @@ int sc_main(int argc, char* argv[]) {
                     o.size, o.device.c_str(), sf.k.n, o.tol, o.walk_edges ? "walked" : "not walked");
         std::printf("Sent: %zu cells (", p.cells.size());
         for (std::size_t s = 0; s < p.sent.size(); ++s) std::printf("%s%zu of %u", s ? ", " : "", p.sent[s], t.s_min << s);
-        std::printf("), %zu smallest as row quadratics and %zu exact; %zu pixels by cells, %zu by the lines; "
-                    "%.4f points a pixel.\n",
-                    p.fallback_rows, p.fallback_exact, p.pixels_cells, p.pixels_lines, double(p.points.size()) / px);
+        std::printf("), %zu smallest as row quadratics and %zu exact; %zu pixels by cells, %zu down columns, %zu "
+                    "along rows; %.4f points a pixel.\n",
+                    p.fallback_rows, p.fallback_exact, p.pixels_cells, p.pixels_columns, p.pixels_rows,
+                    double(p.points.size()) / px);
         std::printf("SystemC: the cell unit %llu clocks, the shading pipeline %llu clocks (%zu jobs); the frame %s the "
                     "golden model's (%zu pixels differ, %zu stray; the benches' checkers %zu and %zu).\n",
                     static_cast<unsigned long long>(run.unit_clocks), static_cast<unsigned long long>(run.pipeline_clocks),

@@ -20,6 +20,7 @@
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
 #include "testbenches/common/vcd_names.h"
+#include "testbenches/study/flat_square.h"
 
 namespace {
 
@@ -155,6 +156,32 @@ TEST(CellUnit, HeadFrameEndToEnd) {
     EXPECT_EQ(run.stray, 0u);
     EXPECT_GT(run.unit_clocks, 0u);
     EXPECT_GT(run.pipeline_clocks, 0u);
+}
+
+// The flat square at 65: four 32-pixel cells, each s^2 + s + 3 clocks and one of handshake,
+// 4 x (1024 + 32 + 4) = 4240 clocks, while the pipeline's part (column 64 down the column, row 64
+// along it, 129 pixels) is done long before: the pipeline's bench must not stop the simulation
+// until the cell unit has finished. The frame, one colour, is per-pixel shading's.
+TEST(CellUnit, FlatSquareUnitOutlastsThePipeline) {
+    const scene::rasterised r = study::flat_square(65);
+    const frame_constants k = frame_constants_of(*r.src);
+    scene::device_config dev;
+    dev.device = scene::parse_device("squared");
+    plan_config c;
+    c.eval = evaluator::fd;
+    c.length = length_policy::adaptive;
+    const cell_plan p = make_cell_plan(r, k, dev, c, cell_config{});
+    ASSERT_EQ(p.cells.size(), 4u);
+    ASSERT_EQ(p.pixels_columns, 65u);
+    const tb::cells_run run = tb::simulate_cells(r, p, k, dev, c);
+    EXPECT_TRUE(run.finished);
+    EXPECT_EQ(run.unit_clocks, 4240u);
+    EXPECT_LT(run.pipeline_clocks, 1000u);
+    EXPECT_EQ(run.unit_mismatches, 0u);
+    EXPECT_EQ(run.pipeline_mismatches, 0u);
+    EXPECT_EQ(run.differ, 0u);
+    EXPECT_EQ(run.stray, 0u);
+    EXPECT_EQ(run.f.px, per_pixel_frame(r, k, dev).px);
 }
 
 // m = 7 is no cell size: reported (shading/input) and taken as 2^6; the cell is still delivered.

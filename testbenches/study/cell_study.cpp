@@ -12,7 +12,7 @@
 //  - the cheapest meeting --nmse, counted in the scheme's order;
 //  - with --perfect-decisions, a yardstick: every decision on the true error of what it sends;
 //  - with --golden, the bit-accurate cells (src/golden_pipeline/cells.h) instead of the emulation:
-//    the sample stage's codes, forward differences, the rest by the planner along rows.
+//    the sample stage's codes, forward differences, the rest by the planner down columns and along rows.
 //   build/bin/cell_study                  (under 1 s at 512)
 //   build/bin/cell_study --size 48 --tol 1,2
 #include <algorithm>
@@ -36,7 +36,7 @@ using namespace shading::study;
 namespace {
 
 // The bit-accurate cells (src/golden_pipeline/cells.h) in the emulation's terms: their frame in
-// levels, their points in the order read; the lines run along rows only, by the planner.
+// levels, their points in the order read (the columns' stepped down their columns).
 cell_frame golden_cells(const study_frame& sf, const plan_config& cfg, const cell_tree_config& t) {
     cell_config g;
     g.tol = t.tol;
@@ -47,6 +47,7 @@ cell_frame golden_cells(const study_frame& sf, const plan_config& cfg, const cel
     g.s_min = t.s_min;
     g.line_tol = t.line_tol;
     g.line_m_max = t.line_m_max;
+    g.column_ratio = t.column_ratio;
     plan_config c = cfg;
     c.eval = evaluator::fd;
     const cell_plan p = make_cell_plan(sf.r, sf.k, sf.dev, c, g);
@@ -61,7 +62,9 @@ cell_frame golden_cells(const study_frame& sf, const plan_config& cfg, const cel
     f.fallback_exact = p.fallback_exact;
     f.pixels = p.pixels;
     f.pixels_cells = p.pixels_cells;
-    f.pixels_rows = p.pixels_lines;
+    f.pixels_columns = p.pixels_columns;
+    f.pixels_rows = p.pixels_rows;
+    f.order_down = p.point_down;
     f.points_lines = p.points_lines;
     for (std::size_t i = 0; i < fr.px.size(); ++i) {
         if (sf.r.tri[i] < 0) continue;

@@ -352,7 +352,7 @@ emulated_cost cell_long_ops(const scene::rasterised& r, const cell_frame& f, con
     if (f.point.size() != r.tri.size()) throw std::invalid_argument("cell_long_ops: the frame and raster differ in size");
     std::vector<std::array<unsigned, 2>> points = f.order;
     if (raster_order) std::sort(points.begin(), points.end(), raster_before);
-    return points_cost(r, points, dev, n, walk_edges);
+    return points_cost(r, points, dev, n, walk_edges, raster_order ? std::vector<uint8_t>{} : f.order_down);
 }
 
 }  // namespace shading::study

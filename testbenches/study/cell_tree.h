@@ -69,6 +69,7 @@ struct cell_frame {
     std::vector<rgb_levels> out;
     std::vector<uint8_t> point;                 // per pixel (row-major): 1 where the scheme read the colour
     std::vector<std::array<unsigned, 2>> order;  // {x, y} of every point, in the order the scheme reads them
+    std::vector<uint8_t> order_down;  // empty, or per point of order: stepped down its column (the bit-accurate cells')
     // Cells sent as biquadratics, by size: sent[k] cells of s_min << k pixels.
     std::vector<std::size_t> sent;
     std::size_t fallback_rows = 0, fallback_exact = 0;  // s_min cells sent as row quadratics / read exact

@@ -1,6 +1,8 @@
 // A flat square seen square-on by an orthographic camera, for the cells' tests: every pixel of the
 // size x size frame covered, one segment a line, one patch throughout; lit along its normal, so every
-// pixel's N.H and N.L, and its colour, are the same.
+// pixel's N.H and N.L, and its colour, are the same. flat_strip: the same square narrowed to the
+// middle column of an odd size (pixel centres 2 / size apart, the middle one at x = 0; the strip
+// spans x = -+1 / size), so each line holds one pixel.
 #pragma once
 
 #include <deque>
@@ -9,14 +11,15 @@
 
 namespace shading::study {
 
-inline scene::rasterised flat_square(unsigned size) {
+inline scene::rasterised flat_rectangle(unsigned size, double half_width) {
     scene::world w;
     w.name = "flat";
     w.cam.fov_y_deg = 0.0;  // orthographic
     w.cam.ortho_height = 2.0;
     w.cam.width = w.cam.height = size;
     scene::mesh m;
-    m.positions = {{-1.5, -1.5, 0.0}, {1.5, -1.5, 0.0}, {1.5, 1.5, 0.0}, {-1.5, 1.5, 0.0}};
+    const double hw = half_width;
+    m.positions = {{-hw, -1.5, 0.0}, {hw, -1.5, 0.0}, {hw, 1.5, 0.0}, {-hw, 1.5, 0.0}};
     m.normals = {{0.0, 0.0, 1.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, 1.0}};
     m.triangles = {{0, 1, 2}, {0, 2, 3}};
     w.objects.push_back({"square", m, scene::material{}});
@@ -25,5 +28,8 @@ inline scene::rasterised flat_square(unsigned size) {
     keep.push_back(w);
     return scene::rasterise(keep.back());
 }
+
+inline scene::rasterised flat_square(unsigned size) { return flat_rectangle(size, 1.5); }
+inline scene::rasterised flat_strip(unsigned size) { return flat_rectangle(size, 1.0 / double(size)); }
 
 }  // namespace shading::study

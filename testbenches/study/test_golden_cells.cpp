@@ -103,30 +103,55 @@ std::vector<unsigned> deliveries(const cell_plan& p) {
             for (unsigned x = c.x0; x < c.x0 + c.s; ++x) ++n[std::size_t(y) * p.width + x];
     for (const interval_job& j : p.jobs)
         for (unsigned i = 0; i < j.len; ++i) ++n[std::size_t(j.y) * p.width + j.x0 + i];
+    for (const interval_job& j : p.column_jobs)
+        for (unsigned i = 0; i < j.len; ++i) ++n[std::size_t(j.x0 + i) * p.width + j.y];
     return n;
 }
 
 // The flat square at 65 x 65, one colour throughout: the four 32-pixel tiles whose closed boxes end
 // at pixel 64 are whole and sent (second differences 0), reading the lattice {0, 16, 32, 48, 64}^2
-// (25 points). Column 64 and row 64 are no cell's and go to the planner along rows: row 64 is one
+// (25 points). Column 64 and row 64 are no cell's. Along rows only (column_ratio 0): row 64 is one
 // segment of 65 pixels, four 16-pixel intervals read at 0, 4, 8, 16 and checked at 12 (every fourth
 // pixel, 17 points, 5 of them the lattice's), and each pixel of column 64 above it is a run of one,
-// an exact pixel (64 points, 4 of them the lattice's): 25 + 12 + 60 = 97 points. The frame is
-// per-pixel shading's, code for code.
+// an exact pixel (64 points, 4 of them the lattice's): 25 + 12 + 60 = 97 points. With the columns,
+// column 64's 65 pixels run down the column (65 against a run of 1 along each row, and 65 against
+// row 64's 65 at the corner): read every fourth line as row 64 was, 12 points beside the lattice's,
+// and row 64 keeps pixels 0..63 for the rows. Either way the frame is per-pixel shading's, code for
+// code.
 TEST(GoldenCells, FlatSquareHandCounted) {
     const scene::rasterised r = study::flat_square(65);
     const frame_constants k = frame_constants_of(*r.src);
     scene::device_config dev;
     dev.device = scene::parse_device("squared");
-    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, cell_config{});
+    cell_config rows_only;
+    rows_only.column_ratio = 0.0;
+    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, rows_only);
     ASSERT_EQ(p.sent.size(), 4u);
     EXPECT_EQ(p.sent[3], 4u);
     EXPECT_EQ(p.sent[0] + p.sent[1] + p.sent[2], 0u);
     EXPECT_EQ(p.pixels, 65u * 65u);
     EXPECT_EQ(p.pixels_cells, 64u * 64u);
-    EXPECT_EQ(p.pixels_lines, 129u);
+    EXPECT_EQ(p.pixels_columns, 0u);
+    EXPECT_EQ(p.pixels_rows, 129u);
     EXPECT_EQ(p.points.size(), 97u);
     EXPECT_EQ(p.points_lines, 72u);
+    EXPECT_TRUE(p.column_jobs.empty());
+
+    const cell_plan q = make_cell_plan(r, k, dev, plan_config{}, cell_config{});
+    EXPECT_EQ(q.sent, p.sent);
+    EXPECT_EQ(q.pixels_columns, 65u);
+    EXPECT_EQ(q.pixels_rows, 64u);
+    for (const interval_job& j : q.column_jobs) EXPECT_EQ(j.y, 64u);  // the column, in the transposed frame
+    std::size_t down = 0;
+    for (std::size_t i = 0; i < q.points.size(); ++i)
+        if (q.point_down[i]) {
+            EXPECT_EQ(q.points[i][0], 64u);
+            EXPECT_EQ(q.points[i][1] % 4, 0u);
+            ++down;
+        }
+    EXPECT_EQ(down, 12u);
+    for (unsigned v : deliveries(q)) EXPECT_EQ(v, 1u);
+    EXPECT_EQ(golden_cell_frame(q, k, dev, plan_config{}).px, per_pixel_frame(r, k, dev).px);
     for (unsigned v : deliveries(p)) EXPECT_EQ(v, 1u);
     plan_config fd;
     fd.eval = evaluator::fd;
@@ -134,6 +159,59 @@ TEST(GoldenCells, FlatSquareHandCounted) {
     const frame ref = per_pixel_frame(r, k, dev);
     EXPECT_EQ(f.px, ref.px);
     EXPECT_EQ(f.covered, ref.covered);
+}
+
+// A flat strip one pixel wide, column 32 of a 65 x 65 frame: no cell fits. Along rows only each line
+// is a run of one, an exact pixel: 65 points. Down the column it is one segment of 65 pixels, read
+// every fourth line as the flat square's row 64 (0, 4, 8, 16 and the check at 12 in each 16-pixel
+// interval): 17 points, each stepped from the one above where both lie on one triangle. The strip's
+// two triangles meet on its diagonal, so 2 set-ups and 2 run starts. Counted (orthographic,
+// directional light: only U_N is stepped): set-up 3 components x 3 coefficients x 3 mul = 27 mul a
+// triangle; run start 3 x 2 mul; a point 12 mul (normalise N and H), 2 div, 2 sqrt and the dot
+// products N.L and N.H, 6 mul: 2 x 27 + 2 x 6 + 17 x 18 = 372 mul, 34 div, 34 sqrt. Not stepped down
+// (every point a run start): 15 x 6 = 90 mul more.
+TEST(GoldenCells, FlatStripDownItsColumn) {
+    const scene::rasterised r = study::flat_strip(65);
+    ASSERT_EQ(r.covered_pixels(), 65u);
+    for (unsigned y = 0; y < 65; ++y) ASSERT_TRUE(r.covered(32, y));
+    const frame_constants k = frame_constants_of(*r.src);
+    scene::device_config dev;
+    dev.device = scene::parse_device("squared");
+    cell_config rows_only;
+    rows_only.column_ratio = 0.0;
+    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, rows_only);
+    EXPECT_TRUE(p.cells.empty());
+    EXPECT_EQ(p.pixels_rows, 65u);
+    EXPECT_EQ(p.points.size(), 65u);
+
+    const cell_plan q = make_cell_plan(r, k, dev, plan_config{}, cell_config{});
+    EXPECT_TRUE(q.cells.empty());
+    EXPECT_TRUE(q.jobs.empty());
+    EXPECT_EQ(q.pixels_columns, 65u);
+    EXPECT_EQ(q.pixels_rows, 0u);
+    ASSERT_EQ(q.points.size(), 17u);
+    EXPECT_EQ(q.points_lines, 17u);
+    for (std::size_t i = 0; i < q.points.size(); ++i) {
+        EXPECT_EQ(q.points[i][0], 32u);
+        EXPECT_EQ(q.points[i][1], 4 * i);
+        EXPECT_EQ(q.point_down[i], 1u);
+    }
+    for (unsigned v : deliveries(q)) EXPECT_LE(v, 1u);
+    EXPECT_EQ(deliveries(q)[r.index(32, 64)], 1u);
+    const frame f = golden_cell_frame(q, k, dev, plan_config{});
+    EXPECT_EQ(f.px, per_pixel_frame(r, k, dev).px);
+    EXPECT_EQ(f.covered, per_pixel_frame(r, k, dev).covered);
+
+    const cell_counts n = cell_ops(r, q, dev, k.n, false);
+    EXPECT_EQ(n.stepping.triangle_setups, 2u);
+    EXPECT_EQ(n.stepping.run_starts, 2u);
+    EXPECT_EQ(n.stepping.steps, 15u);
+    EXPECT_EQ(n.geometry.mul, 372u);
+    EXPECT_EQ(n.geometry.div, 34u);
+    EXPECT_EQ(n.geometry.sqrt, 34u);
+    const stepped_count across = stepped_geometry(r, q.points, false);  // no column flags
+    EXPECT_EQ(across.ops.mul, 372u + 90u);
+    EXPECT_EQ(across.stats.run_starts, 17u);
 }
 
 bool same_jobs(const std::vector<interval_job>& a, const std::vector<interval_job>& b) {
@@ -193,7 +271,8 @@ TEST_F(GoldenCellsHead, PlannerLeavesTakenPixels) {
 
 // The cells decide on the sample stage's codes with integer limits; the emulation on the same colours
 // in levels with real-valued ones: the same cells are sent. The fallbacks' row quadratics are fixed
-// point here, so their checks may differ a little; the lines run along rows only here.
+// point here, so their checks may differ a little, and the rest goes to the planner, not to the
+// emulated policy.
 TEST_F(GoldenCellsHead, SameCellsAsTheEmulation) {
     for (double tol : {0.5, 0.9, 2.0}) {
         const cell_plan p = make_cell_plan(r, head.k, head.dev, cfg(), at(tol));
@@ -207,18 +286,21 @@ TEST_F(GoldenCellsHead, SameCellsAsTheEmulation) {
     }
 }
 
-// On the head at 512 at T = 0.9: every covered pixel delivered once; the points distinct and
+// On the head at 512 at T = 0.89: every covered pixel delivered once; the points distinct and
 // covered, those inside cells per-pixel shading's colour there (and no other point outside a job);
 // the pipeline's part is the jobs and those points; the bookkeeping adds up; against per-pixel
 // shading through the device the NMSE is within the target's 1e-5; counted with edges walked (where
 // the order is free) the long operations are at least 3x fewer than the scan-line Phong's.
 TEST_F(GoldenCellsHead, FrameAndTarget) {
-    const cell_plan p = make_cell_plan(r, head.k, head.dev, cfg(), at(0.9));
+    const cell_plan p = make_cell_plan(r, head.k, head.dev, cfg(), at(0.89));
     const std::vector<unsigned> n = deliveries(p);
     for (std::size_t i = 0; i < n.size(); ++i) ASSERT_EQ(n[i], r.tri[i] >= 0 ? 1u : 0u) << i;
     for (const interval_job& j : p.jobs) EXPECT_TRUE(interval_valid(j));
+    for (const interval_job& j : p.column_jobs) EXPECT_TRUE(interval_valid(j));
     EXPECT_EQ(p.pixels, head.pixels);
-    EXPECT_EQ(p.pixels_cells + p.pixels_lines, p.pixels);
+    EXPECT_EQ(p.pixels_cells + p.pixels_columns + p.pixels_rows, p.pixels);
+    EXPECT_GT(p.pixels_columns, 1000u);  // the strips beside the silhouette
+    EXPECT_EQ(p.point_down.size(), p.points.size());
     std::set<std::pair<unsigned, unsigned>> once;
     for (const auto& q : p.points) {
         ASSERT_TRUE(r.covered(q[0], q[1]));
@@ -238,7 +320,18 @@ TEST_F(GoldenCellsHead, FrameAndTarget) {
         }
     EXPECT_EQ(point_jobs(p).size(), cell_points);  // the points no job covers are the cells' own
     const plan pp = pipeline_plan(p);
-    EXPECT_EQ(pp.jobs.size(), p.jobs.size() + cell_points);
+    EXPECT_EQ(pp.jobs.size(), p.jobs.size() + p.column_jobs.size() + cell_points);
+    EXPECT_EQ(pp.width, 512u);
+    EXPECT_EQ(pp.height, 1024u);
+    // Its frame buffer, the stacked part folded back, is the scheme's frame but for the cells' pixels
+    // that are no point (the cell unit's).
+    std::vector<uint8_t> pointed(r.tri.size(), 0);
+    for (const interval_job& j : point_jobs(p)) pointed[r.index(j.x0, j.y)] = 1;
+    frame piped = f;
+    for (std::size_t i = 0; i < piped.px.size(); ++i)
+        if (in_cell[i] && !pointed[i]) piped.px[i] = rgb_codes{};
+    EXPECT_EQ(cells_frame_of(p, golden_frame(pp, head.k, head.dev, cfg())).px, piped.px);
+    EXPECT_THROW(cells_frame_of(p, f), scene::scene_error);  // a frame of the wrong size
     const std::size_t cell_pixels_total = std::size_t(std::count(in_cell.begin(), in_cell.end(), uint8_t(1)));
     EXPECT_EQ(pp.pixels, p.pixels - cell_pixels_total + cell_points);
     EXPECT_EQ(f.covered, head.per_pixel.covered);
@@ -268,6 +361,9 @@ TEST(GoldenCells, BadInputRefused) {
     EXPECT_THROW(validate(with([](auto& t) { t.tol = 0.0; })), scene::scene_error);
     EXPECT_THROW(validate(with([](auto& t) { t.d2_factor = std::nan(""); })), scene::scene_error);
     EXPECT_THROW(validate(with([](auto& t) { t.line_m_max = 7; })), scene::scene_error);
+    EXPECT_THROW(validate(with([](auto& t) { t.column_ratio = -1.0; })), scene::scene_error);
+    EXPECT_THROW(validate(with([](auto& t) { t.column_ratio = std::nan(""); })), scene::scene_error);
+    EXPECT_NO_THROW(validate(with([](auto& t) { t.column_ratio = 0.0; })));
     EXPECT_THROW(cell_pixels({}, 3, evaluator::fd), scene::scene_error);
     EXPECT_THROW(cell_pixels({}, 128, evaluator::fd), scene::scene_error);
     EXPECT_TRUE(quadratic_pixels({}, 0, 1, evaluator::fd).empty());

@@ -216,8 +216,9 @@ emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame
 }
 
 emulated_cost points_cost(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
-                          const scene::device_config& dev, unsigned n, bool walk_edges) {
-    const pipeline::stepped_count g = pipeline::stepped_geometry(r, points, walk_edges);
+                          const scene::device_config& dev, unsigned n, bool walk_edges,
+                          const std::vector<uint8_t>& down) {
+    const pipeline::stepped_count g = pipeline::stepped_geometry(r, points, walk_edges, down);
     emulated_cost c;
     c.geometry = g.ops;
     c.stepping = g.stats;

@@ -93,9 +93,11 @@ struct emulated_cost {
     double long_ops() const { return double(geometry.long_ops() + colours.long_ops()); }
 };
 std::vector<std::array<unsigned, 2>> points_in_order(const emulated_frame& f, unsigned width);
-// Points {x, y} taken in this order, counted so: stepped_geometry and a colour at each.
+// Points {x, y} taken in this order, counted so: stepped_geometry (down: its column flags) and a
+// colour at each.
 emulated_cost points_cost(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
-                          const scene::device_config& dev, unsigned n, bool walk_edges);
+                          const scene::device_config& dev, unsigned n, bool walk_edges,
+                          const std::vector<uint8_t>& down = {});
 emulated_cost emulated_long_ops(const scene::rasterised& r, const emulated_frame& f, const scene::device_config& dev,
                                 unsigned n, bool walk_edges);
 
