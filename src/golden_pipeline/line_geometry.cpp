@@ -71,4 +71,29 @@ stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std
     return out;
 }
 
+std::size_t walker_live_triangles(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points) {
+    std::vector<std::size_t> last(r.setups.size(), 0);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& pt = points[i];
+        if (pt[0] >= r.width || pt[1] >= r.height || !r.covered(pt[0], pt[1]))
+            throw std::invalid_argument("walker_live_triangles: (" + std::to_string(pt[0]) + ", " +
+                                        std::to_string(pt[1]) + ") is not a covered pixel");
+        last[static_cast<std::size_t>(r.tri[r.index(pt[0], pt[1])])] = i;
+    }
+    std::vector<uint8_t> open(r.setups.size(), 0);
+    std::size_t live = 0, most = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::size_t t = static_cast<std::size_t>(r.tri[r.index(points[i][0], points[i][1])]);
+        if (!open[t]) {
+            open[t] = 1;
+            most = std::max(most, ++live);
+        }
+        if (last[t] == i) {
+            open[t] = 0;
+            --live;
+        }
+    }
+    return most;
+}
+
 }  // namespace shading::pipeline

@@ -302,6 +302,9 @@ struct stepped_count {
 // down: empty, or one flag a point, set where the point is read down a column (span_stepper::at).
 stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
                                bool walk_edges, const std::vector<uint8_t>& down = {});
+// What an edge walker must store for these points in this order: the most triangles whose stepped
+// values it holds at once, each from its first point to its last (the points must be covered pixels).
+std::size_t walker_live_triangles(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points);
 
 // ---- Error measures over covered pixels and the three channels, in 8-bit units ----
 // Levels beyond which error_stats counts pixels: the NMSE and the largest error alone cannot say

@@ -9,9 +9,11 @@
 //   build/bin/render_cells --walk-edges
 //   build/bin/render_cells --size 96 --scene torus --tol 2
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <vector>
 
 #include "cell_unit_bench.h"
 #include "testbenches/study/study_frame.h"
@@ -65,6 +67,15 @@ int sc_main(int argc, char* argv[]) {
                     "%.2fx the from-scratch Phong's %.2f.\n",
                     ops, double(n.geometry.long_ops()) / px, double(n.colours.long_ops()) / px, sf.scanline / ops,
                     sf.scanline, sf.phong / ops, sf.phong);
+        if (o.walk_edges) {
+            std::vector<std::array<unsigned, 2>> every;  // the scan-line Phong's points, in raster order
+            for (unsigned y = 0; y < sf.r.height; ++y)
+                for (unsigned x = 0; x < sf.r.width; ++x)
+                    if (sf.r.covered(x, y)) every.push_back({x, y});
+            std::printf("The edge walker holds at most %zu triangles' stepped values at once in the order read (the "
+                        "scan-line Phong's %zu).\n",
+                        walker_live_triangles(sf.r, p.points), walker_live_triangles(sf.r, every));
+        }
         return exact ? tb::exit_success : tb::exit_failure;
     } catch (const std::exception& ex) {
         std::fprintf(stderr, "render_cells: %s\n", ex.what());

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 #include "golden_pipeline/cells.h"
@@ -212,6 +213,11 @@ TEST(GoldenCells, FlatStripDownItsColumn) {
     const stepped_count across = stepped_geometry(r, q.points, false);  // no column flags
     EXPECT_EQ(across.ops.mul, 372u + 90u);
     EXPECT_EQ(across.stats.run_starts, 17u);
+    // An edge walker holds one triangle at a time here (the upper one's points all come first); top,
+    // bottom, top again holds both.
+    EXPECT_EQ(walker_live_triangles(r, q.points), 1u);
+    EXPECT_EQ(walker_live_triangles(r, {q.points[0], q.points[16], q.points[1]}), 2u);
+    EXPECT_THROW(walker_live_triangles(r, {{0u, 0u}}), std::invalid_argument);
 }
 
 bool same_jobs(const std::vector<interval_job>& a, const std::vector<interval_job>& b) {
