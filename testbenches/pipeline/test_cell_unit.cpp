@@ -163,10 +163,10 @@ TEST(CellUnit, HeadFrameEndToEnd) {
 // along it, 129 pixels) is done long before: the pipeline's bench must not stop the simulation
 // until the cell unit has finished. The frame, one colour, is per-pixel shading's.
 TEST(CellUnit, FlatSquareUnitOutlastsThePipeline) {
-    const scene::rasterised r = study::flat_square(65);
-    const frame_constants k = frame_constants_of(*r.src);
-    scene::device_config dev;
-    dev.device = scene::parse_device("squared");
+    const study::flat_frame flat(study::flat_square(65));
+    const scene::rasterised& r = flat.r;
+    const frame_constants& k = flat.k;
+    const scene::device_config& dev = flat.dev;
     plan_config c;
     c.eval = evaluator::fd;
     c.length = length_policy::adaptive;

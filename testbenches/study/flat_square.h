@@ -6,7 +6,9 @@
 #pragma once
 
 #include <deque>
+#include <utility>
 
+#include "golden_pipeline/pipeline.h"
 #include "scene/scene.h"
 
 namespace shading::study {
@@ -31,5 +33,15 @@ inline scene::rasterised flat_rectangle(unsigned size, double half_width) {
 
 inline scene::rasterised flat_square(unsigned size) { return flat_rectangle(size, 1.5); }
 inline scene::rasterised flat_strip(unsigned size) { return flat_rectangle(size, 1.0 / double(size)); }
+
+// One of them with its frame constants and the squared device, as the cells' tests shade it.
+struct flat_frame {
+    explicit flat_frame(scene::rasterised raster) : r(std::move(raster)), k(pipeline::frame_constants_of(*r.src)) {
+        dev.device = scene::parse_device("squared");
+    }
+    scene::rasterised r;
+    pipeline::frame_constants k;
+    scene::device_config dev;
+};
 
 }  // namespace shading::study

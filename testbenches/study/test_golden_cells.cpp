@@ -96,6 +96,12 @@ TEST(GoldenCells, WithinCodesOfTheRealValuedBiquadratic) {
     EXPECT_GT(worst, 0.0);  // the floors are there: the test can see them
 }
 
+cell_config rows_only() {
+    cell_config t;
+    t.column_ratio = 0.0;
+    return t;
+}
+
 // Every covered pixel of the frame delivered by exactly one cell or job; none outside.
 std::vector<unsigned> deliveries(const cell_plan& p) {
     std::vector<unsigned> n(std::size_t(p.width) * p.height, 0);
@@ -120,13 +126,11 @@ std::vector<unsigned> deliveries(const cell_plan& p) {
 // and row 64 keeps pixels 0..63 for the rows. Either way the frame is per-pixel shading's, code for
 // code.
 TEST(GoldenCells, FlatSquareHandCounted) {
-    const scene::rasterised r = study::flat_square(65);
-    const frame_constants k = frame_constants_of(*r.src);
-    scene::device_config dev;
-    dev.device = scene::parse_device("squared");
-    cell_config rows_only;
-    rows_only.column_ratio = 0.0;
-    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, rows_only);
+    const study::flat_frame flat(study::flat_square(65));
+    const scene::rasterised& r = flat.r;
+    const frame_constants& k = flat.k;
+    const scene::device_config& dev = flat.dev;
+    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, rows_only());
     ASSERT_EQ(p.sent.size(), 4u);
     EXPECT_EQ(p.sent[3], 4u);
     EXPECT_EQ(p.sent[0] + p.sent[1] + p.sent[2], 0u);
@@ -172,15 +176,13 @@ TEST(GoldenCells, FlatSquareHandCounted) {
 // products N.L and N.H, 6 mul: 2 x 27 + 2 x 6 + 17 x 18 = 372 mul, 34 div, 34 sqrt. Not stepped down
 // (every point a run start): 15 x 6 = 90 mul more.
 TEST(GoldenCells, FlatStripDownItsColumn) {
-    const scene::rasterised r = study::flat_strip(65);
+    const study::flat_frame flat(study::flat_strip(65));
+    const scene::rasterised& r = flat.r;
+    const frame_constants& k = flat.k;
+    const scene::device_config& dev = flat.dev;
     ASSERT_EQ(r.covered_pixels(), 65u);
     for (unsigned y = 0; y < 65; ++y) ASSERT_TRUE(r.covered(32, y));
-    const frame_constants k = frame_constants_of(*r.src);
-    scene::device_config dev;
-    dev.device = scene::parse_device("squared");
-    cell_config rows_only;
-    rows_only.column_ratio = 0.0;
-    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, rows_only);
+    const cell_plan p = make_cell_plan(r, k, dev, plan_config{}, rows_only());
     EXPECT_TRUE(p.cells.empty());
     EXPECT_EQ(p.pixels_rows, 65u);
     EXPECT_EQ(p.points.size(), 65u);
