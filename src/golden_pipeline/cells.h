@@ -90,8 +90,9 @@ struct cell_plan {
     std::size_t pixels = 0, pixels_cells = 0;  // covered; by cells and fallbacks
     std::size_t pixels_columns = 0, pixels_rows = 0;  // by the columns' and the rows' intervals
     std::size_t points_lines = 0;   // points the columns and rows added
-    scene::op_counts decision;      // the cells' differences and compares; the segments' fold compares, charged by
-                                    // the cells and again by the lines, which each test them; the lines' estimates
+    scene::op_counts decision;      // the cells' differences and compares; the fold compares between neighbours
+                                    // along rows and down columns, charged by the cells and again by the rows' and
+                                    // the columns' planners, which each test them; the planners' estimates
 };
 
 // c: the segments' rules (depth_step, surface_breaks), the evaluator whose pixels the fallbacks'
