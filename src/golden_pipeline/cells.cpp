@@ -359,7 +359,8 @@ void validate(const cell_config& t) {
         fail("tolerances and factors must be positive");
     if (!(t.tol * t.d2_factor < 1e6) || !(t.tol * t.d3_factor < 1e6) || !(t.fallback_tol < 1e6))
         fail("tolerances must be below 1e6 levels");
-    if (!(t.column_ratio >= 0.0) || !(t.column_ratio < 1e6)) fail("column_ratio must be 0 (rows only) or positive, below 1e6");
+    if (!(t.column_ratio >= 0.0) || !(t.column_ratio < 1e6))
+        fail("column_ratio must be 0 (rows only) or positive, below 1e6");
     if (t.line_m_max < interp::m_min || t.line_m_max > interp::m_max)
         fail("line_m_max must be " + std::to_string(interp::m_min) + ".." + std::to_string(interp::m_max) + " (got " +
              std::to_string(t.line_m_max) + ")");
@@ -510,7 +511,8 @@ cell_counts cell_ops(const scene::rasterised& r, const cell_plan& p, const scene
                      bool walk_edges, bool raster_order) {
     std::vector<std::array<unsigned, 2>> points = p.points;
     if (raster_order) std::sort(points.begin(), points.end(), raster_before);
-    const stepped_count g = stepped_geometry(r, points, walk_edges, raster_order ? std::vector<uint8_t>{} : p.point_down);
+    const std::vector<uint8_t> down = raster_order ? std::vector<uint8_t>{} : p.point_down;  // raster order: along rows
+    const stepped_count g = stepped_geometry(r, points, walk_edges, down);
     cell_counts out;
     out.geometry = g.ops;
     out.stepping = g.stats;

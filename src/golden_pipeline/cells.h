@@ -96,7 +96,8 @@ struct cell_plan {
 };
 
 // c: the segments' rules (depth_step, surface_breaks), the evaluator whose pixels the fallbacks'
-// checks read, and the lines' sample set and /3 mode; its length and degree fields are not read. Throws scene::scene_error for an invalid configuration.
+// checks read, and the lines' sample set and /3 mode; its length and degree fields are not read.
+// Throws scene::scene_error for an invalid configuration.
 cell_plan make_cell_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                          const plan_config& c, const cell_config& t);
 
@@ -111,10 +112,10 @@ std::array<rgb_codes, 9> cell_lattice_colours(const cell_job& cell, const frame_
 std::vector<rgb_codes> cell_pixels(const std::array<rgb_codes, 9>& lattice, unsigned s, evaluator e);
 
 // The frame the scheme delivers: cell_pixels for every cell, golden_interval for every job and
-// column job (c.eval, c.set, c.div); degree 2 and log2_len log2 s on a cell's pixels. Then at every point inside a cell
-// the colour the sample stage formed there, as an exact pixel (point_jobs; degree 1): the biquadratic
-// only comes within a tolerance of it. Points inside an interval keep the interval's pixel, as the
-// shading pipeline delivers them.
+// column job (c.eval, c.set, c.div); degree 2 and log2_len log2 s on a cell's pixels. Then at every
+// point inside a cell the colour the sample stage formed there, as an exact pixel (point_jobs;
+// degree 1): the biquadratic only comes within a tolerance of it. Points inside an interval keep
+// the interval's pixel, as the shading pipeline delivers them.
 frame golden_cell_frame(const cell_plan& p, const frame_constants& k, const scene::device_config& dev,
                         const plan_config& c);
 // The exact pixels (m = 0 jobs) of the points no job covers, in the order read.

@@ -53,6 +53,15 @@ std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, u
     return out;
 }
 
+namespace {
+// The counts below take covered pixels only: anything else is the caller's error.
+void require_covered(const scene::rasterised& r, const std::array<unsigned, 2>& pt, const char* who) {
+    if (pt[0] >= r.width || pt[1] >= r.height || !r.covered(pt[0], pt[1]))
+        throw std::invalid_argument(std::string(who) + ": (" + std::to_string(pt[0]) + ", " + std::to_string(pt[1]) +
+                                    ") is not a covered pixel");
+}
+}  // namespace
+
 stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std::array<unsigned, 2>>& points,
                                bool walk_edges, const std::vector<uint8_t>& down) {
     if (!down.empty() && down.size() != points.size())
@@ -62,9 +71,7 @@ stepped_count stepped_geometry(const scene::rasterised& r, const std::vector<std
     stepped_count out;
     for (std::size_t i = 0; i < points.size(); ++i) {
         const auto& pt = points[i];
-        if (pt[0] >= r.width || pt[1] >= r.height || !r.covered(pt[0], pt[1]))
-            throw std::invalid_argument("stepped_geometry: (" + std::to_string(pt[0]) + ", " + std::to_string(pt[1]) +
-                                        ") is not a covered pixel");
+        require_covered(r, pt, "stepped_geometry");
         line_geometry::charge_dots(stepper.at(pt[0], pt[1], &out.ops, !down.empty() && down[i] != 0), &out.ops);
     }
     out.stats = stepper.stats();
@@ -75,9 +82,7 @@ std::size_t walker_live_triangles(const scene::rasterised& r, const std::vector<
     std::vector<std::size_t> last(r.setups.size(), 0);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const auto& pt = points[i];
-        if (pt[0] >= r.width || pt[1] >= r.height || !r.covered(pt[0], pt[1]))
-            throw std::invalid_argument("walker_live_triangles: (" + std::to_string(pt[0]) + ", " +
-                                        std::to_string(pt[1]) + ") is not a covered pixel");
+        require_covered(r, pt, "walker_live_triangles");
         last[static_cast<std::size_t>(r.tri[r.index(pt[0], pt[1])])] = i;
     }
     std::vector<uint8_t> open(r.setups.size(), 0);

@@ -141,13 +141,15 @@ TEST(CellUnit, HeadPlanCells) {
 }
 
 // The scheme's whole frame in SystemC, the head at 192: the planned cells through the cell unit, the
-// plan's intervals and the cells' points through the shading pipeline (fd, any m per interval), the
-// pipeline's frame buffer over the cell unit's: code for code the golden model's frame.
+// plan's intervals (rows and columns) and the cells' points through the shading pipeline (fd, any m
+// per interval), the pipeline's frame buffer folded back over the cell unit's: code for code the
+// golden model's frame.
 TEST(CellUnit, HeadFrameEndToEnd) {
     const head_cells h(192);
     const cell_plan& p = h.p;
     ASSERT_GT(p.cells.size(), 50u);
     ASSERT_GT(p.jobs.size(), 1000u);
+    ASSERT_GT(p.column_jobs.size(), 20u);  // the column runs through the pipeline's stacked frame too
     const tb::cells_run run = tb::simulate_cells(h.r, p, h.k, h.dev, h.c);
     EXPECT_TRUE(run.finished);
     EXPECT_EQ(run.unit_mismatches, 0u);
