@@ -67,6 +67,7 @@ TEST(FormatTable, ReadmeRowsMatchSrcFormats) {
         {"squared device: q and each square (RG_SQ)", {squared::q_fmt}},
         {"outputs 25–27", {spec::out_fmt}},
         {"interpolation samples I1..I4, pixels", {interp::sample_fmt}},
+        {"cell unit: lattice registers, column buffers", {interp::sample_fmt}},  // cell_channel's WI
         {"coefficients A..D / Horner's t / forward differences", {interp::coef_fmt, interp::t_fmt, interp::fd_fmt}},
         {"sample stage: k_d·I, diffuse, ambient + diffuse",
          {pipeline::kdi_fmt, pipeline::diffuse_fmt, pipeline::ad_fmt}},
