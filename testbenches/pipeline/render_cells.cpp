@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cell_unit_bench.h"
-#include "testbenches/study/study_frame.h"
+#include "golden_pipeline/frame_setup.h"
 #include "testbenches/common/exit_status.h"
 #include "testbenches/common/report_log.h"
 #include "testbenches/options/tool_options.h"
@@ -29,7 +29,7 @@ int sc_main(int argc, char* argv[]) {
     if (auto rc = tb::parse_render_cells(argc, argv, o)) return *rc;
     tb::report_log::install();
     try {
-        const study::study_frame sf(o.scene, o.data_dir, o.size, o.device, o.walk_edges, o.light, o.n);
+        const frame_setup sf(o.scene, o.data_dir, o.size, o.device, o.walk_edges, o.light, o.n);
         if (sf.pixels == 0) {
             std::fprintf(stderr, "render_cells: the scene covers no pixel at %ux%u\n", o.size, o.size);
             return tb::exit_failure;

@@ -18,7 +18,7 @@ if(TARGET shading_pipeline_sim)
   shading_add_gtest(test_cell_unit SOURCES test_cell_unit.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
   # The cells rendered in SystemC (render_cells.cpp): exit 0 when the frame is the golden one.
   add_executable(render_cells ${CMAKE_CURRENT_SOURCE_DIR}/render_cells.cpp)
-  target_link_libraries(render_cells PRIVATE shading_pipeline_sim shading_pipeline shading_line_kinks shading_options
+  target_link_libraries(render_cells PRIVATE shading_pipeline_sim shading_pipeline shading_options
                         shading_tb_common)
   set_target_properties(render_cells PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   add_test(NAME pipeline.render_cells COMMAND render_cells --size 96 --tol 1 WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
