@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Summary of scripts/synth.sh: one row per synthesized variant (cells, flip-flops, transistor
 estimate, depth of the critical path in gates, ROM bits read as a memory) beside our hand count by
-the cost table's rules (testbenches/study/accuracy_study.cpp: an array multiplier is WA x WB cells,
+the cost table's rules (studies/accuracy/accuracy_study.cpp: an array multiplier is WA x WB cells,
 a multiplier by a hardwired constant keeps its non-zero rows, an adder counts its output width,
 gates of the special case, registers not counted). Writes synth.csv and synth.md to --out.
 """

@@ -5,7 +5,7 @@
 // sample stage's code (golden_sample), every interpolation the quadratic coefficient unit and an
 // evaluator (quadratic_pixels), every decision an adder or a compare on codes against per-frame
 // constants. The study that chose the scheme and its constants emulates it in doubles
-// (testbenches/study/cell_tree.h); this is the model a SystemC cell unit is to match.
+// (studies/pipeline/cell_tree.h); this is the model a SystemC cell unit is to match.
 #pragma once
 
 #include <array>

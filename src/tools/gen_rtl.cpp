@@ -8,7 +8,7 @@
 //                                            default frac = a_fmt.frac, module ua22802_a_rom, the
 //                                            content of ua22802_a_rom.h (gen_a_rom.cpp); other
 //                                            values give the ROM fraction-bit sweep's sizes
-//                                            (testbenches/study, rom_fraction_sweep.csv).
+//                                            (studies/accuracy, rom_fraction_sweep.csv).
 // Run by cmake/verilator.cmake when CMake configures (Verilator reads the files then).
 #include <cmath>
 #include <cstdint>

@@ -112,7 +112,7 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
     app.add_option("--shard", o.shard, "--sweep: run only shard I of N (configurations i with i % N = I - 1)");
     app.add_flag("--emit-jobs", o.emit_jobs,
                  "--sweep: print one command line per configuration (a shard of one, its own CSV) and exit, for GNU "
-                 "parallel or a job array; merge the CSVs with scripts/pipeline_claims.py");
+                 "parallel or a job array; merge the CSVs with studies/scripts/pipeline_claims.py");
     app.add_option("--scenes", o.claims_scenes, "--grid claims: scenes (built-in names or OBJ paths; default head sphere torus)");
     app.add_option("--lights", o.claims_lights, "--grid claims: light directions az,el (default -40,25 35,20 10,60)");
     app.add_option("--ns", o.claims_ns, "--grid claims: exponents n (default 5 20 100 500)");

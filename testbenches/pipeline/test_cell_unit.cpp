@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cell_unit_bench.h"
+#include "flat_square.h"
 #include "core/trace.h"
 #include "core/report_ids.h"
 #include "golden_pipeline/cells.h"
@@ -20,7 +21,6 @@
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
 #include "testbenches/common/vcd_names.h"
-#include "testbenches/study/flat_square.h"
 
 namespace {
 
@@ -165,7 +165,7 @@ TEST(CellUnit, HeadFrameEndToEnd) {
 // along it, 129 pixels) is done long before: the pipeline's bench must not stop the simulation
 // until the cell unit has finished. The frame, one colour, is per-pixel shading's.
 TEST(CellUnit, FlatSquareUnitOutlastsThePipeline) {
-    const study::flat_frame flat(study::flat_square(65));
+    const tb::flat_frame flat(tb::flat_square(65));
     const scene::rasterised& r = flat.r;
     const frame_constants& k = flat.k;
     const scene::device_config& dev = flat.dev;

@@ -31,7 +31,7 @@ inline constexpr qfmt a_fmt{18, false, 7};     // ADD15 = a: Q11.7, one bit wide
 
 namespace shading::ua60553 {
 
-// A ROM-free generator beyond formula 10, found by the study's search (testbenches/study,
+// A ROM-free generator beyond formula 10, found by the study's search (studies/accuracy,
 // modules/tuned/README.md, "A better ROM-free a(n)"): the same MUL6 and ADD15 on the same buses, but node 32 may
 // carry a negative constant (its two's complement on a Q1.7 signed bus, sign-extended by ADD15),
 // and n < 2 forces a = 0 (an OR gate over n's bits 9..1 drives the key block on the a bus).

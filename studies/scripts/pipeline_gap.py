@@ -7,7 +7,7 @@ optimum's. Per size and device, each policy's worst (largest) and median gap, an
 ratio against the scan-line Phong. The optimum minimises geometry points, not the Horner unit's
 multiplications by t: through the Horner unit the gap is an approximation.
 
-Usage: scripts/pipeline_gap.py OUT.md CSV [CSV ...] [--jobs N] [--bin PATH] [--data-dir DIR]
+Usage: studies/scripts/pipeline_gap.py OUT.md CSV [CSV ...] [--jobs N] [--bin PATH] [--data-dir DIR]
                                [--device D] [--size S]
 
 Writes OUT.md and OUT.md's stem + "_rows.csv" (one row per configuration). Standard library only.
@@ -25,6 +25,10 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pipeline_claims import merge, policy  # noqa: E402  (the same merge and policy labels)
+
+# render_pipeline in $SHADING_BIN, else in build/bin of this source tree.
+BIN_DIR = os.environ.get("SHADING_BIN") or os.path.join(
+    os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "build", "bin")
 
 
 def optimum_args(r, data_dir):
@@ -60,7 +64,7 @@ def main():
     ap.add_argument("out_md")
     ap.add_argument("csv", nargs="+")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    ap.add_argument("--bin", default=os.path.join(os.environ.get("SHADING_BIN", "build/bin"), "render_pipeline"))
+    ap.add_argument("--bin", default=os.path.join(BIN_DIR, "render_pipeline"))
     ap.add_argument("--data-dir", default="")
     ap.add_argument("--device", default="", help="only this device's rows")
     ap.add_argument("--size", default="", help="only this size's rows")
@@ -100,7 +104,7 @@ def main():
     lines = ["# Each policy against the optimum plan at its own interpolation NMSE", "",
              "Gap = the policy's long operations over the optimum's (same scene, light, n, device, evaluator,",
              "carry), worst and median over the sweep's scenes x lights x n; the optimum's own ratio against",
-             "the scan-line Phong beside it. Rows from `scripts/pipeline_gap.py` over "
+             "the scan-line Phong beside it. Rows from `studies/scripts/pipeline_gap.py` over "
              + ", ".join(os.path.basename(p) for p in a.csv) + ".", ""]
     for (size, device), pols in sorted(groups.items()):
         lines += [f"## {device}, {size}x{size}", "",

@@ -1,8 +1,8 @@
 // The bit-accurate cells (src/golden_pipeline/cells.h): the decision unit's constants and the
 // biquadratic worked by hand, the biquadratic against the real-valued one, a flat square's points
-// hand-counted, the planner's map of taken pixels, and on the head at 512 the same cell decisions as
-// the real-valued emulation (cell_tree.h, a separate implementation), every pixel delivered once and
-// the interpolation target's figures.
+// hand-counted, the planner's map of taken pixels, and on the head at 512 every pixel delivered once
+// and the interpolation target's figures. (The same cell decisions as the real-valued emulation,
+// a separate implementation, are a study's check: studies/pipeline/test_golden_cells_emulation.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,15 +14,13 @@
 #include <vector>
 
 #include "golden_pipeline/cells.h"
-#include "cell_tree.h"
+#include "golden_pipeline/frame_setup.h"
 #include "flat_square.h"
-#include "study_frame.h"
 
 namespace {
 
 using namespace shading;
 using namespace shading::pipeline;
-using study::rgb_levels;
 
 // floor(8 x 0.9 x 256) = floor(1843.2); 0.9 x 256 / k3 = 230.4 x 9 sqrt 3 = 3591.58...; 1 x 256.
 TEST(GoldenCells, LimitsByHand) {
@@ -126,7 +124,7 @@ std::vector<unsigned> deliveries(const cell_plan& p) {
 // and row 64 keeps pixels 0..63 for the rows. Either way the frame is per-pixel shading's, code for
 // code.
 TEST(GoldenCells, FlatSquareHandCounted) {
-    const study::flat_frame flat(study::flat_square(65));
+    const tb::flat_frame flat(tb::flat_square(65));
     const scene::rasterised& r = flat.r;
     const frame_constants& k = flat.k;
     const scene::device_config& dev = flat.dev;
@@ -176,7 +174,7 @@ TEST(GoldenCells, FlatSquareHandCounted) {
 // products N.L and N.H, 6 mul: 2 x 27 + 2 x 6 + 17 x 18 = 372 mul, 34 div, 34 sqrt. Not stepped down
 // (every point a run start): 15 x 6 = 90 mul more.
 TEST(GoldenCells, FlatStripDownItsColumn) {
-    const study::flat_frame flat(study::flat_strip(65));
+    const tb::flat_frame flat(tb::flat_strip(65));
     const scene::rasterised& r = flat.r;
     const frame_constants& k = flat.k;
     const scene::device_config& dev = flat.dev;
@@ -233,7 +231,7 @@ bool same_jobs(const std::vector<interval_job>& a, const std::vector<interval_jo
 
 class GoldenCellsHead : public ::testing::Test {
 protected:
-    const study::study_frame head{"head", SHADING_SOURCE_DIR, 512, "squared", false};
+    const frame_setup head{"head", SHADING_SOURCE_DIR, 512, "squared", false};
     const scene::rasterised& r = head.r;
     plan_config cfg() const {
         plan_config c;
@@ -275,23 +273,6 @@ TEST_F(GoldenCellsHead, PlannerLeavesTakenPixels) {
     EXPECT_GT(taken_covered, 3000u);  // the block lies on the face
     for (const auto& q : p.points) EXPECT_FALSE(taken[r.index(q[0], q[1])]);
     EXPECT_THROW(make_plan(r, head.k, head.dev, c, std::vector<uint8_t>(5, 0)), scene::scene_error);
-}
-
-// The cells decide on the sample stage's codes with integer limits; the emulation on the same colours
-// in levels with real-valued ones: the same cells are sent. The fallbacks' row quadratics are fixed
-// point here, so their checks may differ a little, and the rest goes to the planner, not to the
-// emulated policy.
-TEST_F(GoldenCellsHead, SameCellsAsTheEmulation) {
-    for (double tol : {0.5, 0.9, 2.0}) {
-        const cell_plan p = make_cell_plan(r, head.k, head.dev, cfg(), at(tol));
-        study::cell_tree_config t;
-        t.tol = tol;
-        const study::cell_frame e = study::emulate_cells(r, head.colour, plan_config{}, t);
-        EXPECT_EQ(p.sent, e.sent) << tol;
-        EXPECT_EQ(p.fallback_rows + p.fallback_exact, e.fallback_rows + e.fallback_exact) << tol;
-        EXPECT_NEAR(double(p.fallback_exact), double(e.fallback_exact), 0.05 * double(e.fallback_exact) + 2.0) << tol;
-        EXPECT_NEAR(double(p.points.size()), double(e.points()), 0.05 * double(e.points())) << tol;
-    }
 }
 
 // On the head at 512 at T = 0.89: every covered pixel delivered once; the points distinct and
@@ -350,7 +331,7 @@ TEST_F(GoldenCellsHead, FrameAndTarget) {
     const cell_counts walked = cell_ops(r, p, head.dev, head.k.n, true);
     EXPECT_EQ(walked.long_ops(), cell_ops(r, p, head.dev, head.k.n, true, true).long_ops());
     EXPECT_EQ(walked.colours.long_ops(), colour_sample_ops(head.dev, head.k.n).long_ops() * p.points.size());
-    const study::study_frame walk{"head", SHADING_SOURCE_DIR, 512, "squared", true};
+    const frame_setup walk{"head", SHADING_SOURCE_DIR, 512, "squared", true};
     EXPECT_GE(walk.scanline / (walked.long_ops() / double(p.pixels)), 3.0);
     // Not walked, the scheme's order starts more runs than raster order.
     EXPECT_GT(cell_ops(r, p, head.dev, head.k.n, false).long_ops(), cell_ops(r, p, head.dev, head.k.n, false, true).long_ops());

@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 #include "line_kinks.h"
 #include "levels_testing.h"
+#include "study_frame.h"
 #include "two_line.h"
 
 namespace {

@@ -11,9 +11,9 @@ cases reach 3x; one row per case.
 A grid, not a bisection: the NMSE is not monotone in the tolerance. A case no grid point brings
 within the NMSE has no ratio (counted apart).
 
-Usage: scripts/cell_claims.py OUT.md [--size 512] [--nmse 1e-5] [--jobs N] [--scenes head sphere torus]
-                              [--lights -40,25 35,20 10,60] [--ns 5 20 100 500] [--tols 0.25,...]
-                              [--bin PATH] [--data-dir DIR] [--golden]
+Usage: studies/scripts/cell_claims.py OUT.md [--size 512] [--nmse 1e-5] [--jobs N] [--scenes head sphere torus]
+                                      [--lights -40,25 35,20 10,60] [--ns 5 20 100 500] [--tols 0.25,...]
+                                      [--bin PATH] [--data-dir DIR] [--golden]
 A negative azimuth reads as an option to argparse: give it alone as --lights=-40,25.
 Standard library only. Exit 0 on success, 1 if a run failed, 2 on bad usage.
 """
@@ -25,6 +25,9 @@ import statistics
 import subprocess
 import sys
 
+# cell_study (built with SHADING_BUILD_STUDIES) in $SHADING_BIN, else in build/bin of this source tree.
+BIN_DIR = os.environ.get("SHADING_BIN") or os.path.join(
+    os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "build", "bin")
 TOLS = "0.25,0.35,0.5,0.6,0.7,0.8,0.9,1,1.1,1.2,1.3,1.4,1.7,2,2.5,3,4,6,8"
 CHEAPEST = re.compile(r"The cheapest meeting NMSE <= \S+: T = (\S+), (\S+) points / px \(NMSE (\S+)\), counted (\S+) long "
                       r"ops / px in its order: (\S+)x the scan-line Phong")
@@ -61,12 +64,12 @@ def main():
     ap.add_argument("--lights", nargs="+", default=["-40,25", "35,20", "10,60"])
     ap.add_argument("--ns", nargs="+", type=int, default=[5, 20, 100, 500])
     ap.add_argument("--tols", default=TOLS)
-    ap.add_argument("--bin", default=os.path.join("build", "bin", "cell_study"))
+    ap.add_argument("--bin", default=os.path.join(BIN_DIR, "cell_study"))
     ap.add_argument("--data-dir", default="")
     ap.add_argument("--golden", action="store_true", help="the bit-accurate cells (cell_study --golden)")
     args = ap.parse_args()
     if not os.access(args.bin, os.X_OK):
-        print(f"cell_claims: no {args.bin}: build first (README)", file=sys.stderr)
+        print(f"cell_claims: no {args.bin}: build it first (scripts/build.sh --studies)", file=sys.stderr)
         return 2
     cases = [(s, li, n) for s in args.scenes for li in args.lights for n in args.ns]
     results = {}

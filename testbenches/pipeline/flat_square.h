@@ -1,8 +1,9 @@
-// A flat square seen square-on by an orthographic camera, for the cells' tests: every pixel of the
-// size x size frame covered, one segment a line, one patch throughout; lit along its normal, so every
-// pixel's N.H and N.L, and its colour, are the same. flat_strip: the same square narrowed to the
-// middle column of an odd size (pixel centres 2 / size apart, the middle one at x = 0; the strip
-// spans x = -+1 / size), so each line holds one pixel.
+// A flat square seen square-on by an orthographic camera, for the cells' tests (the golden cells', the
+// cell unit's and the cells study's): every pixel of the size x size frame covered, one segment a
+// line, one patch throughout; lit along its normal, so every pixel's N.H and N.L, and its colour, are
+// the same. flat_strip: the same square narrowed to the middle column of an odd size (pixel centres
+// 2 / size apart, the middle one at x = 0; the strip spans x = -+1 / size), so each line holds one
+// pixel.
 #pragma once
 
 #include <deque>
@@ -11,7 +12,7 @@
 #include "golden_pipeline/pipeline.h"
 #include "scene/scene.h"
 
-namespace shading::study {
+namespace shading::tb {
 
 inline scene::rasterised flat_rectangle(unsigned size, double half_width) {
     scene::world w;
@@ -44,4 +45,4 @@ struct flat_frame {
     scene::device_config dev;
 };
 
-}  // namespace shading::study
+}  // namespace shading::tb

@@ -57,13 +57,6 @@ corners shared_corners(const scene::rasterised& r, int32_t ta, int32_t tb) {
 
 }  // namespace
 
-std::vector<rgb_levels> levels_of(const pipeline::frame& f) {
-    std::vector<rgb_levels> out(f.px.size(), rgb_levels{0.0, 0.0, 0.0});
-    for (std::size_t i = 0; i < out.size(); ++i)
-        for (int ch = 0; ch < 3; ++ch) out[i][ch] = f.px[i][ch] * pipeline::pixel_fmt.lsb();
-    return out;
-}
-
 bool one_patch(const scene::rasterised& r, int32_t ta, int32_t tb) {
     return ta == tb || shared_corners(r, ta, tb).shared >= 1;
 }

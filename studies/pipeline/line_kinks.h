@@ -30,9 +30,6 @@ rgb_levels colour_on(const scene::rasterised& r, int32_t t, double xs, double ys
 // a scan's noisy normals do not (head: 0.075).
 std::vector<double> normal_laplacian(const scene::mesh& m);
 
-// A frame's pixels in 8-bit levels (pixel_fmt codes scaled), 0 where not covered.
-std::vector<rgb_levels> levels_of(const pipeline::frame& f);
-
 // Triangles ta and tb (indices into r.setups) are one patch of the mesh: the same triangle, or two of
 // one object sharing at least one vertex. Neighbouring pixels on triangles that are not lie across a
 // silhouette or a fold.

@@ -2,7 +2,7 @@
 """Summarise the claims sweep of render_pipeline (--sweep --grid claims): each policy's worst case and
 median over scenes x light directions x n, per image size and device, against both baselines.
 
-Usage: scripts/pipeline_claims.py OUT.md CSV [CSV ...]
+Usage: studies/scripts/pipeline_claims.py OUT.md CSV [CSV ...]
 
 The CSVs may be the shards of one sweep (--shard I/N, or the one-configuration CSVs of --emit-jobs):
 rows are merged by their `config` column (a configuration present twice must agree) and sorted.

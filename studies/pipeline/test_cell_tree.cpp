@@ -12,7 +12,7 @@
 
 #include "scene/scene.h"
 #include "cell_tree.h"
-#include "flat_square.h"
+#include "testbenches/pipeline/flat_square.h"
 #include "line_kinks.h"
 #include "study_frame.h"
 
@@ -74,7 +74,7 @@ TEST(CellTree, EstimatesByHand) {
 // check) and the tail 61, 62, 63 exact, of which 0, 16, 32, 48 were read. Every quadratic and cubic
 // reproduces the field: no error.
 TEST(CellTree, BiquadraticFieldSentWholeFromItsLattices) {
-    const scene::rasterised r = flat_square(65);
+    const scene::rasterised r = tb::flat_square(65);
     const std::vector<rgb_levels> c = biquadratic(65);
     const cell_frame f = emulate_cells(r, c, pipeline::plan_config{}, config(1.0));
     ASSERT_EQ(f.sent.size(), 4u);  // 4, 8, 16, 32
@@ -109,7 +109,7 @@ TEST(CellTree, BiquadraticFieldSentWholeFromItsLattices) {
 // nothing else misses. The bump itself is a point, delivered as read. With perfect decisions those
 // two cells' RMS (sqrt((37.5^2 + 12.5^2) / 16) = 9.9 levels) is over the fallback's tolerance: exact.
 TEST(CellTree, BumpOnALatticePointSpreadsAlongItsRow) {
-    const scene::rasterised r = flat_square(65);
+    const scene::rasterised r = tb::flat_square(65);
     std::vector<rgb_levels> c = biquadratic(65);
     for (int ch = 0; ch < 3; ++ch) c[16 * 65 + 16][ch] += 100.0;
     const cell_frame f = emulate_cells(r, c, pipeline::plan_config{}, config(1.0));
@@ -136,7 +136,7 @@ TEST(CellTree, BumpOnALatticePointSpreadsAlongItsRow) {
 // Sizes that are not powers of two, s_min below 4 or above s_max, s_max above 256, a tolerance or
 // factor not positive, colours of another size: refused.
 TEST(CellTree, BadConfigurationsRefused) {
-    const scene::rasterised r = flat_square(17);
+    const scene::rasterised r = tb::flat_square(17);
     const std::vector<rgb_levels> c = biquadratic(17);
     const pipeline::plan_config cfg;
     auto with = [](auto change) {

@@ -16,7 +16,7 @@ the answer. A grid, not a bisection alone: the NMSE is not monotone in the toler
 1.4-1.8). Where T = 16 meets it, the longest intervals bound the plan. A case no tolerance brings
 within the NMSE has no ratio (counted apart).
 
-Usage: scripts/pipeline_targets.py OUT.md [--size 512] [--m-max 5] [--nmse 1e-5] [--jobs N]
+Usage: studies/scripts/pipeline_targets.py OUT.md [--size 512] [--m-max 5] [--nmse 1e-5] [--jobs N]
                                    [--scenes head sphere torus] [--lights -40,25 35,20 10,60]
                                    [--ns 5 20 100 500] [--grid 16] [--steps 6] [--bin PATH] [--data-dir DIR]
                                    [--yardsticks policy perfect optimum] [--lit-guard]
@@ -35,6 +35,9 @@ import subprocess
 import sys
 import tempfile
 
+# render_pipeline in $SHADING_BIN, else in build/bin of this source tree.
+BIN_DIR = os.environ.get("SHADING_BIN") or os.path.join(
+    os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "build", "bin")
 COMMON = ["--device", "squared", "--eval", "fd", "--carry-samples", "--no-sim", "--no-images", "--md", "",
           "--json", "report.json"]
 YARDSTICKS = {
@@ -131,7 +134,7 @@ def main():
     ap.add_argument("--ns", nargs="+", type=int, default=[5, 20, 100, 500])
     ap.add_argument("--yardsticks", nargs="+", choices=list(YARDSTICKS), default=list(YARDSTICKS))
     ap.add_argument("--lit-guard", action="store_true", help="the policy with --lit-guard")
-    ap.add_argument("--bin", default=os.path.join(os.environ.get("SHADING_BIN", "build/bin"), "render_pipeline"))
+    ap.add_argument("--bin", default=os.path.join(BIN_DIR, "render_pipeline"))
     ap.add_argument("--data-dir", default="")
     try:
         a = ap.parse_args()
@@ -159,7 +162,7 @@ def main():
              f"{a.size}x{a.size}, squared device, forward differences, carry, m <= {a.m_max}; ratio against the "
              "scan-line Phong (long operations per pixel, the tolerance found, the largest error in 8-bit levels "
              "and the pixels more than 16 levels off). "
-             "`scripts/pipeline_targets.py`.", "",
+             "`studies/scripts/pipeline_targets.py`.", "",
              "| yardstick | cases met | worst | median | best | cases >= 3x |", "|---|---|---|---|---|---|"]
     for name in a.yardsticks:
         ratios = [r[name]["ratio"] for r in results if r[name]]

@@ -18,6 +18,7 @@
 
 #include "edge_split.h"
 #include "line_kinks.h"
+#include "study_frame.h"
 #include "golden_pipeline/pipeline.h"
 #include "scene/raster.h"
 #include "testbenches/common/exit_status.h"

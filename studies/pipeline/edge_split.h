@@ -16,18 +16,17 @@
 // (below 0.01 levels) is not modelled; it changes none of the shares this measures.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
+#include "levels.h"
+
 namespace shading::study {
 
 enum class reconstruction { linear, quadratic, cubic };
 const char* reconstruction_name(reconstruction k);
-
-using rgb_levels = std::array<double, 3>;
 
 // One segment's pixels rebuilt from samples every h pixels (h >= 1), and the points it used (the
 // samples and the exact pixels).

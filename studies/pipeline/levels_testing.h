@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "edge_split.h"
+#include "levels.h"
 
 namespace shading::study::test_helpers {
 
