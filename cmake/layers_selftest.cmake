@@ -10,7 +10,8 @@ endif()
 # A tree every layer of which is present and whose includes are all allowed: a module including the
 # floor, SystemC, a module beside it and modules/pipeline; the floor including itself; a reference
 # the floor; a golden model a reference; the golden pipeline the scene; a testbench a file beside it,
-# another folder's testbench header by its prefix, a module and Verilator's generated model.
+# another folder's testbench header by its prefix, a module and Verilator's generated model; a study
+# a file beside it, another folder's study by its prefix, a testbench and a golden model.
 function(_write_good_tree root)
   file(REMOVE_RECURSE "${root}")
   file(WRITE "${root}/src/floor/formats/f.h" "#pragma once\n#include <cstdint>\n")
@@ -32,12 +33,20 @@ function(_write_good_tree root)
        "#include \"testbenches/t/helper.h\"\n#include \"golden_pipeline/pipeline.h\"\n"
        "#include \"Vrtl_unit.h\"\n#include <glm/glm.hpp>\n")
   file(WRITE "${root}/testbenches/t/test.cpp" "#include \"near.h\"\n#include \"pipeline/pipe.h\"\n")
+  file(WRITE "${root}/studies/s/study.h" "#pragma once\n#include \"golden/g.h\"\n")
+  file(WRITE "${root}/studies/v/study.cpp"
+       "#include \"studies/s/study.h\"\n#include \"beside.h\"\n#include \"testbenches/t/helper.h\"\n"
+       "#include \"golden/g.h\"\n#include \"golden_pipeline/pipeline.h\"\n")
+  file(WRITE "${root}/studies/v/beside.h" "#pragma once\n#include \"testbenches/t/near.h\"\n")
 endfunction()
 
 set(failures "")
+set(cases 0)
 # _case(<name> <file relative to the tree> <line appended to it> <expected: pass or fail> [<words the
 # report must contain>, instead of the file and the include])
 function(_case name file line expect)
+  math(EXPR n "${cases} + 1")
+  set(cases ${n} PARENT_SCOPE)
   set(root "${SHADING_LAYERS_WORK}/${name}")
   _write_good_tree("${root}")
   if(file)
@@ -90,10 +99,24 @@ _case(pipeline_module src/golden_pipeline/pipeline.h "#include \"pipeline/pipe.h
 _case(testbench_unprefixed testbenches/u/test.cpp "#include \"t/near.h\"" fail)
 _case(testbench_path testbenches/u/test.cpp "#include \"src/golden/g.h\"" fail)
 _case(testbench_modules_path testbenches/u/test.cpp "#include \"modules/m/unit.h\"" fail)
-# A folder name under two include roots: "m/" in src/ and in modules/.
+# Only a study includes a study: a program (a testbench), a fuzz target, a module and the golden
+# pipeline must not.
+_case(testbench_study testbenches/u/test.cpp "#include \"studies/s/study.h\"" fail)
+_case(fuzz_study fuzz/f.cpp "#include \"studies/s/study.h\"" fail)
+_case(module_study modules/m/unit.h "#include \"studies/s/study.h\"" fail)
+_case(src_pipeline_study src/golden_pipeline/pipeline.h "#include \"studies/s/study.h\"" fail)
+# ... and says why.
+_case(testbench_study_says testbenches/u/test.cpp "#include \"studies/v/beside.h\"" fail
+      "testbenches/u/test.cpp: #include \"studies/v/beside.h\" (studies): only a study may include a study")
+# A study names its layers by their prefixes, as a testbench does.
+_case(study_unprefixed studies/v/study.cpp "#include \"t/near.h\"" fail)
+# A folder name under two include roots: "m/" in src/ and in modules/; "studies/", which the project
+# root lends, in src/.
 _case(shared_prefix src/m/other.h "#pragma once" fail "src/m/ and modules/m/: one folder name under two")
+_case(shared_prefix_studies src/studies/other.h "#pragma once" fail "studies/ and src/studies/: one folder name under two")
 
 if(failures)
   message(FATAL_ERROR "layers self-test:${failures}")
 endif()
-message(STATUS "layers self-test: 1 clean tree passed, 18 trees with one bad include or folder each failed naming it")
+math(EXPR bad "${cases} - 1")
+message(STATUS "layers self-test: 1 clean tree passed, ${bad} trees with one bad include or folder each failed naming it")
