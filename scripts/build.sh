@@ -1,9 +1,23 @@
 #!/usr/bin/env bash
 # Configure (Release) and build into build/. A second run reuses the build.
+# scripts/build.sh: the model, its tests and the programs (SHADING_BUILD_STUDIES=OFF).
+# scripts/build.sh --studies: the studies too (studies/, SHADING_BUILD_STUDIES=ON), what scripts/run.sh
+# runs. Either sets the option on an existing build/ as well, re-configuring only when it changes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+studies=OFF
+for arg in "$@"; do
+  case "$arg" in
+    --studies) studies=ON ;;
+    *) echo "usage: scripts/build.sh [--studies]" >&2; exit 2 ;;
+  esac
+done
 scripts/setup.sh
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
-[ -f build/CMakeCache.txt ] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
+if [ ! -f build/CMakeCache.txt ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSHADING_BUILD_STUDIES="$studies" "${launcher[@]}"
+elif ! grep -qx "SHADING_BUILD_STUDIES:BOOL=$studies" build/CMakeCache.txt; then
+  cmake -S . -B build -DSHADING_BUILD_STUDIES="$studies"
+fi
 cmake --build build -j "$(nproc)"

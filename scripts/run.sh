@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The main job: install what is missing (as root), configure, build in Release, run every
-# testbench and study, then print one summary table. Each step is a script in scripts/run.d/,
+# The main job: install what is missing (as root), configure, build in Release with the studies
+# (scripts/build.sh --studies: run.d/30 and 40 run study programs), run every testbench and study,
+# then print one summary table. Each step is a script in scripts/run.d/,
 # run in name order; each appends rows to out/summary.tsv:
 #   bench <TAB> case <TAB> samples <TAB> mismatches <TAB> max_error <TAB> cycles_per_pixel <TAB> note
 # VCDs go to traces/, CSV and PNG results to out/. Every testbench program takes the same options
@@ -12,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 scripts/setup.sh plots  # matplotlib for the figures of run.d/30, 40 and 70
-scripts/build.sh
+scripts/build.sh --studies
 mkdir -p out traces
 export SHADING_BIN="$PWD/build/bin" SHADING_OUT="$PWD/out" SHADING_SUMMARY="$PWD/out/summary.tsv"
 printf 'bench\tcase\tsamples\tmismatches\tmax_error\tcycles_per_pixel\tnote\n' > "$SHADING_SUMMARY"

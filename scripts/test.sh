@@ -2,17 +2,30 @@
 # Build, then run the whole test suite through ctest (each GoogleTest test in its own process), and
 # print how long the build and the tests took.
 # Extra arguments go to ctest, e.g. scripts/test.sh -R UA60553Device
-# scripts/test.sh --sanitize [ctest args]: the same suite (bench short runs included) built in
-# build-asan/ with AddressSanitizer (leak checking on) and UndefinedBehaviorSanitizer; any finding
-# fails its test.
+# scripts/test.sh [--sanitize] [--studies] [ctest args]:
+#   --sanitize  the same suite (bench short runs included) built in build-asan/ with AddressSanitizer
+#               (leak checking on) and UndefinedBehaviorSanitizer; any finding fails its test;
+#   --studies   the studies (studies/, SHADING_BUILD_STUDIES=ON) built and tested too; without it the
+#               build is the model, its tests and the programs (the option is set either way, so an
+#               existing build follows it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 start=$SECONDS
 took() { echo "test.sh: $1 took $(( (SECONDS - $2) / 60 )) min $(( (SECONDS - $2) % 60 )) s"; }
+sanitize=0
+studies=OFF
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --sanitize) sanitize=1 ;;
+    --studies) studies=ON ;;
+    *) break ;;
+  esac
+  shift
+done
 # --no-tests=error: a filter or a configuration that registers nothing fails instead of passing.
-if [ "${1:-}" != "--sanitize" ]; then
-  scripts/build.sh
+if [ "$sanitize" = 0 ]; then
+  if [ "$studies" = ON ]; then scripts/build.sh --studies; else scripts/build.sh; fi
   took build "$start"
   t=$SECONDS
   rc=0
@@ -20,16 +33,18 @@ if [ "${1:-}" != "--sanitize" ]; then
   took tests "$t"; took "build and tests" "$start"
   exit "$rc"
 fi
-shift
 scripts/setup.sh
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 # -Og -g1: stacks with file and line (-g1 keeps the line tables only: full debug information made
 # one test's instrumented compile 38 % slower); -Og rather than -O1 halves the instrumented compile
 # (docs/tests.md) while the suite, dominated by process start-up, runs as fast; asserts stay on.
-[ -f build-asan/CMakeCache.txt ] ||
+if [ ! -f build-asan/CMakeCache.txt ]; then
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" \
-        -DSHADING_SANITIZE=ON "${launcher[@]}"
+        -DSHADING_SANITIZE=ON -DSHADING_BUILD_STUDIES="$studies" "${launcher[@]}"
+elif ! grep -qx "SHADING_BUILD_STUDIES:BOOL=$studies" build-asan/CMakeCache.txt; then
+  cmake -S . -B build-asan -DSHADING_BUILD_STUDIES="$studies"
+fi
 cmake --build build-asan -j "$(nproc)"
 took "sanitizer build" "$start"
 # detect_stack_use_after_return=0: Debian's libsystemc switches between thread stacks with
