@@ -6,6 +6,7 @@
 #include <string>
 
 #include "golden_pipeline/line_geometry.h"
+#include "golden_pipeline/quadtree.h"
 
 namespace shading::pipeline {
 
@@ -22,62 +23,31 @@ uint64_t levels_to_codes(double levels) {
 }
 uint64_t abs_diff(int64_t v) { return static_cast<uint64_t>(v < 0 ? -v : v); }
 
-using pixel = std::array<unsigned, 2>;
-bool raster_before(const pixel& a, const pixel& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }
+using quadtree::pixel;
+using quadtree::raster_before;
 
+// The golden side of the quadtree walk (quadtree.h): each point's geometry and the sample stage's
+// colour formed once, the decisions adders and compares on codes, each one counted.
 class cell_planner {
 public:
     cell_planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                  const plan_config& c, const cell_config& t, cell_plan& p)
         : r_(r), k_(k), dev_(dev), c_(c), t_(t), lim_(cell_limits_of(t)), p_(p), W(r.width), H(r.height),
-          seg_(r.tri.size(), -1), down_(r.tri.size(), 0), read_(r.tri.size(), 0), taken_(r.tri.size(), 0),
-          smp_(r.tri.size()), col_(r.tri.size()) {
-        int32_t next = 0;
-        for (unsigned y = 0; y < H; ++y)
-            for (const auto& s : line_segments(r, y, c, &p.decision)) {
-                for (unsigned x = s[0]; x <= s[1]; ++x) seg_[r.index(x, y)] = next;
-                ++next;
-            }
-        for (unsigned y = 0; y + 1 < H; ++y)
-            for (unsigned x = 0; x < W; ++x)
-                down_[r.index(x, y)] = r.covered(x, y) && r.covered(x, y + 1) &&
-                                       !surface_break(r, r.index(x, y), r.index(x, y + 1), &p.decision);
-    }
+          g_(r, c, &p.decision), read_(r.tri.size(), 0), smp_(r.tri.size()), col_(r.tri.size()) {}
 
     void run() {
-        p_.sent.assign(log2_of(t_.s_max) - log2_of(t_.s_min) + 1, 0);
-        for (unsigned by = 0; by < H; by += t_.s_max) band(by);
-        for (std::size_t i = 0; i < taken_.size(); ++i) p_.pixels_cells += taken_[i];
+        quadtree::tally w = quadtree::walk_cells(g_, t_.s_min, t_.s_max, *this);
+        p_.sent = std::move(w.sent);
+        p_.fallback_rows = w.fallback_rows;
+        p_.fallback_exact = w.fallback_exact;
+        p_.pixels_cells = w.pixels;
+        taken_ = std::move(w.taken);
         lines();
         for (std::size_t i = 0; i < r_.tri.size(); ++i) p_.pixels += r_.tri[i] >= 0;
     }
 
-private:
-    struct pending {
-        unsigned x0, y0, s;
-        bool family;  // its parent was whole: the family lattice over (px, py) was read
-        unsigned px, py;
-    };
-
-    std::size_t idx(unsigned x, unsigned y) const { return r_.index(x, y); }
-
-    bool whole(unsigned x0, unsigned y0, unsigned s) const {
-        if (x0 + s >= W || y0 + s >= H) return false;
-        for (unsigned y = y0; y <= y0 + s; ++y)
-            for (unsigned x = x0; x <= x0 + s; ++x) {
-                if (seg_[idx(x, y)] < 0 || seg_[idx(x, y)] != seg_[idx(x0, y)]) return false;
-                if (y < y0 + s && !down_[idx(x, y)]) return false;
-            }
-        return true;
-    }
-
-    // The geometry side reads a point once: its geometry and the sample stage's colour.
-    void want(unsigned x, unsigned y) { batch_.push_back({x, y}); }
-    void flush() {
-        std::sort(batch_.begin(), batch_.end(), raster_before);
-        for (const pixel& q : batch_) read(q[0], q[1]);
-        batch_.clear();
-    }
+    // The walk's side (quadtree::walk). The geometry side reads a point once: its geometry and the
+    // sample stage's colour (down: stepped down its column, for the columns' runs).
     void read(unsigned x, unsigned y, bool down = false) {
         const std::size_t i = idx(x, y);
         if (read_[i] || !r_.covered(x, y)) return;
@@ -88,6 +58,45 @@ private:
         p_.point_geometry.push_back(smp_[i]);
         p_.point_down.push_back(down ? 1 : 0);
     }
+    bool accept(const quadtree::cell& e) {
+        return second_differences_pass(e.x0, e.y0, e.s) &&
+               (!e.family || third_differences_pass(e.x0, e.y0, e.s, e.px, e.py));
+    }
+    void send(const quadtree::cell& e) {
+        cell_job cell;
+        cell.x0 = e.x0;
+        cell.y0 = e.y0;
+        cell.s = e.s;
+        for (unsigned i = 0; i < 3; ++i)
+            for (unsigned j = 0; j < 3; ++j)
+                cell.lattice[3 * i + j] = smp_[idx(e.x0 + j * e.s / 2, e.y0 + i * e.s / 2)];
+        p_.cells.push_back(cell);
+    }
+    bool reads_every_check() const { return false; }
+    // The row quadratic at (k, k) against the sample stage's colour there, within the fallback limit.
+    bool rows_pass(const quadtree::cell& e, unsigned k) {
+        const auto px = interval_pixels(row_job(e.x0, e.y0 + k), k_, dev_, c_.eval, c_.set, c_.div);
+        const rgb_codes& v = colour(e.x0 + k, e.y0 + k);
+        bool ok = true;
+        for (int ch = 0; ch < 3; ++ch) {
+            ++p_.decision.add;
+            ++p_.decision.cmp;
+            if (abs_diff(int64_t(px[k][ch]) - int64_t(v[ch])) > lim_.fallback) ok = false;
+        }
+        return ok;
+    }
+    void send_fallback(const quadtree::cell& e, bool rows) {
+        for (unsigned y = e.y0; y < e.y0 + e.s; ++y) {
+            if (rows) {
+                p_.jobs.push_back(row_job(e.x0, y));
+            } else {
+                for (unsigned x = e.x0; x < e.x0 + e.s; ++x) p_.jobs.push_back(exact_job(x, y));
+            }
+        }
+    }
+
+private:
+    std::size_t idx(unsigned x, unsigned y) const { return r_.index(x, y); }
     const rgb_codes& colour(unsigned x, unsigned y) const { return col_[idx(x, y)]; }
 
     // (a): the lattice's second differences.
@@ -126,68 +135,6 @@ private:
         return true;
     }
 
-    void take(unsigned x0, unsigned y0, unsigned s) {
-        for (unsigned y = y0; y < y0 + s; ++y)
-            for (unsigned x = x0; x < x0 + s; ++x) taken_[idx(x, y)] = 1;
-    }
-
-    void band(unsigned by) {
-        std::vector<pending> level;
-        for (unsigned x0 = 0; x0 < W; x0 += t_.s_max) {
-            bool any = false;
-            for (unsigned y = by; y < std::min(H, by + t_.s_max) && !any; ++y)
-                for (unsigned x = x0; x < std::min(W, x0 + t_.s_max) && !any; ++x) any = r_.covered(x, y);
-            if (any) level.push_back({x0, by, t_.s_max, false, 0, 0});
-        }
-        for (unsigned s = t_.s_max; !level.empty(); s /= 2) {
-            const unsigned h = s / 2;
-            std::vector<uint8_t> is_whole(level.size());
-            for (std::size_t c = 0; c < level.size(); ++c) {
-                is_whole[c] = whole(level[c].x0, level[c].y0, s);
-                if (is_whole[c] && !level[c].family)  // with a family its lattice was read with it
-                    for (unsigned y = level[c].y0; y <= level[c].y0 + s; y += h)
-                        for (unsigned x = level[c].x0; x <= level[c].x0 + s; x += h) want(x, y);
-            }
-            flush();
-            std::vector<pending> next, fallback;
-            for (std::size_t c = 0; c < level.size(); ++c) {
-                const pending& e = level[c];
-                if (is_whole[c]) {
-                    if (second_differences_pass(e.x0, e.y0, s) &&
-                        (!e.family || third_differences_pass(e.x0, e.y0, s, e.px, e.py))) {
-                        send(e.x0, e.y0, s);
-                        continue;
-                    }
-                    if (s == t_.s_min) {
-                        fallback.push_back(e);
-                        continue;
-                    }
-                    // The children's lattices, their family, read before any of them decides.
-                    for (unsigned y = e.y0; y <= e.y0 + s; y += h / 2)
-                        for (unsigned x = e.x0; x <= e.x0 + s; x += h / 2) want(x, y);
-                }
-                if (s > t_.s_min)
-                    for (unsigned dy : {0u, h})
-                        for (unsigned dx : {0u, h}) next.push_back({e.x0 + dx, e.y0 + dy, h, bool(is_whole[c]), e.x0, e.y0});
-            }
-            flush();
-            if (!fallback.empty()) fallbacks(fallback);
-            level = std::move(next);
-        }
-    }
-
-    void send(unsigned x0, unsigned y0, unsigned s) {
-        cell_job cell;
-        cell.x0 = x0;
-        cell.y0 = y0;
-        cell.s = s;
-        for (unsigned i = 0; i < 3; ++i)
-            for (unsigned j = 0; j < 3; ++j) cell.lattice[3 * i + j] = smp_[idx(x0 + j * s / 2, y0 + i * s / 2)];
-        p_.cells.push_back(cell);
-        ++p_.sent[log2_of(s) - log2_of(t_.s_min)];
-        take(x0, y0, s);
-    }
-
     interval_job row_job(unsigned x0, unsigned y) const {
         interval_job job;
         job.y = y;
@@ -208,52 +155,10 @@ private:
         return job;
     }
 
-    // The smallest cells turned down: each row read at 0, s/2, s and sent as the quadratic through
-    // them, checked at (1, 1), then (3, 3); where a check misses, the cell's pixels exact.
-    void fallbacks(const std::vector<pending>& fallback) {
-        const unsigned m = t_.s_min;
-        for (const pending& e : fallback)
-            for (unsigned y = e.y0; y < e.y0 + m; ++y)
-                for (unsigned x = e.x0; x <= e.x0 + m; x += m / 2) want(x, y);
-        flush();
-        std::vector<uint8_t> rows_ok(fallback.size(), 1);
-        for (const unsigned k : {1u, 3u}) {
-            for (std::size_t c = 0; c < fallback.size(); ++c)
-                if (rows_ok[c]) want(fallback[c].x0 + k, fallback[c].y0 + k);
-            flush();
-            for (std::size_t c = 0; c < fallback.size(); ++c) {
-                if (!rows_ok[c]) continue;
-                const pending& e = fallback[c];
-                const auto px = interval_pixels(row_job(e.x0, e.y0 + k), k_, dev_, c_.eval, c_.set, c_.div);
-                const rgb_codes& v = colour(e.x0 + k, e.y0 + k);
-                for (int ch = 0; ch < 3; ++ch) {
-                    ++p_.decision.add;
-                    ++p_.decision.cmp;
-                    if (abs_diff(int64_t(px[k][ch]) - int64_t(v[ch])) > lim_.fallback) rows_ok[c] = 0;
-                }
-            }
-        }
-        for (std::size_t c = 0; c < fallback.size(); ++c)
-            if (!rows_ok[c])
-                for (unsigned y = fallback[c].y0; y < fallback[c].y0 + m; ++y)
-                    for (unsigned x = fallback[c].x0; x < fallback[c].x0 + m; ++x) want(x, y);
-        flush();
-        for (std::size_t c = 0; c < fallback.size(); ++c) {
-            const pending& e = fallback[c];
-            for (unsigned y = e.y0; y < e.y0 + m; ++y) {
-                if (rows_ok[c]) {
-                    p_.jobs.push_back(row_job(e.x0, y));
-                } else {
-                    for (unsigned x = e.x0; x < e.x0 + m; ++x) p_.jobs.push_back(exact_job(x, y));
-                }
-            }
-            ++(rows_ok[c] ? p_.fallback_rows : p_.fallback_exact);
-            take(e.x0, e.y0, m);
-        }
-    }
-
     // What no cell delivered: the adaptive length policy down the columns where their runs are the
-    // longer, then over the rest of each line.
+    // longer (quadtree::regions::column_runs), then over the rest of each line. The planner itself
+    // plans these runs, where the cells study's emulation (cell_tree.h) cuts them with the walk's
+    // regions and emulates the policy on each: that part is each side's own.
     void lines() {
         plan_config lc = c_;
         lc.length = length_policy::adaptive;
@@ -269,7 +174,7 @@ private:
         const std::size_t before = p_.points.size();
         std::vector<uint8_t> rows_taken = taken_;
         if (t_.column_ratio > 0.0) {
-            const std::vector<uint8_t> by_column = column_runs();
+            const std::vector<uint8_t> by_column = g_.column_runs(taken_, t_.column_ratio);
             const scene::rasterised rt = scene::transposed(r_);
             std::vector<uint8_t> others(rt.tri.size(), 1);  // the column planner's taken map
             for (unsigned y = 0; y < H; ++y)
@@ -294,42 +199,6 @@ private:
         }
     }
 
-    // The pixels no cell took whose run of such pixels down their column (joined where a pixel is
-    // one surface with the one below) is at least 5 and column_ratio x their run along their row
-    // (within one segment): a strip beside a silhouette that runs down the frame is long one way and
-    // a pixel or two wide the other (counters and compares on the taken map, not counted).
-    std::vector<uint8_t> column_runs() const {
-        const std::size_t n = r_.tri.size();
-        auto rest = [&](unsigned x, unsigned y) { return r_.covered(x, y) && !taken_[idx(x, y)]; };
-        std::vector<unsigned> row_run(n, 0), col_run(n, 0);
-        for (unsigned y = 0; y < H; ++y)
-            for (unsigned x = 0; x < W;) {
-                if (!rest(x, y)) {
-                    ++x;
-                    continue;
-                }
-                unsigned e = x + 1;
-                while (e < W && rest(e, y) && seg_[idx(e, y)] == seg_[idx(x, y)]) ++e;
-                for (unsigned i = x; i < e; ++i) row_run[idx(i, y)] = e - x;
-                x = e;
-            }
-        for (unsigned x = 0; x < W; ++x)
-            for (unsigned y = 0; y < H;) {
-                if (!rest(x, y)) {
-                    ++y;
-                    continue;
-                }
-                unsigned e = y + 1;
-                while (e < H && rest(x, e) && down_[idx(x, e - 1)]) ++e;
-                for (unsigned i = y; i < e; ++i) col_run[idx(x, i)] = e - y;
-                y = e;
-            }
-        std::vector<uint8_t> out(n, 0);
-        for (std::size_t i = 0; i < n; ++i)
-            out[i] = col_run[i] >= 5 && double(col_run[i]) >= t_.column_ratio * double(row_run[i]);
-        return out;
-    }
-
     const scene::rasterised& r_;
     const frame_constants& k_;
     const scene::device_config& dev_;
@@ -338,12 +207,10 @@ private:
     const cell_limits lim_;
     cell_plan& p_;
     const unsigned W, H;
-    std::vector<int32_t> seg_;     // each covered pixel's segment (a running number over the frame)
-    std::vector<uint8_t> down_;    // one surface with the pixel below
+    const quadtree::regions g_;    // each covered pixel's segment; one surface with the pixel below
     std::vector<uint8_t> read_, taken_;
     std::vector<sample_geometry> smp_;
     std::vector<rgb_codes> col_;
-    std::vector<pixel> batch_;
 };
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "line_kinks.h"
+#include "golden_pipeline/quadtree.h"
 
 namespace shading::study {
 
@@ -21,10 +21,7 @@ std::array<double, 3> quadratic_weights(double t, double h) {
 
 bool power_of_two(unsigned v) { return v != 0 && (v & (v - 1)) == 0; }
 
-// Raster order: line by line, left to right.
-bool raster_before(const std::array<unsigned, 2>& a, const std::array<unsigned, 2>& b) {
-    return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
-}
+using pipeline::quadtree::raster_before;
 
 }  // namespace
 
@@ -63,76 +60,68 @@ double family_third_difference(const std::vector<rgb_levels>& colour, unsigned w
     return d * k3;
 }
 
-cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
-                         const pipeline::plan_config& cfg, const cell_tree_config& t) {
-    if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_cells: colours and raster differ in size");
-    if (!power_of_two(t.s_min) || !power_of_two(t.s_max) || t.s_min < 4 || t.s_max < t.s_min || t.s_max > 256)
-        throw std::invalid_argument("emulate_cells: needs cell sizes, powers of two, 4 <= s_min <= s_max <= 256");
-    if (!(t.tol > 0.0) || !(t.d2_factor > 0.0) || !(t.d3_factor > 0.0) || !(t.fallback_tol > 0.0) ||
-        !(t.line_tol > 0.0) || !(t.column_ratio > 0.0))
-        throw std::invalid_argument("emulate_cells: tolerances and factors must be positive");
-    const unsigned W = r.width, H = r.height;
-    auto idx = [W](unsigned x, unsigned y) { return std::size_t(y) * W + x; };
-    auto covered = [&](unsigned x, unsigned y) { return r.tri[idx(x, y)] >= 0; };
+namespace {
 
-    // Each covered pixel's segment (a running number over the frame) and whether it is one patch with
-    // the pixel below.
-    std::vector<int32_t> seg(r.tri.size(), -1);
-    int32_t next = 0;
-    for (unsigned y = 0; y < H; ++y)
-        for (const auto& s : pipeline::line_segments(r, y, cfg, nullptr)) {
-            for (unsigned x = s[0]; x <= s[1]; ++x) seg[idx(x, y)] = next;
-            ++next;
-        }
-    std::vector<uint8_t> down(r.tri.size(), 0);
-    for (unsigned y = 0; y + 1 < H; ++y)
-        for (unsigned x = 0; x < W; ++x) {
-            const int32_t a = r.tri[idx(x, y)], b = r.tri[idx(x, y + 1)];
-            down[idx(x, y)] = a >= 0 && b >= 0 && one_patch(r, a, b);
-        }
-    auto whole = [&](unsigned x0, unsigned y0, unsigned s) {
-        if (x0 + s >= W || y0 + s >= H) return false;
-        for (unsigned y = y0; y <= y0 + s; ++y)
-            for (unsigned x = x0; x <= x0 + s; ++x) {
-                if (seg[idx(x, y)] < 0 || seg[idx(x, y)] != seg[idx(x0, y)]) return false;
-                if (y < y0 + s && !down[idx(x, y)]) return false;
-            }
-        return true;
-    };
+// The emulation's side of the quadtree walk (golden_pipeline/quadtree.h): the colours per-pixel
+// shading gives, decided in levels on the lattices' differences, or with perfect on the true RMS of
+// what a cell would send.
+class emulated_side {
+public:
+    emulated_side(const scene::rasterised& r, const std::vector<rgb_levels>& colour, const cell_tree_config& t,
+                  cell_frame& f)
+        : r_(r), colour_(colour), t_(t), f_(f), W(r.width) {}
 
-    cell_frame f;
-    f.out = colour;
-    f.point.assign(colour.size(), 0);
-    unsigned levels = 0;
-    for (unsigned s = t.s_min; s <= t.s_max; s *= 2) ++levels;
-    f.sent.assign(levels, 0);
-    std::vector<uint8_t> done(colour.size(), 0);
-    auto read = [&](unsigned x, unsigned y) {
-        if (covered(x, y) && !f.point[idx(x, y)]) {
-            f.point[idx(x, y)] = 1;
-            f.order.push_back({x, y});
+    void read(unsigned x, unsigned y) {
+        if (r_.covered(x, y) && !f_.point[idx(x, y)]) {
+            f_.point[idx(x, y)] = 1;
+            f_.order.push_back({x, y});
         }
-    };
-    auto rms = [&](const std::vector<rgb_levels>& p, unsigned x0, unsigned y0, unsigned s) {
+    }
+    bool accept(const pipeline::quadtree::cell& e) const {
+        if (t_.perfect) return rms(biquadratic(e.x0, e.y0, e.s), e.x0, e.y0, e.s) <= t_.tol;
+        return lattice_second_difference(colour_, W, e.x0, e.y0, e.s) <= t_.d2_factor * t_.tol &&
+               (!e.family || family_third_difference(colour_, W, e.x0, e.y0, e.s, e.px, e.py) <= t_.d3_factor * t_.tol);
+    }
+    void send(const pipeline::quadtree::cell& e) { deliver(biquadratic(e.x0, e.y0, e.s), e.x0, e.y0, e.s); }
+    // perfect: the check points are read all the same.
+    bool reads_every_check() const { return t_.perfect; }
+    bool rows_pass(const pipeline::quadtree::cell& e, unsigned k) const {
+        const std::vector<rgb_levels> q = rows(e);
+        if (t_.perfect) return rms(q, e.x0, e.y0, e.s) <= t_.fallback_tol;
+        const rgb_levels& v = colour_[idx(e.x0 + k, e.y0 + k)];
+        const rgb_levels& p = q[std::size_t(k) * e.s + k];
+        return largest({p[0] - v[0], p[1] - v[1], p[2] - v[2]}) <= t_.fallback_tol;
+    }
+    void send_fallback(const pipeline::quadtree::cell& e, bool with_rows) {
+        if (with_rows) {
+            deliver(rows(e), e.x0, e.y0, e.s);
+            return;
+        }
+        std::vector<rgb_levels> exact(std::size_t(e.s) * e.s);
+        for (unsigned y = 0; y < e.s; ++y)
+            for (unsigned x = 0; x < e.s; ++x) exact[std::size_t(y) * e.s + x] = colour_[idx(e.x0 + x, e.y0 + y)];
+        deliver(exact, e.x0, e.y0, e.s);
+    }
+
+private:
+    std::size_t idx(unsigned x, unsigned y) const { return std::size_t(y) * W + x; }
+
+    double rms(const std::vector<rgb_levels>& p, unsigned x0, unsigned y0, unsigned s) const {
         double e = 0.0;
         for (unsigned y = 0; y < s; ++y)
             for (unsigned x = 0; x < s; ++x)
                 for (int ch = 0; ch < 3; ++ch) {
-                    const double d = p[std::size_t(y) * s + x][ch] - colour[idx(x0 + x, y0 + y)][ch];
+                    const double d = p[std::size_t(y) * s + x][ch] - colour_[idx(x0 + x, y0 + y)][ch];
                     e += d * d;
                 }
         return std::sqrt(e / (3.0 * s * s));
-    };
-    auto deliver = [&](const std::vector<rgb_levels>& p, unsigned x0, unsigned y0, unsigned s) {
+    }
+    void deliver(const std::vector<rgb_levels>& p, unsigned x0, unsigned y0, unsigned s) {
         for (unsigned y = 0; y < s; ++y)
-            for (unsigned x = 0; x < s; ++x) {
-                f.out[idx(x0 + x, y0 + y)] = p[std::size_t(y) * s + x];
-                done[idx(x0 + x, y0 + y)] = 1;
-            }
-    };
-
+            for (unsigned x = 0; x < s; ++x) f_.out[idx(x0 + x, y0 + y)] = p[std::size_t(y) * s + x];
+    }
     // The biquadratic through the lattice of the cell at (x0, y0) of s pixels.
-    auto biquadratic = [&](unsigned x0, unsigned y0, unsigned s) {
+    std::vector<rgb_levels> biquadratic(unsigned x0, unsigned y0, unsigned s) const {
         const unsigned h = s / 2;
         std::vector<rgb_levels> p(std::size_t(s) * s, rgb_levels{0.0, 0.0, 0.0});
         for (unsigned y = 0; y < s; ++y) {
@@ -142,167 +131,68 @@ cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_level
                 rgb_levels& o = p[std::size_t(y) * s + x];
                 for (unsigned i = 0; i < 3; ++i)
                     for (unsigned j = 0; j < 3; ++j)
-                        for (int ch = 0; ch < 3; ++ch) o[ch] += wy[i] * wx[j] * colour[idx(x0 + j * h, y0 + i * h)][ch];
+                        for (int ch = 0; ch < 3; ++ch)
+                            o[ch] += wy[i] * wx[j] * colour_[idx(x0 + j * h, y0 + i * h)][ch];
             }
         }
         return p;
-    };
-    // Reads are batched: a level's points are read together, in raster order across the band, before
-    // any cell of the level decides (a geometry unit steps along each line through them).
-    std::vector<std::array<unsigned, 2>> batch;
-    auto want = [&](unsigned x, unsigned y) { batch.push_back({x, y}); };
-    auto flush = [&] {
-        std::sort(batch.begin(), batch.end(), raster_before);
-        for (const auto& p : batch) read(p[0], p[1]);
-        batch.clear();
-    };
-    struct pending {
-        unsigned x0, y0, s;
-        bool family;  // its parent was whole: the family lattice over (px, py) was read
-        unsigned px, py;
-    };
-    for (unsigned by = 0; by < H; by += t.s_max) {
-        // Band by band (s_max lines and the lattice row below them), level by level.
-        std::vector<pending> level;
-        for (unsigned x0 = 0; x0 < W; x0 += t.s_max) {
-            bool any = false;
-            for (unsigned y = by; y < std::min(H, by + t.s_max) && !any; ++y)
-                for (unsigned x = x0; x < std::min(W, x0 + t.s_max) && !any; ++x) any = covered(x, y);
-            if (any) level.push_back({x0, by, t.s_max, false, 0, 0});
-        }
-        for (unsigned s = t.s_max; !level.empty(); s /= 2) {
-            const unsigned h = s / 2;
-            std::vector<uint8_t> is_whole(level.size());
-            for (std::size_t c = 0; c < level.size(); ++c) {
-                is_whole[c] = whole(level[c].x0, level[c].y0, s);
-                if (is_whole[c] && !level[c].family)  // with a family its lattice was read with it
-                    for (unsigned y = level[c].y0; y <= level[c].y0 + s; y += h)
-                        for (unsigned x = level[c].x0; x <= level[c].x0 + s; x += h) want(x, y);
-            }
-            flush();
-            std::vector<pending> next, fallback;
-            for (std::size_t c = 0; c < level.size(); ++c) {
-                const pending& e = level[c];
-                if (is_whole[c]) {
-                    const std::vector<rgb_levels> p = biquadratic(e.x0, e.y0, s);
-                    const bool ok = t.perfect ? rms(p, e.x0, e.y0, s) <= t.tol
-                                              : lattice_second_difference(colour, W, e.x0, e.y0, s) <= t.d2_factor * t.tol &&
-                                                    (!e.family || family_third_difference(colour, W, e.x0, e.y0, s, e.px, e.py) <=
-                                                                      t.d3_factor * t.tol);
-                    if (ok) {
-                        deliver(p, e.x0, e.y0, s);
-                        unsigned k = 0;
-                        while ((t.s_min << k) < s) ++k;
-                        ++f.sent[k];
-                        continue;
-                    }
-                    if (s == t.s_min) {
-                        fallback.push_back(e);
-                        continue;
-                    }
-                    // The children's lattices, their family, read before any of them decides.
-                    for (unsigned y = e.y0; y <= e.y0 + s; y += h / 2)
-                        for (unsigned x = e.x0; x <= e.x0 + s; x += h / 2) want(x, y);
-                }
-                if (s > t.s_min)
-                    for (unsigned dy : {0u, h})
-                        for (unsigned dx : {0u, h}) next.push_back({e.x0 + dx, e.y0 + dy, h, bool(is_whole[c]), e.x0, e.y0});
-            }
-            flush();
-            if (!fallback.empty()) {
-                // The smallest cells turned down: every row read at 0, 2, 4 and sent as the quadratic
-                // through them, checked at (1, 1), then (3, 3); where a check misses, the pixels exact.
-                const unsigned m = t.s_min;
-                for (const pending& e : fallback)
-                    for (unsigned y = e.y0; y < e.y0 + m; ++y)
-                        for (unsigned x = e.x0; x <= e.x0 + m; x += 2) want(x, y);
-                flush();
-                std::vector<std::vector<rgb_levels>> q(fallback.size());
-                std::vector<uint8_t> rows_ok(fallback.size(), 1);
-                for (std::size_t c = 0; c < fallback.size(); ++c) {
-                    const pending& e = fallback[c];
-                    q[c].assign(std::size_t(m) * m, rgb_levels{0.0, 0.0, 0.0});
-                    for (unsigned y = 0; y < m; ++y)
-                        for (unsigned x = 0; x < m; ++x) {
-                            const auto w = quadratic_weights(x, 2.0);
-                            for (unsigned j = 0; j < 3; ++j)
-                                for (int ch = 0; ch < 3; ++ch)
-                                    q[c][std::size_t(y) * m + x][ch] += w[j] * colour[idx(e.x0 + 2 * j, e.y0 + y)][ch];
-                        }
-                    if (t.perfect) rows_ok[c] = rms(q[c], e.x0, e.y0, m) <= t.fallback_tol;
-                }
-                for (const unsigned k : {1u, 3u}) {
-                    for (std::size_t c = 0; c < fallback.size(); ++c)
-                        if (rows_ok[c] || t.perfect) want(fallback[c].x0 + k, fallback[c].y0 + k);  // perfect: still read
-                    flush();
-                    if (t.perfect) continue;
-                    for (std::size_t c = 0; c < fallback.size(); ++c) {
-                        if (!rows_ok[c]) continue;
-                        const rgb_levels& v = colour[idx(fallback[c].x0 + k, fallback[c].y0 + k)];
-                        const rgb_levels& e = q[c][std::size_t(k) * m + k];
-                        rows_ok[c] = largest({e[0] - v[0], e[1] - v[1], e[2] - v[2]}) <= t.fallback_tol;
-                    }
-                }
-                for (std::size_t c = 0; c < fallback.size(); ++c)
-                    if (!rows_ok[c])
-                        for (unsigned y = fallback[c].y0; y < fallback[c].y0 + m; ++y)
-                            for (unsigned x = fallback[c].x0; x < fallback[c].x0 + m; ++x) want(x, y);
-                flush();
-                for (std::size_t c = 0; c < fallback.size(); ++c) {
-                    if (rows_ok[c]) {
-                        deliver(q[c], fallback[c].x0, fallback[c].y0, m);
-                        ++f.fallback_rows;
-                    } else {
-                        std::vector<rgb_levels> exact(std::size_t(m) * m);
-                        for (unsigned y = 0; y < m; ++y)
-                            for (unsigned x = 0; x < m; ++x)
-                                exact[std::size_t(y) * m + x] = colour[idx(fallback[c].x0 + x, fallback[c].y0 + y)];
-                        deliver(exact, fallback[c].x0, fallback[c].y0, m);
-                        ++f.fallback_exact;
-                    }
-                }
-            }
-            level = std::move(next);
-        }
     }
-    for (std::size_t i = 0; i < done.size(); ++i) f.pixels_cells += done[i];
-
-    // Runs of the pixels where `in` holds, along rows (joined within one segment) or down columns
-    // (joined where a pixel is one patch with the one below), each handed to fn in order.
-    using pixel = std::array<unsigned, 2>;
-    auto runs = [&](bool columns, const auto& in, const auto& fn) {
-        const unsigned outer = columns ? W : H, inner = columns ? H : W;
-        for (unsigned a = 0; a < outer; ++a)
-            for (unsigned b = 0; b < inner;) {
-                auto at = [&](unsigned k) { return columns ? pixel{a, k} : pixel{k, a}; };
-                const pixel first = at(b);
-                if (!in(first[0], first[1])) {
-                    ++b;
-                    continue;
-                }
-                std::vector<pixel> px{first};
-                while (b + px.size() < inner) {
-                    const pixel q = at(b + unsigned(px.size())), last = px.back();
-                    const bool joined = columns ? down[idx(last[0], last[1])] != 0
-                                                : seg[idx(q[0], q[1])] == seg[idx(first[0], first[1])];
-                    if (!joined || !in(q[0], q[1])) break;
-                    px.push_back(q);
-                }
-                fn(px);
-                b += unsigned(px.size());
+    // A fallback's rows: each the quadratic through its pixels 0, 2 and 4.
+    std::vector<rgb_levels> rows(const pipeline::quadtree::cell& e) const {
+        const unsigned m = e.s;
+        std::vector<rgb_levels> q(std::size_t(m) * m, rgb_levels{0.0, 0.0, 0.0});
+        for (unsigned y = 0; y < m; ++y)
+            for (unsigned x = 0; x < m; ++x) {
+                const auto w = quadratic_weights(x, 2.0);
+                for (unsigned j = 0; j < 3; ++j)
+                    for (int ch = 0; ch < 3; ++ch)
+                        q[std::size_t(y) * m + x][ch] += w[j] * colour_[idx(e.x0 + 2 * j, e.y0 + y)][ch];
             }
-    };
+        return q;
+    }
 
-    // What no cell delivered: the run each pixel lies in along its row and along its column.
+    const scene::rasterised& r_;
+    const std::vector<rgb_levels>& colour_;
+    const cell_tree_config& t_;
+    cell_frame& f_;
+    const unsigned W;
+};
+
+}  // namespace
+
+cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
+                         const pipeline::plan_config& cfg, const cell_tree_config& t) {
+    if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_cells: colours and raster differ in size");
+    if (!power_of_two(t.s_min) || !power_of_two(t.s_max) || t.s_min < 4 || t.s_max < t.s_min || t.s_max > 256)
+        throw std::invalid_argument("emulate_cells: needs cell sizes, powers of two, 4 <= s_min <= s_max <= 256");
+    if (!(t.tol > 0.0) || !(t.d2_factor > 0.0) || !(t.d3_factor > 0.0) || !(t.fallback_tol > 0.0) ||
+        !(t.line_tol > 0.0) || !(t.column_ratio > 0.0))
+        throw std::invalid_argument("emulate_cells: tolerances and factors must be positive");
+    const unsigned W = r.width;
+    auto idx = [W](unsigned x, unsigned y) { return std::size_t(y) * W + x; };
+    auto covered = [&](unsigned x, unsigned y) { return r.tri[idx(x, y)] >= 0; };
+
+    // The cells: the walk the bit-accurate cells take, on these colours.
+    const pipeline::quadtree::regions g(r, cfg, nullptr);
+    cell_frame f;
+    f.out = colour;
+    f.point.assign(colour.size(), 0);
+    emulated_side side(r, colour, t, f);
+    pipeline::quadtree::tally w = pipeline::quadtree::walk_cells(g, t.s_min, t.s_max, side);
+    f.sent = std::move(w.sent);
+    f.fallback_rows = w.fallback_rows;
+    f.fallback_exact = w.fallback_exact;
+    f.pixels_cells = w.pixels;
+    std::vector<uint8_t> done = std::move(w.taken);
+
+    // What no cell delivered, in runs down the columns where their runs are the longer (the same
+    // pixels as the bit-accurate cells'), then along the rows. Kept apart from the bit-accurate cells,
+    // which hand these pixels to the planner itself (make_plan, on the transposed frame for the
+    // columns): here each run goes to the emulated adaptive policy, in the runs the walk's regions
+    // cut. Along rows they are the planner's; down a column the planner also cuts at depth steps, and
+    // at folds only with surface_breaks.
+    using pixel = pipeline::quadtree::pixel;
     const std::size_t before_lines = f.order.size();
-    std::vector<std::size_t> row_run(colour.size(), 0), col_run(colour.size(), 0);
-    auto left = [&](unsigned x, unsigned y) { return covered(x, y) && !done[idx(x, y)]; };
-    runs(false, left, [&](const std::vector<pixel>& px) {
-        for (const auto& p : px) row_run[idx(p[0], p[1])] = px.size();
-    });
-    runs(true, left, [&](const std::vector<pixel>& px) {
-        for (const auto& p : px) col_run[idx(p[0], p[1])] = px.size();
-    });
     adaptive_emulation line;
     line.tol = t.line_tol;
     line.m_max = t.line_m_max;
@@ -314,19 +204,18 @@ cell_frame emulate_cells(const scene::rasterised& r, const std::vector<rgb_level
         for (const auto& p : px) v.push_back(colour[idx(p[0], p[1])]);
         const emulated_run er = emulate_adaptive(v, line);
         for (std::size_t k = 0; k < px.size(); ++k) {
-            if (er.point[k]) read(px[k][0], px[k][1]);
+            if (er.point[k]) side.read(px[k][0], px[k][1]);
             f.out[idx(px[k][0], px[k][1])] = er.out[k];
             done[idx(px[k][0], px[k][1])] = 1;
         }
     };
-    std::vector<uint8_t> by_column(colour.size(), 0);
-    for (std::size_t i = 0; i < colour.size(); ++i)
-        by_column[i] = r.tri[i] >= 0 && !done[i] && col_run[i] >= 5 && double(col_run[i]) >= t.column_ratio * double(row_run[i]);
-    runs(true, [&](unsigned x, unsigned y) { return by_column[idx(x, y)] != 0; }, [&](const std::vector<pixel>& px) {
+    const std::vector<uint8_t> by_column = g.column_runs(done, t.column_ratio);
+    g.runs(true, [&](unsigned x, unsigned y) { return by_column[idx(x, y)] != 0; }, [&](const std::vector<pixel>& px) {
         f.pixels_columns += px.size();
         run(px);
     });
-    runs(false, left, [&](const std::vector<pixel>& px) {
+    auto left = [&](unsigned x, unsigned y) { return covered(x, y) && !done[idx(x, y)]; };
+    g.runs(false, left, [&](const std::vector<pixel>& px) {
         f.pixels_rows += px.size();
         run(px);
     });

@@ -19,12 +19,14 @@
 
 namespace shading::study {
 
-// The scheme, in the order it runs, band by band (s_max lines) and in each band level by level, every
+// The scheme, in the order it runs (the bit-accurate cells' walk, golden_pipeline/quadtree.h, with
+// this emulation's decisions), band by band (s_max lines) and in each band level by level, every
 // level's reads batched in raster order across the band before any of its cells decides:
 //  - tiles of s_max x s_max pixels, aligned to the frame; a cell [x0, x0 + s) x [y0, y0 + s) is
 //    *whole* when every pixel of its closed box [x0, x0 + s] x [y0, y0 + s] is covered, each row of
 //    the box lies in one of the planner's segments (pipeline::line_segments: no silhouette, fold or
-//    depth step along it) and each pixel of the box is one patch (one_patch) with the one below it;
+//    depth step along it) and each pixel of the box is one patch with the one below it (no
+//    pipeline::surface_break: the same triangle, or two of one object sharing a vertex);
 //  - a whole cell reads its lattice, the 3 x 3 pixels at (x0 + i s/2, y0 + j s/2), and is sent as
 //    the biquadratic through them (a quadratic through 0, s/2, s along each lattice column, then along
 //    each row) when
