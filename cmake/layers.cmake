@@ -7,14 +7,17 @@
 #                       checked against)
 #   src/golden/**       the floor, the references and the golden models
 #   src/scene/**        the layers above and GLM; src/golden_pipeline/** those and the scene
-#   src/tools/**, testbenches/**, fuzz/**: any layer, named by its prefix
+#   src/tools/**, testbenches/**, fuzz/**: any layer, named by its prefix, but a study
+#   studies/** (and testbenches/study/**, studies still waiting to move there): any layer and the
+#                       studies ("studies/..."); the model and the programs never include a study
 # An include names its layer by its first folder, and each first folder belongs to one layer only:
 # formats/ and arith/ are the floor's (include root src/floor); golden/, reference/, scene/,
 # golden_pipeline/ are src/'s; every folder of modules/ (core/, specular/, pipeline/, ...) is the
-# modules'; testbenches/ is the testbenches' (include root: the project root). A name whose first
-# folder is none of these ("common/x.h" for testbenches/common/x.h), or is a path ("src/golden/g.h",
-# "modules/core/x.h"), breaks the rule; so does a folder name used under two roots (the check's
-# first step). A quoted name is first looked up beside the including file, as the compiler does.
+# modules'; testbenches/ is the testbenches', studies/ the studies' (include root: the project root).
+# A name whose first folder is none of these ("common/x.h" for testbenches/common/x.h), or is a path
+# ("src/golden/g.h", "modules/core/x.h"), breaks the rule; so does a folder name used under two roots
+# (the check's first step). A quoted name is first looked up beside the including file, as the
+# compiler does.
 #
 # Two uses:
 #   include(cmake/layers.cmake) from CMakeLists.txt: checks the source tree when CMake configures
@@ -31,7 +34,7 @@ set(SHADING_LAYERS_SCRIPT ${CMAKE_CURRENT_LIST_FILE})
 
 # The layer an include names, from the including file's folder `dir` (absolute), the include's name
 # and its delimiter (quote or angle). Sets out to floor, modules, reference, golden, scene,
-# src_pipeline, tools, testbenches, systemc, glm, generated, path (a path from the project root, not
+# src_pipeline, tools, testbenches, studies, systemc, glm, generated, path (a path from the project root, not
 # a layer's prefix), unknown (quoted, found nowhere) or system.
 function(_shading_include_layer root dir name delim out)
   set(layer system)
@@ -56,6 +59,8 @@ function(_shading_include_layer root dir name delim out)
     set(layer src_pipeline)
   elseif(first STREQUAL "testbenches" AND EXISTS "${root}/${name}")
     set(layer testbenches)
+  elseif(first STREQUAL "studies" AND EXISTS "${root}/${name}")
+    set(layer studies)
   elseif(first STREQUAL "src" OR first STREQUAL "modules" OR first STREQUAL "fuzz")
     set(layer path)
   elseif(first AND EXISTS "${root}/modules/${name}")
@@ -90,6 +95,8 @@ function(_shading_file_layer rel out)
     set(layer src_pipeline)
   elseif(rel MATCHES "^src/tools/")
     set(layer tools)
+  elseif(rel MATCHES "^(studies|testbenches/study)/")
+    set(layer studies)
   elseif(rel MATCHES "^(testbenches|fuzz)/")
     set(layer testbenches)
   endif()
@@ -99,7 +106,7 @@ endfunction()
 # The files the rules cover, absolute paths.
 function(_shading_layer_files root out)
   set(globs "")
-  foreach(d modules src testbenches fuzz)
+  foreach(d modules src testbenches fuzz studies)
     list(APPEND globs "${root}/${d}/*.h" "${root}/${d}/*.hpp" "${root}/${d}/*.cpp")
   endforeach()
   file(GLOB_RECURSE files LIST_DIRECTORIES false ${globs})
@@ -113,7 +120,7 @@ endfunction()
 function(_shading_check_prefixes root problems_var count_var)
   set(problems "${${problems_var}}")
   set(count ${${count_var}})
-  set(seen testbenches src modules fuzz)
+  set(seen testbenches src modules fuzz studies)
   foreach(e IN LISTS seen)
     set(where_${e} "${e}/")
   endforeach()
@@ -154,6 +161,7 @@ function(shading_check_layers root)
   set(allowed_tools floor reference golden modules systemc generated system)
   set(allowed_testbenches floor reference golden scene src_pipeline modules testbenches systemc glm
       generated system)
+  set(allowed_studies ${allowed_testbenches} studies)
   set(what_modules "a module may include modules/, the floor (formats/, arith/) and SystemC only")
   set(what_floor "the floor may include the floor (formats/, arith/) and the standard library only")
   set(what_reference "a reference may include the floor and the references only, never a golden model")
@@ -164,6 +172,7 @@ function(shading_check_layers root)
   set(what_testbenches "a testbench names a layer by its prefix (formats/, arith/, reference/, "
       "golden/, scene/, golden_pipeline/, a modules/ folder, testbenches/) or a file beside it")
   string(JOIN "" what_testbenches ${what_testbenches})
+  set(what_studies "${what_testbenches}, or a study (studies/)")
   set(what_path "an include names its layer's prefix, not a path from the project root")
   set(what_unknown "the name is found neither beside the file nor under a layer's prefix")
   set(problems "")
@@ -219,7 +228,8 @@ shading_check_layers("${PROJECT_SOURCE_DIR}")
 _shading_layer_files("${PROJECT_SOURCE_DIR}" _shading_layer_inputs)
 file(GLOB_RECURSE _shading_layer_glob CONFIGURE_DEPENDS LIST_DIRECTORIES false
      ${PROJECT_SOURCE_DIR}/modules/*.h ${PROJECT_SOURCE_DIR}/src/*.h ${PROJECT_SOURCE_DIR}/src/*.cpp
-     ${PROJECT_SOURCE_DIR}/testbenches/*.h ${PROJECT_SOURCE_DIR}/fuzz/*.h)  # re-configure on a new file
+     ${PROJECT_SOURCE_DIR}/testbenches/*.h ${PROJECT_SOURCE_DIR}/fuzz/*.h
+     ${PROJECT_SOURCE_DIR}/studies/*.h)  # re-configure on a new file
 add_custom_command(
   OUTPUT ${PROJECT_BINARY_DIR}/layers.stamp
   COMMAND ${CMAKE_COMMAND} -DSHADING_LAYERS_ROOT=${PROJECT_SOURCE_DIR} -P ${SHADING_LAYERS_SCRIPT}
