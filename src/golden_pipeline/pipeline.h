@@ -10,6 +10,7 @@
 //   interval_job / interval_pixels                       one interval          (floor: arith/pipeline_arith.*)
 //   frame_constants_of / sample_of / golden_interval     from a scene, checked (golden_pipeline.cpp)
 //   plan_config / make_plan                              the geometry side     (plan.cpp)
+//   length_decider / plan_of_jobs                        its seams for studies (plan.cpp)
 //   head_zone / zone names                               the Fig. 5 zone map   (zones.cpp)
 //   golden_frame / hardware_ops / metrics                a whole frame         (golden_pipeline.cpp, metrics.cpp)
 #pragma once
