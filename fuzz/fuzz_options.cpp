@@ -294,10 +294,7 @@ std::optional<int> render_pipeline(int argc, char** argv) {
     if (auto rc = rp::parse_render_pipeline(argc, argv, o)) return rc;
     FUZZ_CHECK(within(o.size, 1u, rp::max_size), "--size %u", o.size);
     FUZZ_CHECK(o.n == -1 || within(o.n, 1, 1000), "--n %d", o.n);
-    FUZZ_CHECK(in({"fixed", "adaptive", "geometry", "optimal"}, o.length), "--length '%s'", o.length.c_str());
-    FUZZ_CHECK(in({"interpolation", "total"}, o.optimal_reference), "--optimal-reference '%s'",
-               o.optimal_reference.c_str());
-    FUZZ_CHECK(o.pc.optimal_nmse >= 0.0 && o.pc.optimal_nmse <= 1.0, "--optimal-nmse %g", o.pc.optimal_nmse);
+    FUZZ_CHECK(in({"fixed", "adaptive", "geometry"}, o.length), "--length '%s'", o.length.c_str());
     FUZZ_CHECK(in({"cubic", "quadratic", "zones", "adaptive", "geometry"}, o.degree), "--degree '%s'", o.degree.c_str());
     FUZZ_CHECK(in({"horner", "fd"}, o.eval), "--eval '%s'", o.eval.c_str());
     FUZZ_CHECK(in({"case1", "case2"}, o.set), "--set '%s'", o.set.c_str());
@@ -307,8 +304,6 @@ std::optional<int> render_pipeline(int argc, char** argv) {
     FUZZ_CHECK(in(modes, o.mode), "--mode '%s'", o.mode.c_str());
     FUZZ_CHECK(in({"stepped", "scratch"}, o.unit), "--unit '%s'", o.unit.c_str());
     FUZZ_CHECK(within(o.pc.above_slack, -1, int(shading::interp::m_max)), "--above-slack %d", o.pc.above_slack);
-    FUZZ_CHECK(within(o.pc.optimal_from_above, -1, int(shading::pipeline::optimal_window_max)),
-               "--optimal-from-above %d", o.pc.optimal_from_above);
     FUZZ_CHECK(in(abstractions, o.abstraction), "--abstraction '%s'", o.abstraction.c_str());
     FUZZ_CHECK(in({"small", "full", "exponents", "claims"}, o.grid), "--grid '%s'", o.grid.c_str());
     FUZZ_CHECK(positive(o.pc.lobe_tol) && positive(o.pc.depth_step), "--lobe-tol %g --depth-step %g", o.pc.lobe_tol,

@@ -168,7 +168,6 @@ private:
         lc.length_tol = t_.line_tol;
         lc.split_at_check = true;
         lc.exact_fallback = true;
-        lc.perfect_decisions = false;
         lc.above_slack = -1;
         lc.lit_guard = false;
         const std::size_t before = p_.points.size();

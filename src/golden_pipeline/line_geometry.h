@@ -1,6 +1,6 @@
-// The geometry side's per-line machinery shared by the length policies (plan.cpp) and the optimum
-// (optimal.cpp): a raster line's segments, and its geometry computed once per pixel and counted once.
-// Internal to src/golden_pipeline: the contract is pipeline.h.
+// The geometry side's per-line machinery shared by the length policies and plan_of_jobs (plan.cpp) and
+// the cells (cells.cpp): a raster line's segments, and its geometry computed once per pixel and counted
+// once. Internal to src/golden_pipeline: the contract is pipeline.h.
 #pragma once
 
 #include <array>
@@ -11,13 +11,6 @@
 #include "scene/scanline.h"
 
 namespace shading::pipeline {
-
-// Sample points of an interval as fractions of N in eighths (t = k/8): the sets of pipeline.h.
-// Cubic case 1: 0, 1/4, 1/2, 1; case 2: 0, 1/2, 3/4, 1. Quadratic: 0, 1/2, 1.
-inline std::array<unsigned, 4> cubic_points(interp::sample_set set) {
-    return set == interp::sample_set::case1 ? std::array<unsigned, 4>{0, 2, 4, 8} : std::array<unsigned, 4>{0, 4, 6, 8};
-}
-inline constexpr std::array<unsigned, 3> quad_points{0, 4, 8};
 
 // Whether the visible surface jumps to another part of the mesh between the covered pixels of
 // raster indices a and b: their triangles share no vertex or lie on different objects (a fold; the

@@ -10,6 +10,7 @@
 //   interval_job / interval_pixels                       one interval          (floor: arith/pipeline_arith.*)
 //   frame_constants_of / sample_of / golden_interval     from a scene, checked (golden_pipeline.cpp)
 //   plan_config / make_plan                              the geometry side     (plan.cpp)
+//   length_decider / plan_of_jobs                        its seams for studies (plan.cpp)
 //   head_zone / zone names                               the Fig. 5 zone map   (zones.cpp)
 //   golden_frame / hardware_ops / metrics                a whole frame         (golden_pipeline.cpp, metrics.cpp)
 #pragma once
@@ -68,9 +69,7 @@ const char* geometry_unit_name(geometry_unit u);  // "stepped", "scratch"
 // k_s I, k_d I and the tolerance, computed once per frame like the device's a(n)); see plan.cpp.
 // `adaptive` reads exact colours (the sample stage's output) at a check point, which no modelled
 // hardware returns to the geometry side: policy_runs_on_geometry_side() says which can run there.
-// `optimal` is no policy but a yardstick (optimal.cpp): knowing every pixel's colour and its reference,
-// it chooses lengths and degrees both to need the fewest geometry points for a given NMSE.
-enum class length_policy { fixed, adaptive, geometry, optimal };
+enum class length_policy { fixed, adaptive, geometry };
 enum class degree_policy { cubic, quadratic, zones, adaptive, geometry };
 const char* length_policy_name(length_policy p);  // "fixed", "adaptive", "geometry"
 const char* degree_policy_name(degree_policy p);  // "cubic", "quadratic", "zones", "adaptive", "geometry"
@@ -78,6 +77,13 @@ const char* degree_policy_name(degree_policy p);  // "cubic", "quadratic", "zone
 // positions and per-frame constants); false for the adaptive ones (they need the colour samples back).
 bool policy_runs_on_geometry_side(length_policy p);
 bool policy_runs_on_geometry_side(degree_policy p);
+
+// Sample points of an interval as fractions of N in eighths (t = k/8), for either sample set:
+// cubic case 1: 0, 1/4, 1/2, 1; case 2: 0, 1/2, 3/4, 1. Quadratic: 0, 1/2, 1.
+inline std::array<unsigned, 4> cubic_points(interp::sample_set set) {
+    return set == interp::sample_set::case1 ? std::array<unsigned, 4>{0, 2, 4, 8} : std::array<unsigned, 4>{0, 4, 6, 8};
+}
+inline constexpr std::array<unsigned, 3> quad_points{0, 4, 8};
 
 struct plan_config {
     interp::sample_set set = interp::sample_set::case1;
@@ -92,12 +98,6 @@ struct plan_config {
     // quadratic intervals of 2^(m-1) through its four samples and its check point (t = 0, 1/4, 1/2 and
     // 1/2, 3/4, 1): the point the decision paid for becomes a sample instead of being thrown away.
     bool split_at_check = false;
-    // Adaptive length, a yardstick (host only): each decision is taken on the true RMS error (8-bit
-    // levels per channel) of the pieces the policy would send, against per-pixel shading through the
-    // device, at most length_tol, instead of on its estimates; every candidate's estimates and check
-    // point are still computed and paid. What the policy's structure (growth, split, check points)
-    // reaches with every decision right.
-    bool perfect_decisions = false;
     // Adaptive and geometry length (ours): an interval may be at most `above_slack` levels longer than
     // the shortest interval the line above has over the same pixels (a line buffer of each pixel's
     // level, exact pixels 0; pixels the line above does not cover set no limit; 2^m_min is always
@@ -127,22 +127,7 @@ struct plan_config {
     // The sample stage's carry (modules/pipeline/sample_ctrl.h): a job whose first sample's codes are
     // the last formed sample's takes that colour from the last-sample registers, not from the device.
     bool carry_samples = false;
-    // The optimum: the largest NMSE allowed (against per-pixel shading through the device, or against
-    // exact Phong) and which; c.degree is not read (the optimum picks every interval's degree).
-    enum class reference { interpolation, total };
-    double optimal_nmse = 1e-5;
-    reference optimal_reference = reference::interpolation;
-    // Instead of the optimum, the length policies' greedy structure with perfect estimates (see
-    // optimal_plan): what a policy that knew every interval's error could reach. The certificate
-    // (points_bound, nmse, lambda) stays the optimum's; the plan is the greedy's.
-    bool optimal_greedy = false;
-    // Negative: off. Else the optimum (or with optimal_greedy the greedy) prices each candidate with the
-    // line above's error of the same candidate, the largest over starts within this many pixels: what a
-    // planner that knew every colour of the line above, but none of its own line, could reach (see
-    // optimal_plan). The certificate stays the optimum's.
-    int optimal_from_above = -1;
 };
-inline constexpr unsigned optimal_window_max = 16;  // the widest window over the line above (pixels)
 // Throws scene::scene_error with a clear message for an invalid config (m out of range, m_min > m_max,
 // a negative tolerance). Either evaluator takes either length policy (fd: fd_eval_var).
 void validate(const plan_config& c);
@@ -186,22 +171,6 @@ struct plan {
     // sample point: their check points. The sample stage's cost for these is the decision's too.
     std::size_t check_samples = 0;
     std::size_t pixels = 0;            // covered pixels (= sum of len)
-    // The optimum's certificate (length_policy::optimal; zero otherwise), see optimal_plan.
-    struct optimum_certificate {
-        double points_bound = 0.0;   // no plan of these segments reaching the NMSE has fewer geometry points
-        double nmse = 0.0;           // the plan's own NMSE against its reference (<= c.optimal_nmse if feasible)
-        double lambda = 0.0;         // the Lagrange multiplier it was found with (points per squared level)
-        bool feasible = false;       // false: even the lowest-error plan misses c.optimal_nmse (it is the plan)
-        double point_long_min = 0.0; // long ops of the cheapest geometry point (a step, no set-up or run start)
-        // With c.optimal_greedy: the greedy's tolerance (RMS levels per interval) and its plan's NMSE.
-        double greedy_tolerance = 0.0, greedy_nmse = 0.0;
-        // With c.optimal_from_above >= 0: the plan's NMSE (a plan priced from the line above may miss
-        // c.optimal_nmse even at the largest lambda), and the share of candidates priced by their own
-        // line because the line above had none there.
-        double above_nmse = 0.0, above_fallback = 0.0;
-        double above_lambda = 0.0;  // the lambda it was chosen at (the optimum's way; 0 for the greedy)
-    };
-    optimum_certificate optimum;
 };
 // Pixels xa..xb (inclusive, as {xa, xb}) of line y with no discontinuity inside, left to right: the
 // spans cut at every discontinuity (raster.h: coverage edges, object changes, depth steps of
@@ -210,28 +179,59 @@ struct plan {
 std::vector<std::array<unsigned, 2>> line_segments(const scene::rasterised& r, unsigned y, const plan_config& c,
                                                    scene::op_counts* decision);
 
+// The adaptive length policy's decision, a seam for studies: make_plan shows each candidate interval
+// to a decider, which accepts it or not. The candidate's estimates are computed on first use, their
+// colour samples, geometry and arithmetic charged to the plan then, so a decider pays for what it
+// reads; the hardware's decider (estimate_decider) reads them as the policy above describes.
+class length_candidate {
+public:
+    virtual ~length_candidate() = default;
+    virtual const interval_job& job() const = 0;
+    // What the policy sends for it: the job, or with split_at_check its two quadratic halves.
+    virtual std::vector<interval_job> sent() = 0;
+    // Largest over the channels, in Q8.8 code units: for a cubic, the quadratic through t = 0, 1/2, 1
+    // against the cubic's fourth sample (std::logic_error for a quadratic); the interval's polynomial
+    // against the exact colour at its check point.
+    virtual double quad_miss() = 0;
+    virtual double check_miss() = 0;
+    // v > limit on the decision's comparator (charged to the plan's decision).
+    virtual bool over(double v, double limit) = 0;
+};
+class length_decider {
+public:
+    virtual ~length_decider() = default;
+    virtual bool accept(length_candidate& candidate) const = 0;
+};
+// The adaptive length policy's own decision: a cubic's quadratic miss within 2 x length_tol, then the
+// check point's miss within length_tol (both in levels, scaled to Q8.8 once per frame).
+class estimate_decider : public length_decider {
+public:
+    explicit estimate_decider(const plan_config& c);
+    bool accept(length_candidate& candidate) const override;
+
+private:
+    double tol_;
+};
+
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c);
 // The same over the pixels `taken` (one entry per raster pixel) leaves out: they end segments, as a
-// discontinuity does, and no job covers them (the cells deliver them, cells.h). Not for the optimum.
+// discontinuity does, and no job covers them (the cells deliver them, cells.h).
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c, const std::vector<uint8_t>& taken);
-// The optimum over every plan the pipeline can express for these segments (intervals of 2^m_min ..
-// 2^m_max pixels, quadratic or cubic in c.set, exact pixels, tails as make_plan's), with no decision
-// cost: fewest distinct geometry points such that the frame's NMSE against c.optimal_reference is at
-// most c.optimal_nmse. A dynamic programme per segment minimises points + lambda x squared error;
-// lambda is bisected to the smallest that meets the NMSE, and every lambda tried gives a Lagrangian
-// lower bound (points + lambda (error - allowed error)) on the true optimum: plan.optimum.points_bound.
-// Its geometry is counted as make_plan's (make_plan calls it for length_policy::optimal). With
-// c.optimal_greedy the plan is instead the length policies' structure given perfect estimates: per
-// segment left to right, the longest m (growing by one level at most, as adaptive length) whose
-// quadratic, else cubic, has an RMS error of at most a tolerance, bisected to the largest that meets
-// the NMSE; where 2^m_min misses, 2^m_min exact pixels. Its gap to the optimum is the structure's cost.
-// With c.optimal_from_above = W >= 0 the plan (either one) is chosen on prices from the line above: each
-// candidate's error is the largest of the same candidate's on line y - 1 starting within W pixels (its
-// own where the line above has none); lambda or the tolerance is bisected on the plan's true NMSE.
-plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
-                  const plan_config& c);
+// Either of the above with the adaptive length policy's decisions taken by `decide` (the others read
+// no decider): the rest of the plan, and what each candidate's estimates cost, are make_plan's.
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c, const length_decider& decide);
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c, const std::vector<uint8_t>& taken, const length_decider& decide);
+// A plan of intervals chosen elsewhere (a study's), counted as make_plan counts its own: `shapes` in
+// raster order (line by line, left to right), each with y, x0, m (0: an exact pixel) and deg2; the
+// jobs get len, their samples and zone, and the plan its pixels and the geometry of every sample
+// point (both units, stepped along each line as make_plan steps). No decision is charged. Throws
+// std::invalid_argument for shapes out of order or overlapping.
+plan plan_of_jobs(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                  const plan_config& c, const std::vector<interval_job>& shapes);
 
 // ---- Zones of the head (the interpolation paper, Fig. 5, reconstructed: the figure is not in the text) ----
 // 0 other (ears, skull, neck), 1 brows, 2 forehead, 3 eyes, 4 cheeks, 5 nose, 6 mouth, 7 chin:

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,6 @@ const char* length_policy_name(length_policy p) {
         case length_policy::fixed: return "fixed";
         case length_policy::adaptive: return "adaptive";
         case length_policy::geometry: return "geometry";
-        case length_policy::optimal: return "optimal";
     }
     return "?";
 }
@@ -39,9 +39,7 @@ const char* degree_policy_name(degree_policy p) {
     return "?";
 }
 
-bool policy_runs_on_geometry_side(length_policy p) {
-    return p != length_policy::adaptive && p != length_policy::optimal;
-}
+bool policy_runs_on_geometry_side(length_policy p) { return p != length_policy::adaptive; }
 // zones: the zone's box tests on the position the geometry side interpolates, against per-frame
 // thresholds from the mesh (host set-up, as the scene's other frame constants).
 bool policy_runs_on_geometry_side(degree_policy p) { return p != degree_policy::adaptive; }
@@ -60,15 +58,9 @@ void validate(const plan_config& c) {
     if (!(c.degree_tol >= 0.0)) fail("the degree tolerance must be >= 0 (8-bit levels)");
     if (!(c.depth_step > 0.0)) fail("the depth step must be > 0 (world units)");
     if (!(c.lobe_tol > 0.0)) fail("the lobe tolerance must be > 0");
-    if (c.perfect_decisions && c.length != length_policy::adaptive)
-        fail("perfect decisions are the adaptive length policy's (the decision it takes on its estimates)");
     if (c.above_slack > int(interp::m_max))
         fail("the slack over the line above, " + std::to_string(c.above_slack) + ", exceeds m_max of the units (" +
              std::to_string(interp::m_max) + "); negative for no limit");
-    if (!(c.optimal_nmse >= 0.0) || !std::isfinite(c.optimal_nmse)) fail("the optimum's NMSE must be finite and >= 0");
-    if (c.optimal_from_above > int(optimal_window_max))
-        fail("the window over the line above, " + std::to_string(c.optimal_from_above) + ", exceeds " +
-             std::to_string(optimal_window_max) + " pixels; negative for the optimum's own prices");
     // Any evaluator takes either length policy: fd_eval_var sets the forward differences up per
     // interval for every m in m_min..m_max, as the Horner unit takes any t.
 }
@@ -110,13 +102,14 @@ unsigned shift_add_cost(double w) {
 class planner {
 public:
     planner(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
-            const plan_config& c, plan& p, const std::vector<uint8_t>* taken = nullptr)
-        : r_(r), k_(k), dev_(dev), c_(c), p_(p), taken_(taken), stepper_(r, c.walk_edges), lit_(r), cubic_(cubic_points(c.set)),
+            const plan_config& c, plan& p, const std::vector<uint8_t>* taken, const length_decider& decide)
+        : r_(r), k_(k), dev_(dev), c_(c), p_(p), taken_(taken), decide_(decide), stepper_(r, c.walk_edges), lit_(r),
+          cubic_(cubic_points(c.set)),
           w_deg_(lagrange(quad_points, degree_check(c.set))),
           w_len_cubic_(lagrange(cubic_, length_check(c.set))),
           w_len_quad_(lagrange(quad_points, length_check(c.set))),
-          // Tolerances in 8-bit levels against Q8.8 codes: scaled once per frame.
-          length_tol_(c.length_tol * (1u << colour_fmt.frac)), degree_tol_(c.degree_tol * (1u << colour_fmt.frac)) {
+          // The degree tolerance in 8-bit levels against Q8.8 codes: scaled once per frame.
+          degree_tol_(c.degree_tol * (1u << colour_fmt.frac)) {
         geometry_constants();
     }
 
@@ -260,68 +253,54 @@ private:
             job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(pos)));
             return job;
         };
-        // Adaptive length. A cubic interval first: the quadratic through t = 0, 1/2, 1 against the
-        // cubic's own fourth sample (case 1 t = 1/4, case 2 t = 3/4; no extra geometry), within
-        // 2 x length_tol: a large third-order term means a feature between the samples that the check
-        // point in the other half cannot see (head 512: the same NMSE for about 6 % fewer long
-        // operations, the largest error 15 levels instead of 18 .. 85). Then every interval: its
-        // polynomial against the exact colour at the check point, within length_tol.
-        auto passes = [&](const interval_job& job) {
-            const unsigned n = 1u << job.m;
-            if (c_.perfect_decisions) {
-                // Every estimate paid (the check point too, even where the cubic's own test would
-                // have stopped first), then the decision taken on the truth.
-                if (!job.deg2) quad_miss(lg, pos, n);
-                const unsigned check = pos + length_check(c_.set) * n / 8;
-                if (job.deg2)
-                    estimate(lg, pos, n, quad_points, w_len_quad_, check);
-                else
-                    estimate(lg, pos, n, cubic_, w_len_cubic_, check);
-                return true_rms(lg, job) <= c_.length_tol;
-            }
-            if (!job.deg2) {
-                const double q = quad_miss(lg, pos, n);
-                if (cnum(q, &p_.decision) > cnum(2.0 * length_tol_, &p_.decision)) return false;
-            }
-            const unsigned check = pos + length_check(c_.set) * n / 8;
-            const double e = job.deg2 ? estimate(lg, pos, n, quad_points, w_len_quad_, check)
-                                      : estimate(lg, pos, n, cubic_, w_len_cubic_, check);
-            return !(cnum(e, &p_.decision) > cnum(length_tol_, &p_.decision));
-        };
         if (c_.length == length_policy::fixed) return make(top);
         for (unsigned m = top;; --m) {
             if (m > lowest && !within_above(pos, m)) continue;
             interval_job job = make(m);
             if (m == lowest && !c_.exact_fallback) return job;
-            if ((c_.length == length_policy::geometry ? geometry_passes(lg, job) : passes(job)) &&
+            if ((c_.length == length_policy::geometry ? geometry_passes(lg, job) : adaptive_passes(lg, job)) &&
                 (m == lowest || lit_guard_passes(lg, job)))
                 return job;
             if (m == lowest) return std::nullopt;
         }
     }
 
-    // The RMS error (levels per channel) of what the policy would send for `job` (its halves if it
-    // splits) against per-pixel shading through the device: the perfect decisions' yardstick.
-    double true_rms(line_geometry& lg, const interval_job& job) {
-        if (per_pixel_.px.empty()) per_pixel_ = per_pixel_frame(r_, k_, dev_);
-        std::vector<interval_job> sent{job};
-        if (splits(job)) {
-            const auto h = halves(lg, job);
-            sent.assign(h.begin(), h.end());
-        }
-        double e = 0.0;
-        for (const interval_job& q : sent) {
-            const std::vector<rgb_codes> px = interval_pixels(q, k_, dev_, c_.eval, c_.set, c_.div);
-            for (unsigned i = 0; i < q.len; ++i)
-                for (int ch = 0; ch < 3; ++ch) {
-                    const double d = (double(px[i][ch]) - double(per_pixel_.px[r_.index(q.x0 + i, q.y)][ch])) *
-                                     pixel_fmt.lsb();
-                    e += d * d;
-                }
-        }
-        return std::sqrt(e / (3.0 * job.len));
+    // Adaptive length: the decider's verdict on the candidate (estimate_decider: the policy's own).
+    bool adaptive_passes(line_geometry& lg, const interval_job& job) {
+        candidate cand(*this, lg, job);
+        return decide_.accept(cand);
     }
-    frame per_pixel_;  // with perfect_decisions: every pixel shaded through the device (uncounted)
+
+    // A candidate as the decider sees it (pipeline.h): its estimates computed, and charged, on first use.
+    class candidate final : public length_candidate {
+    public:
+        candidate(planner& pl, line_geometry& lg, const interval_job& job) : pl_(pl), lg_(lg), job_(job) {}
+        const interval_job& job() const override { return job_; }
+        std::vector<interval_job> sent() override {
+            if (!pl_.splits(job_)) return {job_};
+            const auto h = pl_.halves(lg_, job_);
+            return {h.begin(), h.end()};
+        }
+        double quad_miss() override {
+            if (job_.deg2) throw std::logic_error("length_candidate::quad_miss: a quadratic has no fourth sample");
+            return pl_.quad_miss(lg_, job_.x0, 1u << job_.m);
+        }
+        double check_miss() override {
+            if (!check_) {
+                const unsigned n = 1u << job_.m, check = job_.x0 + length_check(pl_.c_.set) * n / 8;
+                check_ = job_.deg2 ? pl_.estimate(lg_, job_.x0, n, quad_points, pl_.w_len_quad_, check)
+                                   : pl_.estimate(lg_, job_.x0, n, pl_.cubic_, pl_.w_len_cubic_, check);
+            }
+            return *check_;
+        }
+        bool over(double v, double limit) override { return pl_.over(v, limit); }
+
+    private:
+        planner& pl_;
+        line_geometry& lg_;
+        const interval_job& job_;
+        std::optional<double> check_;
+    };
 
     // The line-above limit: 2^m pixels from pos, each at most above_slack levels above the line
     // above's level there (a compare a pixel against the line buffer).
@@ -527,13 +506,14 @@ private:
     const plan_config& c_;
     plan& p_;
     const std::vector<uint8_t>* taken_;  // pixels another unit delivers (make_plan with a map), or null
+    const length_decider& decide_;       // the adaptive length policy's decisions
     scene::span_stepper stepper_;
     lit_planes lit_;  // the lit guard's planes, per triangle as consulted
     std::array<unsigned, 4> cubic_;
     std::array<double, 3> w_deg_;
     std::array<double, 4> w_len_cubic_;
     std::array<double, 3> w_len_quad_;
-    double length_tol_, degree_tol_;
+    double degree_tol_;
 };
 
 }  // namespace
@@ -573,26 +553,85 @@ geometry_limits geometry_limits_of(const frame_constants& k, const plan_config& 
     return g;
 }
 
+estimate_decider::estimate_decider(const plan_config& c)
+    : tol_(c.length_tol * (1u << colour_fmt.frac)) {}  // levels against Q8.8 codes: scaled once per frame
+
+// A cubic first: a large third-order term means a feature between the samples that the check point
+// in the other half cannot see (head 512: the same NMSE for about 6 % fewer long operations, the
+// largest error 15 levels instead of 18 .. 85); the cubic's own fourth sample costs no extra
+// geometry. Then every interval's check point.
+bool estimate_decider::accept(length_candidate& cand) const {
+    if (!cand.job().deg2 && cand.over(cand.quad_miss(), 2.0 * tol_)) return false;
+    return !cand.over(cand.check_miss(), tol_);
+}
+
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c) {
     validate(c);
-    if (c.length == length_policy::optimal) return optimal_plan(r, k, dev, c);
-    return make_plan(r, k, dev, c, std::vector<uint8_t>(r.tri.size(), 0));
+    return make_plan(r, k, dev, c, std::vector<uint8_t>(r.tri.size(), 0), estimate_decider(c));
 }
 
 plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
                const plan_config& c, const std::vector<uint8_t>& taken) {
     validate(c);
+    return make_plan(r, k, dev, c, taken, estimate_decider(c));
+}
+
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c, const length_decider& decide) {
+    return make_plan(r, k, dev, c, std::vector<uint8_t>(r.tri.size(), 0), decide);
+}
+
+plan make_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+               const plan_config& c, const std::vector<uint8_t>& taken, const length_decider& decide) {
+    validate(c);
     if (taken.size() != r.tri.size())
         throw scene::scene_error("make_plan: the taken pixels' map has " + std::to_string(taken.size()) +
                                  " entries for a raster of " + std::to_string(r.tri.size()) + " pixels");
-    if (c.length == length_policy::optimal)
-        throw scene::scene_error("make_plan: the optimum plans whole segments; it takes no map of taken pixels");
     plan p;
     p.width = r.width;
     p.height = r.height;
-    planner pl(r, k, dev, c, p, &taken);
+    planner pl(r, k, dev, c, p, &taken, decide);
     for (unsigned y = 0; y < r.height; ++y) pl.line(y);
+    return p;
+}
+
+plan plan_of_jobs(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                  const plan_config& c, const std::vector<interval_job>& shapes) {
+    plan p;
+    p.width = r.width;
+    p.height = r.height;
+    scene::span_stepper stepper(r, c.walk_edges);
+    const std::array<unsigned, 4> cubic = cubic_points(c.set);
+    std::size_t i = 0;
+    for (unsigned y = 0; y < r.height; ++y) {
+        line_geometry lg(r, y, k, dev, p);
+        unsigned free_from = 0;  // the first pixel of the line no job has taken yet
+        for (; i < shapes.size() && shapes[i].y == y; ++i) {
+            interval_job job = shapes[i];
+            job.len = 1u << job.m;
+            job.deg2 = job.m > 0 && job.deg2;
+            std::vector<unsigned> at;  // the sample pixels
+            if (job.m == 0)
+                at = {job.x0};
+            else if (job.deg2)
+                for (unsigned e : quad_points) at.push_back(job.x0 + e * job.len / 8);
+            else
+                for (unsigned e : cubic) at.push_back(job.x0 + e * job.len / 8);
+            const std::string where = "plan_of_jobs: the job at line " + std::to_string(y) + ", x " + std::to_string(job.x0);
+            if (job.x0 < free_from) throw std::invalid_argument(where + " overlaps the one before or is out of order");
+            for (unsigned x : at)
+                if (x >= r.width || !r.covered(x, y)) throw std::invalid_argument(where + " has a sample off the covered pixels");
+            for (unsigned s = 0; s < 4; ++s) job.s[s] = lg.sample(at[std::min<std::size_t>(s, at.size() - 1)]);
+            job.zone = static_cast<uint8_t>(head_zone(r, lg.geometry(job.x0)));
+            free_from = job.x0 + job.len;
+            p.pixels += job.len;
+            p.jobs.push_back(job);
+        }
+        lg.charge_stepped(stepper, p);
+    }
+    if (i != shapes.size())
+        throw std::invalid_argument("plan_of_jobs: job " + std::to_string(i) + " is out of raster order or below the frame");
     return p;
 }
 

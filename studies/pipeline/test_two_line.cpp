@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "studies/yardsticks/perfect_decisions.h"
 #include "line_kinks.h"
 #include "levels_testing.h"
 #include "study_frame.h"
@@ -77,7 +78,7 @@ TEST(EmulateAdaptive, BumpBetweenTheSamplesIsMissed) {
     EXPECT_DOUBLE_EQ(squared_error(r.out, grey(v)), 3.0 * 100.0 * 100.0);
 }
 
-// The same bump with perfect decisions (plan_config::perfect_decisions): each candidate is decided
+// The same bump with perfect decisions (studies/yardsticks/perfect_decisions.h): each candidate is decided
 // on the true RMS of what it sends (three channels), every point still read. Traced by hand:
 //  - at 0, 32 (points 0, 8, 16, 32, check 24) and 16 pixels (4, 12): every point 0, so the halves'
 //    quadratics are 0 and the bump costs an RMS of 100 / sqrt(32) and 25: no; 8 pixels (2, 6): no
@@ -168,16 +169,14 @@ TEST_F(TwoLineHead, EmulationIsThePlanner) {
 TEST_F(TwoLineHead, PerfectDecisionsAsThePlannersAre) {
     const std::vector<rgb_levels> c = colour();
     for (const auto& [tol, above_slack] : {std::pair{0.7, -1}, std::pair{1.5, 2}}) {
-        pipeline::plan_config cfg = config(tol, above_slack);
-        cfg.perfect_decisions = true;
-        const pipeline::plan p = pipeline::make_plan(r, k, dev, cfg);
+        const pipeline::plan_config cfg = config(tol, above_slack);
+        const pipeline::plan p = yardsticks::perfect_decisions_plan(r, k, dev, cfg);
         const double nmse =
             pipeline::compare(pipeline::to_image(pipeline::golden_frame(p, k, dev, cfg)), pipeline::to_image(pp)).nmse;
-        const emulated_frame f = emulate_lines(r, c, cfg, {tol});
+        const emulated_frame f = emulate_lines(r, c, cfg, {tol}, false, true);
         EXPECT_NEAR(double(f.points()), double(p.geometry_points), 0.01 * double(p.geometry_points)) << tol;
         EXPECT_NEAR(f.nmse(), nmse, 0.03 * nmse) << tol;
         // And they are not the heuristic's: fewer points at this tolerance.
-        cfg.perfect_decisions = false;
         EXPECT_LT(f.points(), emulate_lines(r, c, cfg, {tol}).points()) << tol;
     }
 }

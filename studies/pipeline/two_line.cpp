@@ -73,7 +73,7 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
             };
             bool ok = false;
             if (e.perfect) {
-                // plan.cpp's perfect decisions: every estimate and the check point paid, the decision
+                // The planner's perfect decisions: every estimate and the check point paid, the decision
                 // taken on the true RMS of what is sent (levels, the three channels).
                 touch(pos + 3 * n / 4);
                 double se = 0.0;
@@ -110,7 +110,8 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
 }
 
 emulated_frame emulate_lines(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
-                             const pipeline::plan_config& cfg, const std::vector<double>& tols, bool first_exact) {
+                             const pipeline::plan_config& cfg, const std::vector<double>& tols, bool first_exact,
+                             bool perfect) {
     if (colour.size() != r.tri.size()) throw std::invalid_argument("emulate_lines: colours and raster differ in size");
     if (tols.empty() || tols.size() > 5) throw std::invalid_argument("emulate_lines: needs 1 to 5 tolerances, one a pass");
     const unsigned passes = unsigned(tols.size()), top = 1u << (passes - 1);
@@ -135,7 +136,7 @@ emulated_frame emulate_lines(const scene::rasterised& r, const std::vector<rgb_l
         e.m_min = cfg.m_min;
         e.m_max = cfg.m_max;
         e.above_slack = cfg.above_slack;
-        e.perfect = cfg.perfect_decisions;
+        e.perfect = perfect;
         const emulated_run er = emulate_adaptive(v, e, above.empty() ? nullptr : above.data() + x0);
         for (unsigned x = x0; x <= x1; ++x) {
             rgb_levels& o = f.out[r.index(x, y)];

@@ -37,9 +37,9 @@ struct adaptive_emulation {
     double tol = 1.0;  // levels
     unsigned m_min = interp::m_min, m_max = 5;
     int above_slack = -1;  // plan_config::above_slack; negative: no limit
-    // plan_config::perfect_decisions, a yardstick: every candidate's samples and check point still
-    // read, each decision taken on the true RMS (levels, the three channels) of what the candidate
-    // sends, at most tol, instead of on the two misses above.
+    // The planner's perfect decisions (studies/yardsticks/perfect_decisions.h), a yardstick: every
+    // candidate's samples and check point still read, each decision taken on the true RMS (levels,
+    // the three channels) of what the candidate sends, at most tol, instead of on the two misses above.
     bool perfect = false;
 };
 inline constexpr uint8_t no_level = 0xFF;  // `above` where the line before sent nothing
@@ -53,8 +53,9 @@ emulated_run emulate_adaptive(const std::vector<rgb_levels>& v, const adaptive_e
                               const uint8_t* above = nullptr);
 
 // A frame's per-pixel colours (row-major, levels; uncovered pixels ignored) rendered by the emulated
-// policy over the planner's segments (pipeline::line_segments with cfg), with cfg's m_min, m_max,
-// line-above limit and perfect decisions, in passes over the lines; tols holds one tolerance a pass, L + 1 of them (L = 0..4):
+// policy over the planner's segments (pipeline::line_segments with cfg), with cfg's m_min, m_max and
+// line-above limit (and with `perfect` the perfect decisions), in passes over the lines; tols holds one
+// tolerance a pass, L + 1 of them (L = 0..4):
 //  - pass 0: every 2^L-th line (y = 0, 2^L, ...) from its colours alone at tols[0]; L = 0 is one line
 //    at a time, L = 1 the two-line scheme (the even lines, then the odd ones);
 //  - pass i = 1..L: the lines halfway between those rendered so far, d = 2^(L - i) from them
@@ -79,7 +80,7 @@ struct emulated_frame {
 };
 emulated_frame emulate_lines(const scene::rasterised& r, const std::vector<rgb_levels>& colour,
                              const pipeline::plan_config& cfg, const std::vector<double>& tols,
-                             bool first_exact = false);
+                             bool first_exact = false, bool perfect = false);
 
 // What the emulated frame's points cost, counted as the planner counts a plan's (hardware_ops with the
 // carry): each point's geometry stepped along its line (pipeline::stepped_geometry, in the order the

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "scene/shade.h"
+#include "studies/yardsticks/perfect_decisions.h"
 #include "testbenches/common/exit_status.h"
 #include "testbenches/options/tool_options.h"
 #include "line_kinks.h"
@@ -61,7 +62,8 @@ int main(int argc, char* argv[]) {
         base.m_max = o.m_max;
         base.above_slack = o.above_slack;
         base.walk_edges = o.walk_edges;
-        base.perfect_decisions = o.perfect_decisions;  // the planner's and, through emulate_lines, the emulation's
+        // With --perfect-decisions the planner's (studies/yardsticks) and, through emulate_lines, the emulation's.
+        const bool perfect = o.perfect_decisions;
 
         std::printf("# Two lines: every other line predicted from the lines either side. %s %ux%u, device %s, n = %u, "
                     "m <= %u, line-above limit K = %d, edges %s, NMSE limit %.3g%s\n\n",
@@ -82,10 +84,10 @@ int main(int argc, char* argv[]) {
         for (double t : o.tol_one) {
             plan_config c = base;
             c.length_tol = t;
-            const plan p = make_plan(r, k, dev, c);
+            const plan p = perfect ? yardsticks::perfect_decisions_plan(r, k, dev, c) : make_plan(r, k, dev, c);
             const double e = compare(to_image(golden_frame(p, k, dev, c)), ref).nmse;
             const double cost = double(hardware_ops(p, c, dev, k.n).total().long_ops()) / pixels;
-            const emulated_frame f = emulate_lines(r, colour, c, {t});
+            const emulated_frame f = emulate_lines(r, colour, c, {t}, false, perfect);
             const double pts = double(f.points()) / double(f.pixels()), ec = counted(f);
             std::printf("| %.2f | %.4f | %.3e | %.2f (%.2fx) | %.1f | %.4f | %.3e | %.2f (%.2fx) |\n", t,
                         p.geometry_points / pixels, e, cost, scanline / cost, cost * pixels / double(p.geometry_points),
@@ -107,7 +109,7 @@ int main(int argc, char* argv[]) {
         double two_even = 0.0, two_odd = 0.0, two_nmse = 0.0;
         for (double te : o.tol_even)
             for (double to : o.tol_odd) {
-                const emulated_frame f = emulate_lines(r, colour, base, {te, to});
+                const emulated_frame f = emulate_lines(r, colour, base, {te, to}, false, perfect);
                 const double pts = double(f.points()) / double(f.pixels()), ec = counted(f);
                 std::printf("| %.2f | %.2f | %.4f | %.4f | %.4f | %.3f | %.3e | %.2e | %.2e | %.2f (%.2fx) |\n", te, to,
                             pts, per_px(f.points_first, f.pixels_first), per_px(f.points_rest, f.pixels_rest),
@@ -124,7 +126,7 @@ int main(int argc, char* argv[]) {
         std::printf("\nThe odd lines at best: the even lines exact (every pixel a point), the odd lines as above:\n\n"
                     "| T_odd | odd lines' points / px | odd lines' part of the NMSE |\n|---|---|---|\n");
         for (double to : o.tol_odd) {
-            const emulated_frame f = emulate_lines(r, colour, base, {to, to}, true);
+            const emulated_frame f = emulate_lines(r, colour, base, {to, to}, true, perfect);
             std::printf("| %.2f | %.4f | %.2e |\n", to, per_px(f.points_rest, f.pixels_rest), f.se_rest / f.ref2);
         }
         // Every fourth line first (--tol-mid given): the lines two apart predicted from the lines two
@@ -139,7 +141,7 @@ int main(int argc, char* argv[]) {
             for (double te : o.tol_even)
                 for (double tm : o.tol_mid)
                     for (double to : o.tol_odd) {
-                        const emulated_frame f = emulate_lines(r, colour, base, {te, tm, to});
+                        const emulated_frame f = emulate_lines(r, colour, base, {te, tm, to}, false, perfect);
                         const double pts = double(f.points()) / double(f.pixels()), ec = counted(f);
                         std::printf("| %.2f | %.2f | %.2f | %.4f | %.3e | %.2f (%.2fx) |\n", te, tm, to, pts, f.nmse(), ec,
                                     scanline / ec);

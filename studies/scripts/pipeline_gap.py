@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Each policy's distance from the optimum plan over a claims sweep (render_pipeline --sweep --grid
-claims): for every configuration of the sweep's CSV, render_pipeline --length optimal with the same
-scene, size, light, n, device, evaluator, sample set, interval lengths and carry, at the
+claims): for every configuration of the sweep's CSV, the optimum plan (yardstick_study --length
+optimal, studies/yardsticks) with the same scene, size, light, n, device, evaluator, sample set,
+interval lengths and carry, at the
 configuration's own interpolation NMSE; the gap is the configuration's long operations over the
 optimum's. Per size and device, each policy's worst (largest) and median gap, and the optimum's own
 ratio against the scan-line Phong. The optimum minimises geometry points, not the Horner unit's
@@ -9,6 +10,7 @@ multiplications by t: through the Horner unit the gap is an approximation.
 
 Usage: studies/scripts/pipeline_gap.py OUT.md CSV [CSV ...] [--jobs N] [--bin PATH] [--data-dir DIR]
                                [--device D] [--size S]
+--bin: yardstick_study (default $SHADING_BIN/yardstick_study, SHADING_BIN default build/bin).
 
 Writes OUT.md and OUT.md's stem + "_rows.csv" (one row per configuration). Standard library only.
 Exit 0 on success, 1 if a render failed, 2 on bad usage.
@@ -64,7 +66,8 @@ def main():
     ap.add_argument("out_md")
     ap.add_argument("csv", nargs="+")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    ap.add_argument("--bin", default=os.path.join(BIN_DIR, "render_pipeline"))
+    ap.add_argument("--bin", default=os.path.join(BIN_DIR, "yardstick_study"),
+                    help="yardstick_study, which renders the optimum")
     ap.add_argument("--data-dir", default="")
     ap.add_argument("--device", default="", help="only this device's rows")
     ap.add_argument("--size", default="", help="only this size's rows")

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """The third head target (the cheapest plan with interpolation NMSE <= 1e-5) over the claims sweep's
-scenes x lights x n: per configuration, render_pipeline (golden model) for
-  - policy:  the best policy of the targets (adaptive length, cubic, split at the check, carry, the
-             line above K = 2), its --length-tol bisected to the cheapest meeting the NMSE;
-  - perfect: the same structure with perfect decisions (--perfect-decisions, no line-above limit:
-             with every decision right the limit can only shorten intervals), bisected the same way;
-  - optimum: the optimum plan at that NMSE (--length optimal), with the carry.
+scenes x lights x n: per configuration, on the golden model,
+  - policy:  render_pipeline with the best policy of the targets (adaptive length, cubic, split at the
+             check, carry, the line above K = 2), its --length-tol bisected to the cheapest meeting the NMSE;
+  - perfect: yardstick_study (studies/yardsticks) with the same structure and perfect decisions
+             (--perfect-decisions, no line-above limit: with every decision right the limit can only
+             shorten intervals), bisected the same way;
+  - optimum: yardstick_study with the optimum plan at that NMSE (--length optimal), with the carry.
 Each with the squared device and forward differences at m <= M, against the scan-line Phong. Per
 yardstick the worst and median ratio and how many cases reach 3x; one row per case.
 
@@ -18,9 +19,10 @@ within the NMSE has no ratio (counted apart).
 
 Usage: studies/scripts/pipeline_targets.py OUT.md [--size 512] [--m-max 5] [--nmse 1e-5] [--jobs N]
                                    [--scenes head sphere torus] [--lights -40,25 35,20 10,60]
-                                   [--ns 5 20 100 500] [--grid 16] [--steps 6] [--bin PATH] [--data-dir DIR]
-                                   [--yardsticks policy perfect optimum] [--lit-guard]
+                                   [--ns 5 20 100 500] [--grid 16] [--steps 6] [--bin PATH] [--study-bin PATH]
+                                   [--data-dir DIR] [--yardsticks policy perfect optimum] [--lit-guard]
 --yardsticks runs only those; --lit-guard gives the policy the lit guard (render_pipeline --lit-guard).
+--bin is render_pipeline, --study-bin yardstick_study (defaults in $SHADING_BIN, default build/bin).
 
 A negative azimuth reads as an option to argparse: give it as 320,25, or alone as --lights=-40,25.
 Standard library only. Exit 0 on success, 1 if a render failed, 2 on bad usage.
@@ -45,6 +47,8 @@ YARDSTICKS = {
     "perfect": ["--length", "adaptive", "--degree", "cubic", "--split-at-check", "--perfect-decisions"],
     "optimum": ["--length", "optimal"],
 }
+# The policy is render_pipeline's; the yardsticks are yardstick_study's (studies/yardsticks).
+STUDY = {"policy": False, "perfect": True, "optimum": True}
 
 
 class RenderError(Exception):
@@ -112,11 +116,12 @@ def run_case(case, a):
     out = {}
     for name in a.yardsticks:
         extra = YARDSTICKS[name] + (["--lit-guard"] if a.lit_guard and name == "policy" else [])
+        binary = a.study_bin if STUDY[name] else a.bin
         if name == "optimum":
-            r = render(a.bin, base + extra + ["--optimal-nmse", f"{a.nmse:g}"])
+            r = render(binary, base + extra + ["--optimal-nmse", f"{a.nmse:g}"])
             out[name] = r if r["nmse"] <= a.nmse else None
         else:
-            out[name] = cheapest(a.bin, base + extra, a.nmse, a.grid, a.steps)
+            out[name] = cheapest(binary, base + extra, a.nmse, a.grid, a.steps)
     return out
 
 
@@ -135,6 +140,8 @@ def main():
     ap.add_argument("--yardsticks", nargs="+", choices=list(YARDSTICKS), default=list(YARDSTICKS))
     ap.add_argument("--lit-guard", action="store_true", help="the policy with --lit-guard")
     ap.add_argument("--bin", default=os.path.join(BIN_DIR, "render_pipeline"))
+    ap.add_argument("--study-bin", default=os.path.join(BIN_DIR, "yardstick_study"),
+                    help="yardstick_study, which renders the perfect decisions and the optimum")
     ap.add_argument("--data-dir", default="")
     try:
         a = ap.parse_args()

@@ -2,7 +2,9 @@
 // its parse function (render_options.cpp, the options library's only source that needs the
 // plan's settings): the struct filled, an exit status returned when the program must stop (0 after
 // --help, 2 for bad usage), nothing when it runs. The checks that need the scene library (a built-in
-// scene's name, a light or colour that parses, a plan the units can run) stay in the program.
+// scene's name, a light or colour that parses, a plan the units can run) stay in the program. The
+// options come in groups (its --help shows them apart), which a program that renders as
+// render_pipeline does (a study's) may add to its own CLI11 App.
 #pragma once
 
 #include <optional>
@@ -11,6 +13,10 @@
 
 #include "golden_pipeline/pipeline.h"
 #include "testbenches/options/tool_options.h"
+
+namespace CLI {
+class App;
+}
 
 namespace shading::render_program {
 
@@ -28,7 +34,6 @@ struct options {
     int n = -1;                         // -1: the scene's material
     std::string kd, ks, ambient;        // "v" or "r,g,b" in [0, 1]; empty: the scene's material
     std::string length = "fixed", degree = "cubic", eval = "horner", set = "case1", div3 = "shift_add";
-    std::string optimal_reference = "interpolation";
     std::string unit = "stepped";       // the geometry side's unit: stepped or scratch
     plan_config pc;                     // the numeric and boolean settings, defaults from pipeline.h
     std::string device = "patent", mode = "saturate";
@@ -53,5 +58,18 @@ struct options {
 };
 
 std::optional<int> parse_render_pipeline(int argc, char** argv, options& o);
+
+// The groups: the scene (--scene, --size, --light, the material), the device (the specular device and
+// the units it is built with: evaluator, coefficient unit, sample stage, geometry unit), the plan
+// (length and degree policies and their settings; with `length` false, no --length: the caller
+// chooses the length its own way), the simulation, the output, the sweep.
+void add_scene_options(CLI::App& app, options& o);
+void add_device_options(CLI::App& app, options& o);
+void add_plan_options(CLI::App& app, options& o, bool length = true);
+void add_simulation_options(CLI::App& app, options& o);
+void add_output_options(CLI::App& app, options& o);
+void add_sweep_options(CLI::App& app, options& o);
+// What a parse leaves to set once it succeeded: the command line (--emit-jobs), whether --device was given.
+void record_command_line(const CLI::App& app, int argc, char** argv, options& o);
 
 }  // namespace shading::render_program

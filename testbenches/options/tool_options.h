@@ -108,7 +108,7 @@ struct two_line_study_options {
     unsigned m_max = 5;
     int above_slack = 2;  // -1..m_max
     bool walk_edges = false;  // the geometry side and the scan-line Phong walk edges (render_pipeline's)
-    bool perfect_decisions = false;  // a yardstick: decisions on the true error (render_pipeline's)
+    bool perfect_decisions = false;  // a yardstick: decisions on the true error (studies/yardsticks)
 };
 
 // cell_study: the built-in scene, its light (azimuth, elevation in degrees; empty: the scene's) and

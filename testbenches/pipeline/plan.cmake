@@ -5,5 +5,3 @@
 shading_add_gtest(test_pipeline_plan SOURCES test_pipeline_plan.cpp test_pipeline_zones.cpp test_pipeline_refine.cpp LIBS shading_pipeline TIMEOUT 120)
 # The geometry side's stepped and from-scratch units, and the geometry-only policies (plan.cpp).
 shading_add_gtest(test_pipeline_baselines SOURCES test_pipeline_baselines.cpp LIBS shading_pipeline TIMEOUT 60)
-# The optimum plan (optimal.cpp): the policies' yardstick, its certificate checked from outside.
-shading_add_gtest(test_pipeline_optimal SOURCES test_pipeline_optimal.cpp LIBS shading_pipeline TIMEOUT 120)

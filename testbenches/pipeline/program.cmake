@@ -6,19 +6,24 @@ if(TARGET shading_pipeline)
     message(WARNING "render_pipeline needs nlohmann-json (Debian: nlohmann-json3-dev; scripts/setup.sh installs it): not built")
     return()
   endif()
-  add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_setup.cpp
-                 ${CMAKE_CURRENT_SOURCE_DIR}/render_run.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_report.cpp
-                 ${CMAKE_CURRENT_SOURCE_DIR}/render_images.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_sweep.cpp)
-  target_link_libraries(render_pipeline PRIVATE shading_pipeline shading_tb_common shading_render_options nlohmann_json::nlohmann_json)
-  # The default --data-dir: this source tree (the head scan lives in data/head/).
-  target_compile_definitions(render_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  set_target_properties(render_pipeline PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  # Its parts but main (render_program.h) as a library: a study renders with them in place of
+  # make_plan's plan (studies/yardsticks/yardstick_study). SHADING_PIPELINE_SIM tells them, and the
+  # programs' sc_main, whether the SystemC pipeline is built in.
+  add_library(shading_render STATIC ${CMAKE_CURRENT_SOURCE_DIR}/render_setup.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_run.cpp
+              ${CMAKE_CURRENT_SOURCE_DIR}/render_report.cpp ${CMAKE_CURRENT_SOURCE_DIR}/render_images.cpp
+              ${CMAKE_CURRENT_SOURCE_DIR}/render_sweep.cpp)
+  target_link_libraries(shading_render PUBLIC shading_pipeline shading_tb_common shading_render_options nlohmann_json::nlohmann_json)
   if(TARGET shading_pipeline_sim)
-    target_link_libraries(render_pipeline PRIVATE shading_pipeline_sim)
-    target_compile_definitions(render_pipeline PRIVATE SHADING_PIPELINE_SIM=1)
+    target_link_libraries(shading_render PUBLIC shading_pipeline_sim)
+    target_compile_definitions(shading_render PUBLIC SHADING_PIPELINE_SIM=1)
   else()
     message(STATUS "render_pipeline: no SystemC pipeline (shading_pipeline_sim) yet: --sim unavailable")
   endif()
+  add_executable(render_pipeline ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline.cpp)
+  target_link_libraries(render_pipeline PRIVATE shading_render)
+  # The default --data-dir: this source tree (the head scan lives in data/head/).
+  target_compile_definitions(render_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  set_target_properties(render_pipeline PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
 
   set(rp_out ${CMAKE_BINARY_DIR}/out/pipeline_test)
   set(rp_tests)

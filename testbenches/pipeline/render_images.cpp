@@ -124,7 +124,8 @@ void write_images(const options& o, render_data& d, staged_output& out) {
     save(im_marked, "interval_map.png");
     save(zm, "zone_map.png");
     char l_hw[96], l_e1[64], l_e2[64];
-    std::snprintf(l_hw, sizeof l_hw, "HARDWARE: %s%s, %s, %s, %s", o.length.c_str(),
+    const std::string& length = d.maker ? d.maker->length_name : o.length;  // a study's plan under its own name
+    std::snprintf(l_hw, sizeof l_hw, "HARDWARE: %s%s, %s, %s, %s", length.c_str(),
                   cfg.length == length_policy::fixed ? (" M=" + std::to_string(cfg.m)).c_str() : "", o.degree.c_str(),
                   o.eval.c_str(), o.device.c_str());
     std::snprintf(l_e1, sizeof l_e1, "VS PER-PIXEL (WHITE = %g)", o.error_scale);

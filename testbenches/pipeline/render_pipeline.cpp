@@ -10,9 +10,7 @@
 // configuration (--jobs in parallel), and merges their reports into one CSV (scripts/plot_pipeline.py
 // draws it).
 //   build/bin/render_pipeline --sweep --scene head --size 256 --out out/pipeline/sweep
-#include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <cstdlib>
 #include <string>
 
@@ -31,39 +29,9 @@
 using namespace shading;
 using namespace shading::render_program;
 
-namespace shading::render_program {
-bool progress_open = false;
-}  // namespace shading::render_program
-
 namespace {
 
-namespace fs = std::filesystem;
-
 options g_options;  // handed from main() to sc_main() when the SystemC pipeline runs
-
-// Bad usage found from the command line alone, before any work (exit 2, common/exit_status.h): an
-// unknown built-in scene, a light or colour that does not parse, a plan the units cannot run. Empty
-// when none. A missing or malformed OBJ file is found later, and is a failure (exit 1).
-std::string usage_problem(const options& o) {
-    if (!o.sweep && o.device == "all") return "--device all is for --sweep";
-    const bool looks_like_obj = o.scene.size() > 4 && o.scene.substr(o.scene.size() - 4) == ".obj";
-    if (!looks_like_obj && !fs::is_regular_file(o.scene)) {
-        const auto names = scene::builtin_scene_names();
-        if (std::find(names.begin(), names.end(), o.scene) == names.end())
-            return "--scene '" + o.scene + "' is neither a file nor a built-in scene (sphere, torus, head)";
-    }
-    try {
-        if (!o.light.empty()) parse_light(o.light);
-        if (!o.kd.empty()) parse_colour("--kd", o.kd);
-        if (!o.ks.empty()) parse_colour("--ks", o.ks);
-        if (!o.ambient.empty()) parse_colour("--ambient", o.ambient);
-        if (!o.shard.empty()) parse_shard(o.shard);
-        validate(plan_config_of(o));
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
 
 int run(const options& o) {
     try {

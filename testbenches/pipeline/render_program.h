@@ -5,6 +5,8 @@
 //   render_report.cpp     report.json, report.md and the summary printed
 //   render_images.cpp     the PNGs
 //   render_sweep.cpp      --sweep: the grids, shards, --emit-jobs, child processes and the CSV
+// All but render_pipeline.cpp are the library shading_render, which a study may render with in
+// place of make_plan's plan (plan_maker: studies/yardsticks/yardstick_study).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -40,9 +42,29 @@ glm::dvec3 parse_light(const std::string& s);
 std::pair<std::size_t, std::size_t> parse_shard(const std::string& s);
 // Throws scene_error for a bad size, scene, light, material value.
 scene::world load_world(const options& o);
+// Bad usage found from the command line alone, before any work (exit 2, common/exit_status.h): an
+// unknown built-in scene, a light or colour that does not parse, a plan the units cannot run. Empty
+// when none. A missing or malformed OBJ file is found later, and is a failure (exit 1).
+std::string usage_problem(const options& o);
+
+struct render_data;
+
+// A plan made otherwise than by make_plan (a study's yardstick), rendered, simulated and reported as
+// a policy's plan is: the name and the fact the report gives for its length policy, a note for
+// report.md's length settings, what it adds to report.json and, after report.md's plan line, a
+// paragraph. make is called with d.r, d.k, d.dev and d.cfg set.
+struct plan_maker {
+    std::string length_name;
+    bool runs_on_geometry_side = false;
+    std::string length_note;
+    std::function<plan(const render_data& d)> make;
+    std::function<void(const render_data& d, json& report)> add_json;
+    std::function<std::string(const render_data& d)> md_after_plan;
+};
 
 // Everything one render computed, for the report and the images.
 struct render_data {
+    const plan_maker* maker = nullptr;  // null: make_plan's plan
     plan_config cfg;
     scene::device_config dev;
     scene::world s;
@@ -73,8 +95,8 @@ struct render_data {
     std::vector<std::string> written;  // the PNGs
 };
 
-// One render (render_run.cpp): returns the process's exit status.
-int render(const options& o);
+// One render (render_run.cpp): returns the process's exit status. With a maker, its plan.
+int render(const options& o, const plan_maker* maker = nullptr);
 // The comparisons of a finished render (render_run.cpp).
 void compare_all(render_data& d);
 // report.json (render_report.cpp).

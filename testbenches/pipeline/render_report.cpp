@@ -144,7 +144,7 @@ json report_json(const options& o, const render_data& d) {
                      {"ambient", {mat.ambient.x, mat.ambient.y, mat.ambient.z}},
                      {"device", scene::device_name(dev.device)},
                      {"mode", o.mode},
-                     {"length", length_policy_name(cfg.length)},
+                     {"length", d.maker ? d.maker->length_name : std::string(length_policy_name(cfg.length))},
                      {"m", cfg.m},
                      {"m_min", cfg.m_min},
                      {"m_max", cfg.m_max},
@@ -154,7 +154,6 @@ json report_json(const options& o, const render_data& d) {
                      {"carry_samples", cfg.carry_samples},
                      {"above_slack", cfg.above_slack},
                      {"lit_guard", cfg.lit_guard},
-                     {"perfect_decisions", cfg.perfect_decisions},
                      {"surface_breaks", cfg.surface_breaks},
                      {"degree", degree_policy_name(cfg.degree)},
                      {"degree_tol", cfg.degree_tol},
@@ -165,7 +164,8 @@ json report_json(const options& o, const render_data& d) {
                      {"geometry_unit", geometry_unit_name(cfg.unit)},
                      {"walk_edges", cfg.walk_edges},
                      {"runs_on_geometry_side",
-                      policy_runs_on_geometry_side(cfg.length) && policy_runs_on_geometry_side(cfg.degree)},
+                      (d.maker ? d.maker->runs_on_geometry_side : policy_runs_on_geometry_side(cfg.length)) &&
+                          policy_runs_on_geometry_side(cfg.degree)},
                      {"sim", o.sim}};
     rep["frame_constants"] = {{"n", k.n}, {"ksi", k.ksi}, {"kdi", k.kdi}, {"ambient", k.ambient}};
     rep["plan"] = {{"intervals", p.jobs.size()},
@@ -180,35 +180,7 @@ json report_json(const options& o, const render_data& d) {
                    {"exact_pixels", n_deg[1]},
                    {"quadratic_pixels", n_deg[2]},
                    {"cubic_pixels", n_deg[3]}};
-    if (cfg.length == length_policy::optimal) {
-        // The yardstick's certificate: no plan of these segments reaching the NMSE has fewer points,
-        // and (with the cheapest point's long operations and the sample stage's per sample) no fewer
-        // long operations of the geometry side and the sample stage than the bound.
-        const double per_sample = hc.samples ? double(hc.sample_stage.long_ops()) / double(hc.samples) : 0.0;
-        const double bound_long = p.optimum.points_bound * (p.optimum.point_long_min + per_sample);
-        rep["plan"]["optimum"] = {
-            {"reference", cfg.optimal_reference == plan_config::reference::total ? "total" : "interpolation"},
-            {"nmse_allowed", cfg.optimal_nmse},
-            {"feasible", p.optimum.feasible},
-            {"nmse", p.optimum.nmse},
-            {"lambda", p.optimum.lambda},
-            {"points_bound", p.optimum.points_bound},
-            {"points_bound_per_pixel", hw_px > 0 ? p.optimum.points_bound / hw_px : 0.0},
-            {"point_long_min", p.optimum.point_long_min},
-            {"sample_long", per_sample},
-            {"long_bound_per_pixel", hw_px > 0 ? bound_long / hw_px : 0.0},
-            {"scanline_phong_ratio_bound",
-             bound_long > 0 ? double(d.sl.total().long_ops()) / bound_long * (hw_px / phong_px) : 0.0},
-            {"greedy", cfg.optimal_greedy}};
-        if (cfg.optimal_greedy)
-            rep["plan"]["optimum"]["greedy_plan"] = {{"tolerance_rms_levels", p.optimum.greedy_tolerance},
-                                                     {"nmse", p.optimum.greedy_nmse}};
-        if (cfg.optimal_from_above >= 0)
-            rep["plan"]["optimum"]["from_above"] = {{"window", cfg.optimal_from_above},
-                                                    {"nmse", p.optimum.above_nmse},
-                                                    {"met", p.optimum.above_nmse <= cfg.optimal_nmse},
-                                                    {"own_priced_share", p.optimum.above_fallback}};
-    }
+    if (d.maker && d.maker->add_json) d.maker->add_json(d, rep);
     rep["scene_stats"] = {{"triangles", r.setups.size()}, {"covered_pixels", r.covered_pixels()}};
     rep["errors"] = errors;
     rep["ops_per_pixel"] = {
@@ -245,7 +217,7 @@ std::string report_md(const options& o, const render_data& d) {
     std::ostringstream md;
     md << "# Shading pipeline report: " << s.name << ", " << r.width << "x" << r.height << "\n\n";
     md << "Configuration: device " << scene::device_name(dev.device) << " (" << o.mode << "), n = " << mat.n
-       << ", length " << length_policy_name(cfg.length);
+       << ", length " << (d.maker ? d.maker->length_name : std::string(length_policy_name(cfg.length)));
     if (cfg.length == length_policy::fixed)
         md << " (m = " << cfg.m << ", " << (1u << cfg.m) << " pixels)";
     else
@@ -253,7 +225,7 @@ std::string report_md(const options& o, const render_data& d) {
            << (cfg.exact_fallback ? "on" : "off") << (cfg.split_at_check ? ", split at the check point" : "")
            << (cfg.above_slack >= 0 ? ", at most " + std::to_string(cfg.above_slack) + " levels over the line above" : "")
            << (cfg.lit_guard ? ", lit guard (no all-unlit interval over a triangle that may be lit)" : "")
-           << (cfg.perfect_decisions ? ", perfect decisions (a yardstick: true errors, checks still paid)" : "") << ")";
+           << (d.maker ? d.maker->length_note : "") << ")";
     md << ", degree " << degree_policy_name(cfg.degree);
     if (cfg.degree == degree_policy::adaptive) md << " (tolerance " << cfg.degree_tol << ")";
     md << ", evaluator " << evaluator_name(cfg.eval) << ", sample set " << o.set << ", /3 " << o.div3
@@ -263,34 +235,7 @@ std::string report_md(const options& o, const render_data& d) {
        << fmt("%.2f", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()) << " pixels), " << hc.samples
        << " samples through the sample stage; pixels exact " << n_deg[1] << ", quadratic " << n_deg[2] << ", cubic "
        << n_deg[3] << ".\n\n";
-    if (cfg.length == length_policy::optimal) {
-        const json rep = report_json(o, d);
-        const json& opt = rep["plan"]["optimum"];
-        md << "The optimum (a yardstick, not a policy: it knows every colour and pays nothing to decide) for "
-           << opt["reference"].get<std::string>() << " NMSE <= " << fmt("%.2e", cfg.optimal_nmse) << ": "
-           << (p.optimum.feasible ? "reached, NMSE " : "out of reach; the lowest-error plan has NMSE ")
-           << fmt("%.3e", p.optimum.nmse) << "; no plan of these segments "
-           << "meets the NMSE with fewer than " << fmt("%.1f", p.optimum.points_bound) << " ("
-           << fmt("%.4f", opt["points_bound_per_pixel"].get<double>()) << " per pixel).";
-        const bool above = cfg.optimal_from_above >= 0;
-        if (cfg.optimal_greedy)
-            md << " The plan here is not the optimum's but the adaptive policies' greedy structure with "
-               << (above ? "the line above's errors as its estimates" : "perfect estimates") << ": RMS tolerance "
-               << fmt("%.3f", p.optimum.greedy_tolerance) << " levels per interval, NMSE "
-               << fmt("%.3e", p.optimum.greedy_nmse) << ", " << p.geometry_points << " geometry points.";
-        else if (above)
-            md << " The plan here is not the optimum's but one chosen the optimum's way on the line above's errors, "
-                  "not each line's own: NMSE "
-               << fmt("%.3e", p.optimum.above_nmse)
-               << (p.optimum.above_nmse <= cfg.optimal_nmse ? "" : ", above the NMSE allowed") << ", "
-               << p.geometry_points << " geometry points.";
-        if (above)
-            md << " Each candidate is priced by the same candidate's largest error on the line above over starts "
-                  "within "
-               << cfg.optimal_from_above << " pixels; " << fmt("%.1f", 100.0 * p.optimum.above_fallback)
-               << " % of the candidates, with none above, by their own.";
-        md << "\n\n";
-    }
+    if (d.maker && d.maker->md_after_plan) md << d.maker->md_after_plan(d);
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";
     md << "| pair | what | NMSE | PSNR dB | max | pixels beyond " << over_levels_text() << " |\n|---|---|---|---|---|---|\n";
     for (const auto& pd : pairs) {

@@ -20,6 +20,8 @@
 
 namespace shading::render_program {
 
+bool progress_open = false;
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -173,9 +175,10 @@ void compare_all(render_data& d) {
     d.wall["metrics"] = seconds_since(t);
 }
 
-int render(const options& o) {
+int render(const options& o, const plan_maker* maker) {
     const auto t_start = std::chrono::steady_clock::now();
     render_data d;
+    d.maker = maker;
     auto& wall = d.wall;
     d.cfg = plan_config_of(o);
     validate(d.cfg);
@@ -189,7 +192,7 @@ int render(const options& o) {
     d.r = scene::rasterise(d.s);
     wall["rasterise"] = seconds_since(t);
     t = std::chrono::steady_clock::now();
-    d.p = make_plan(d.r, d.k, d.dev, d.cfg);
+    d.p = maker ? maker->make(d) : make_plan(d.r, d.k, d.dev, d.cfg);
     wall["plan"] = seconds_since(t);
     t = std::chrono::steady_clock::now();
     d.hw = golden_frame(d.p, d.k, d.dev, d.cfg);

@@ -1,4 +1,5 @@
 // render_pipeline's options to a scene and a plan configuration (render_program.h).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -60,10 +61,7 @@ plan_config plan_config_of(const options& o) {
     c.div = o.div3 == "exact" ? interp::div3_mode::exact : interp::div3_mode::shift_add;
     c.length = o.length == "adaptive"   ? length_policy::adaptive
                : o.length == "geometry" ? length_policy::geometry
-               : o.length == "optimal"  ? length_policy::optimal
                                         : length_policy::fixed;
-    c.optimal_reference = o.optimal_reference == "total" ? plan_config::reference::total
-                                                         : plan_config::reference::interpolation;
     c.degree = o.degree == "quadratic" ? degree_policy::quadratic
                : o.degree == "zones"   ? degree_policy::zones
                : o.degree == "adaptive" ? degree_policy::adaptive
@@ -72,6 +70,30 @@ plan_config plan_config_of(const options& o) {
     c.eval = o.eval == "fd" ? evaluator::fd : evaluator::horner;
     c.unit = o.unit == "scratch" ? geometry_unit::scratch : geometry_unit::stepped;
     return c;
+}
+
+// Bad usage found from the command line alone, before any work (exit 2, common/exit_status.h): an
+// unknown built-in scene, a light or colour that does not parse, a plan the units cannot run. Empty
+// when none. A missing or malformed OBJ file is found later, and is a failure (exit 1).
+std::string usage_problem(const options& o) {
+    if (!o.sweep && o.device == "all") return "--device all is for --sweep";
+    const bool looks_like_obj = o.scene.size() > 4 && o.scene.substr(o.scene.size() - 4) == ".obj";
+    if (!looks_like_obj && !fs::is_regular_file(o.scene)) {
+        const auto names = scene::builtin_scene_names();
+        if (std::find(names.begin(), names.end(), o.scene) == names.end())
+            return "--scene '" + o.scene + "' is neither a file nor a built-in scene (sphere, torus, head)";
+    }
+    try {
+        if (!o.light.empty()) parse_light(o.light);
+        if (!o.kd.empty()) parse_colour("--kd", o.kd);
+        if (!o.ks.empty()) parse_colour("--ks", o.ks);
+        if (!o.ambient.empty()) parse_colour("--ambient", o.ambient);
+        if (!o.shard.empty()) parse_shard(o.shard);
+        validate(plan_config_of(o));
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
 }
 
 scene::world load_world(const options& o) {

@@ -196,7 +196,6 @@ int run_sweep(const options& o) {
                                       o.pc.walk_edges ? "--walk-edges" : "--no-walk-edges",
                                       "--above-slack", std::to_string(o.pc.above_slack),
                                       o.pc.lit_guard ? "--lit-guard" : "--no-lit-guard",
-                                      o.pc.perfect_decisions ? "--perfect-decisions" : "--no-perfect-decisions",
                                       o.pc.exact_fallback ? "--exact-fallback" : "--no-exact-fallback",
                                       sp.split || o.pc.split_at_check ? "--split-at-check" : "--no-split-at-check",
                                       sp.carry || o.pc.carry_samples ? "--carry-samples" : "--no-carry-samples",
@@ -205,10 +204,6 @@ int run_sweep(const options& o) {
         const std::string light = sp.light.empty() ? o.light : sp.light;
         if (!light.empty()) a.insert(a.end(), {"--light", light});
         a.insert(a.end(), {"--lobe-tol", num(o.pc.lobe_tol)});
-        // The optimum's settings (read only with --length optimal, as --lobe-tol only with geometry).
-        a.insert(a.end(), {"--optimal-nmse", num(o.pc.optimal_nmse), "--optimal-reference", o.optimal_reference});
-        if (o.pc.optimal_greedy) a.push_back("--optimal-greedy");
-        a.insert(a.end(), {"--optimal-from-above", std::to_string(o.pc.optimal_from_above)});
         const int n = sp.n != -1 ? sp.n : o.n;
         if (n != -1) a.insert(a.end(), {"--n", std::to_string(n)});
         if (!o.kd.empty()) a.insert(a.end(), {"--kd", o.kd});

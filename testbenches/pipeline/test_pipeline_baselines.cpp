@@ -121,14 +121,13 @@ TEST(PipelineGeometryUnit, SteppedCheaperOnTheHeadSamePlan) {
     EXPECT_GT(a.stepping.steps, 0u);
 }
 
-// Walking the edges changes what the geometry side pays, never the plan: for every length policy
-// (the optimum too) the same jobs with the same codes, the same points, fewer long operations; for
-// the plans without check points (fixed, the optimum) the walked count is one walking
-// span_stepper over the plan's sample points, plus the dot products and the fold test's compares.
+// Walking the edges changes what the geometry side pays, never the plan: for every length policy the
+// same jobs with the same codes, the same points, fewer long operations; for the plans without check
+// points (fixed) the walked count is one walking span_stepper over the plan's sample points, plus the
+// dot products. (The optimum's, a yardstick: studies/yardsticks/test_optimum.cpp.)
 TEST(PipelineGeometryUnit, WalkingEdgesChangesOnlyTheCounts) {
     const fixture f("head", 256);
-    for (length_policy lp : {length_policy::fixed, length_policy::adaptive, length_policy::geometry,
-                             length_policy::optimal}) {
+    for (length_policy lp : {length_policy::fixed, length_policy::adaptive, length_policy::geometry}) {
         plan_config c;
         c.length = lp;
         c.eval = evaluator::fd;

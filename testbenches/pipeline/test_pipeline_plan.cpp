@@ -377,6 +377,120 @@ TEST(PipelinePlan, SurfaceBreaksSplitFolds) {
     EXPECT_LT(err_with, err_without);
 }
 
+// ---- The adaptive length's decider, and plans made elsewhere (pipeline.h: the seams for studies) ----
+
+namespace {
+// A decider that reads nothing and answers the same every time.
+struct always : length_decider {
+    bool answer;
+    explicit always(bool a) : answer(a) {}
+    bool accept(length_candidate&) const override { return answer; }
+};
+// The policy's own decider, counting the candidates it is shown.
+struct counting : length_decider {
+    estimate_decider own;
+    mutable std::size_t calls = 0;
+    explicit counting(const plan_config& c) : own(c) {}
+    bool accept(length_candidate& cand) const override {
+        ++calls;
+        return own.accept(cand);
+    }
+};
+}  // namespace
+
+// The decider takes the adaptive length's decisions and pays only for what it reads: accepting every
+// candidate unread gives fixed m = 5's tiling with fixed m = 5's points and no check point; rejecting
+// every one leaves every pixel exact (the exact fallback); the policy's own decider through the seam
+// is make_plan's plan, counts and all.
+TEST(PipelinePlan, DeciderTakesTheAdaptiveDecisions) {
+    const auto& f = sphere();
+    plan_config c = adaptive_length(2, 5, 1.0);
+    const plan yes = make_plan(f.r, f.k, patent, c, always(true));
+    expect_valid_plan(f.r, yes, c);
+    const plan q = make_plan(f.r, f.k, patent, fixed(5));
+    ASSERT_EQ(yes.jobs.size(), q.jobs.size());
+    for (std::size_t i = 0; i < yes.jobs.size(); ++i) {
+        EXPECT_EQ(yes.jobs[i].x0, q.jobs[i].x0);
+        EXPECT_EQ(yes.jobs[i].m, q.jobs[i].m);
+        EXPECT_EQ(yes.jobs[i].s, q.jobs[i].s);
+    }
+    EXPECT_EQ(yes.geometry_points, q.geometry_points);
+    EXPECT_EQ(yes.check_samples, 0u);
+    EXPECT_EQ(yes.decision, scene::op_counts{}) << "nothing estimated, no fold test (no surface breaks)";
+
+    c.exact_fallback = true;
+    const plan no = make_plan(f.r, f.k, patent, c, always(false));
+    expect_valid_plan(f.r, no, c);
+    for (const interval_job& j : no.jobs) EXPECT_EQ(j.m, 0u) << "line " << j.y << ", x " << j.x0;
+    EXPECT_EQ(no.jobs.size(), f.r.covered_pixels());
+
+    counting own(c);
+    const plan p = make_plan(f.r, f.k, patent, c, own);
+    const plan d = make_plan(f.r, f.k, patent, c);
+    ASSERT_EQ(p.jobs.size(), d.jobs.size());
+    for (std::size_t i = 0; i < p.jobs.size(); ++i) {
+        EXPECT_EQ(p.jobs[i].x0, d.jobs[i].x0);
+        EXPECT_EQ(p.jobs[i].m, d.jobs[i].m);
+    }
+    EXPECT_EQ(p.geometry_points, d.geometry_points);
+    EXPECT_EQ(p.check_samples, d.check_samples);
+    EXPECT_EQ(p.decision, d.decision);
+    std::size_t intervals = 0;
+    for (const interval_job& j : p.jobs) intervals += j.m > 0;
+    EXPECT_GT(own.calls, intervals) << "some candidates were turned down";
+}
+
+// A plan made elsewhere (plan_of_jobs, given only each job's line, start, m and degree) is counted as
+// make_plan counts its own: the same samples and zones, points and geometry of both units, with edges
+// walked, quadratics, cubics and exact tails; no decision. Shapes out of raster order, or with a sample
+// off the covered pixels, are refused.
+TEST(PipelinePlan, PlanOfJobsCountsAsMakePlan) {
+    const auto& f = head();
+    plan_config c = head_fixed(4);
+    c.eval = evaluator::fd;  // exact tails
+    c.degree = degree_policy::zones;
+    c.walk_edges = true;
+    const plan p = make_plan(f.r, f.k, patent, c);
+    std::vector<interval_job> shapes;
+    std::size_t kinds[3] = {0, 0, 0};
+    for (const interval_job& j : p.jobs) {
+        interval_job s;
+        s.y = j.y;
+        s.x0 = j.x0;
+        s.m = j.m;
+        s.deg2 = j.deg2;
+        shapes.push_back(s);
+        ++kinds[j.m == 0 ? 0 : j.deg2 ? 1 : 2];
+    }
+    EXPECT_GT(kinds[0], 0u);
+    EXPECT_GT(kinds[1], 0u);
+    EXPECT_GT(kinds[2], 0u);
+    const plan q = plan_of_jobs(f.r, f.k, patent, c, shapes);
+    ASSERT_EQ(q.jobs.size(), p.jobs.size());
+    for (std::size_t i = 0; i < q.jobs.size(); ++i) {
+        EXPECT_EQ(q.jobs[i].len, p.jobs[i].len);
+        EXPECT_EQ(q.jobs[i].s, p.jobs[i].s);
+        EXPECT_EQ(q.jobs[i].zone, p.jobs[i].zone);
+    }
+    EXPECT_EQ(q.pixels, p.pixels);
+    EXPECT_EQ(q.geometry_points, p.geometry_points);
+    EXPECT_EQ(q.points, p.points);
+    EXPECT_EQ(q.geometry, p.geometry);
+    EXPECT_EQ(q.geometry_stepped, p.geometry_stepped);
+    EXPECT_EQ(q.stepping.triangle_setups, p.stepping.triangle_setups);
+    EXPECT_EQ(q.stepping.run_starts, p.stepping.run_starts);
+    EXPECT_EQ(q.stepping.walked_starts, p.stepping.walked_starts);
+    EXPECT_EQ(q.stepping.steps, p.stepping.steps);
+    EXPECT_GT(q.stepping.walked_starts, 0u);
+    EXPECT_EQ(q.decision, scene::op_counts{});
+    EXPECT_GT(p.decision.cmp, 0u) << "make_plan's fold tests and zone boxes";
+    std::vector<interval_job> reversed(shapes.rbegin(), shapes.rend());
+    EXPECT_THROW(plan_of_jobs(f.r, f.k, patent, c, reversed), std::invalid_argument);
+    interval_job off;  // line 0, x 0: the head does not cover the frame's corner
+    ASSERT_FALSE(f.r.covered(0, 0));
+    EXPECT_THROW(plan_of_jobs(f.r, f.k, patent, c, {off}), std::invalid_argument);
+}
+
 // ---- Degree policies ----
 
 TEST(PipelinePlan, AdaptiveDegreeExtremes) {

@@ -1,37 +1,51 @@
-// The optimum plan (optimal.cpp), the yardstick of the length and degree policies: a valid plan whose
+// The optimum plan (optimum.cpp), the yardstick of the length and degree policies: a valid plan whose
 // NMSE, recomputed from its frame, is within the allowed one; its geometry points counted from its
 // sample pixels; its Lagrangian certificate checked against every policy's plan and against plans
 // perturbed from it (none may beat points + lambda x error); the cheapest point hand-counted.
+#include <array>
 #include <optional>
 #include <random>
 
-#include "plan_test_fixtures.h"
+#include "scene/scanline.h"
+#include "studies/yardsticks/optimum.h"
+#include "testbenches/pipeline/plan_test_fixtures.h"
 
 using namespace shading;
 using namespace shading::pipeline;
+using namespace shading::yardsticks;
 using namespace plan_test;
 
 namespace {
 
-plan_config optimum_config(double nmse, plan_config::reference ref = plan_config::reference::interpolation) {
+using reference = optimum_config::reference;
+
+// The pipeline's settings the optimum plans for (intervals of m_min .. m_max in either degree, the
+// forward differences), and what it is asked. Its plans are checked as a length policy's of
+// m_min .. m_max with exact pixels anywhere (expect_valid_plan with adaptive length and the exact
+// fallback): the optimum reads no length policy.
+struct optimum_case {
     plan_config c;
-    c.length = length_policy::optimal;
-    c.m_min = interp::m_min;
-    c.m_max = interp::m_max;
-    c.eval = evaluator::fd;
-    c.optimal_nmse = nmse;
-    c.optimal_reference = ref;
-    return c;
+    optimum_config o;
+};
+optimum_case optimum_config_of(double nmse, reference ref = reference::interpolation) {
+    optimum_case t;
+    t.c.length = length_policy::adaptive;
+    t.c.m_min = interp::m_min;
+    t.c.m_max = interp::m_max;
+    t.c.eval = evaluator::fd;
+    t.o.nmse = nmse;
+    t.o.ref = ref;
+    return t;
 }
+optimum plan_of(const scene_fixture& f, const optimum_case& t) { return optimal_plan(f.r, f.k, patent, t.c, t.o); }
 
 // The reference image and its energy (sum of squared values over covered pixels and channels),
 // recomputed here from the golden model and the Phong renderer.
 struct reference_image {
     scene::shaded_image img;
     double energy = 0.0;
-    reference_image(const scene_fixture& f, plan_config::reference ref) {
-        img = ref == plan_config::reference::interpolation ? to_image(per_pixel_frame(f.r, f.k, patent))
-                                                            : scene::render_phong(f.r);
+    reference_image(const scene_fixture& f, reference ref) {
+        img = ref == reference::interpolation ? to_image(per_pixel_frame(f.r, f.k, patent)) : scene::render_phong(f.r);
         for (std::size_t i = 0; i < img.value.size(); ++i)
             if (img.covered[i])
                 for (int ch = 0; ch < 3; ++ch) energy += img.value[i][ch] * img.value[i][ch];
@@ -98,20 +112,22 @@ std::optional<local_change> change_of(const scene_fixture& f, const plan& p, con
 
 TEST(PipelineOptimal, IsAValidPlanWithinItsNmse) {
     const scene_fixture& f = head();
-    for (const auto ref : {plan_config::reference::interpolation, plan_config::reference::total}) {
-        const plan_config c = optimum_config(ref == plan_config::reference::interpolation ? 1e-4 : 1e-2, ref);
-        const plan p = make_plan(f.r, f.k, patent, c);
+    for (const auto ref : {reference::interpolation, reference::total}) {
+        const optimum_case t = optimum_config_of(ref == reference::interpolation ? 1e-4 : 1e-2, ref);
+        const plan_config& c = t.c;
+        const optimum best = plan_of(f, t);
+        const plan& p = best.p;
         expect_valid_plan(f.r, p, c);
-        ASSERT_TRUE(p.optimum.feasible);
+        ASSERT_TRUE(best.certificate.feasible);
         const reference_image img(f, ref);
         const double nmse = squared_error(f, p, c, img) / img.energy;
-        EXPECT_LE(nmse, c.optimal_nmse);
-        EXPECT_NEAR(p.optimum.nmse, nmse, 1e-9 * c.optimal_nmse);
+        EXPECT_LE(nmse, t.o.nmse);
+        EXPECT_NEAR(best.certificate.nmse, nmse, 1e-9 * t.o.nmse);
         // Its points are its distinct sample pixels (no check points: it pays nothing to decide).
         EXPECT_EQ(p.geometry_points, sample_pixels(p, c.set).size());
         EXPECT_EQ(p.check_samples, 0u);
-        EXPECT_LE(p.optimum.points_bound, double(p.geometry_points));
-        EXPECT_GT(p.optimum.points_bound, 0.0);
+        EXPECT_LE(best.certificate.points_bound, double(p.geometry_points));
+        EXPECT_GT(best.certificate.points_bound, 0.0);
     }
 }
 
@@ -119,23 +135,23 @@ TEST(PipelineOptimal, TighterNmseNeedsMorePoints) {
     const scene_fixture& f = head();
     std::size_t prev = 0;
     for (const double nmse : {1e-3, 1e-4, 1e-5, 1e-6}) {
-        const plan p = make_plan(f.r, f.k, patent, optimum_config(nmse));
+        const plan p = plan_of(f, optimum_config_of(nmse)).p;
         EXPECT_GE(p.geometry_points, prev) << "NMSE " << nmse;
         prev = p.geometry_points;
     }
     // NMSE 0 against per-pixel shading: every interval that is not exact costs error unless its
     // polynomial hits every pixel's code, so the plan is (nearly) all exact pixels, and still valid.
-    const plan all = make_plan(f.r, f.k, patent, optimum_config(0.0));
-    EXPECT_TRUE(all.optimum.feasible);
-    EXPECT_EQ(all.optimum.nmse, 0.0);
-    EXPECT_GT(all.geometry_points, prev);
+    const optimum all = plan_of(f, optimum_config_of(0.0));
+    EXPECT_TRUE(all.certificate.feasible);
+    EXPECT_EQ(all.certificate.nmse, 0.0);
+    EXPECT_GT(all.p.geometry_points, prev);
 }
 
 // No policy's plan (same segments, same evaluator) reaches its own NMSE with fewer sample points than
 // the bound the optimum certifies for that NMSE.
 TEST(PipelineOptimal, BoundIsBelowEveryPolicy) {
     const scene_fixture& f = head();
-    const reference_image ref(f, plan_config::reference::interpolation);
+    const reference_image ref(f, reference::interpolation);
     std::vector<plan_config> policies;
     for (const double tol : {0.5, 1.0, 2.0, 4.0}) {
         plan_config c;
@@ -154,9 +170,9 @@ TEST(PipelineOptimal, BoundIsBelowEveryPolicy) {
                      std::to_string(c.m));
         const plan p = make_plan(f.r, f.k, patent, c);
         const double nmse = squared_error(f, p, c, ref) / ref.energy;
-        const plan best = make_plan(f.r, f.k, patent, optimum_config(nmse));
-        EXPECT_LE(best.optimum.points_bound, double(sample_pixels(p, c.set).size()));
-        EXPECT_LE(best.geometry_points, sample_pixels(p, c.set).size());
+        const optimum best = plan_of(f, optimum_config_of(nmse));
+        EXPECT_LE(best.certificate.points_bound, double(sample_pixels(p, c.set).size()));
+        EXPECT_LE(best.p.geometry_points, sample_pixels(p, c.set).size());
     }
 }
 
@@ -165,10 +181,12 @@ TEST(PipelineOptimal, BoundIsBelowEveryPolicy) {
 // degree flipped, split in two, or merged with its neighbour) may do better at its lambda.
 TEST(PipelineOptimal, NoLocalChangeBeatsIt) {
     const scene_fixture& f = head();
-    const plan_config c = optimum_config(3e-5);
-    const reference_image ref(f, plan_config::reference::interpolation);
-    const plan best = make_plan(f.r, f.k, patent, c);
-    const double lambda = best.optimum.lambda;
+    const optimum_case t = optimum_config_of(3e-5);
+    const plan_config& c = t.c;
+    const reference_image ref(f, reference::interpolation);
+    const optimum found = plan_of(f, t);
+    const plan& best = found.p;
+    const double lambda = found.certificate.lambda;
     ASSERT_GT(lambda, 0.0);
     auto objective = [&](const plan& p) {
         return double(sample_pixels(p, c.set).size()) + lambda * squared_error(f, p, c, ref);
@@ -193,22 +211,20 @@ TEST(PipelineOptimal, NoLocalChangeBeatsIt) {
 TEST(PipelineOptimal, InfeasibleNmseGivesTheLowestErrorPlan) {
     const scene_fixture& f = head();
     // Against exact Phong the device's own error remains at every pixel: NMSE 0 is out of reach.
-    const plan_config c = optimum_config(0.0, plan_config::reference::total);
-    const plan p = make_plan(f.r, f.k, patent, c);
-    EXPECT_FALSE(p.optimum.feasible);
-    EXPECT_EQ(p.optimum.points_bound, 0.0);
-    expect_valid_plan(f.r, p, c);
-    const reference_image ref(f, plan_config::reference::total);
-    EXPECT_NEAR(p.optimum.nmse, squared_error(f, p, c, ref) / ref.energy, 1e-9);
+    const optimum_case t = optimum_config_of(0.0, reference::total);
+    const optimum best = plan_of(f, t);
+    EXPECT_FALSE(best.certificate.feasible);
+    EXPECT_EQ(best.certificate.points_bound, 0.0);
+    expect_valid_plan(f.r, best.p, t.c);
+    const reference_image ref(f, reference::total);
+    EXPECT_NEAR(best.certificate.nmse, squared_error(f, best.p, t.c, ref) / ref.energy, 1e-9);
 }
 
 TEST(PipelineOptimal, RejectsABadNmse) {
-    plan_config c = optimum_config(-1e-5);
-    EXPECT_THROW(make_plan(head().r, head().k, patent, c), scene::scene_error);
-    c.optimal_nmse = std::nan("");
-    EXPECT_THROW(make_plan(head().r, head().k, patent, c), scene::scene_error);
-    EXPECT_STREQ(length_policy_name(length_policy::optimal), "optimal");
-    EXPECT_FALSE(policy_runs_on_geometry_side(length_policy::optimal));
+    optimum_case t = optimum_config_of(-1e-5);
+    EXPECT_THROW(plan_of(head(), t), scene::scene_error);
+    t.o.nmse = std::nan("");
+    EXPECT_THROW(plan_of(head(), t), scene::scene_error);
 }
 
 // The cheapest point of the head (perspective camera, one directional light), counted by hand from
@@ -216,8 +232,7 @@ TEST(PipelineOptimal, RejectsABadNmse) {
 // division, 3 mul (8); P = (1 / Q) U_P: a division, 3 mul (4); V = normalize(E - P) (8); H =
 // normalize(L + V) (8); N.L and N.H: 6 mul. 34 long operations.
 TEST(PipelineOptimal, CheapestPointIsHandCounted) {
-    const plan p = make_plan(head().r, head().k, patent, optimum_config(1e-3));
-    EXPECT_EQ(p.optimum.point_long_min, 34.0);
+    EXPECT_EQ(plan_of(head(), optimum_config_of(1e-3)).certificate.point_long_min, 34.0);
 }
 
 // The greedy with perfect estimates (--optimal-greedy): a valid plan within the NMSE, never below the
@@ -225,18 +240,20 @@ TEST(PipelineOptimal, CheapestPointIsHandCounted) {
 // interval at the same start, neither degree of it within the tolerance (recomputed here).
 TEST(PipelineOptimal, GreedyFollowsItsRule) {
     const scene_fixture& f = head();
-    plan_config c = optimum_config(1e-4);
-    c.optimal_greedy = true;
-    const plan p = make_plan(f.r, f.k, patent, c);
+    optimum_case t = optimum_config_of(1e-4);
+    t.o.greedy = true;
+    const plan_config& c = t.c;
+    const optimum greedy = plan_of(f, t);
+    const plan& p = greedy.p;
     expect_valid_plan(f.r, p, c);
-    const reference_image ref(f, plan_config::reference::interpolation);
+    const reference_image ref(f, reference::interpolation);
     const double nmse = squared_error(f, p, c, ref) / ref.energy;
-    EXPECT_LE(nmse, c.optimal_nmse);
-    EXPECT_NEAR(p.optimum.greedy_nmse, nmse, 1e-9 * c.optimal_nmse);
-    EXPECT_GE(double(p.geometry_points), p.optimum.points_bound);
-    const plan best = make_plan(f.r, f.k, patent, optimum_config(1e-4));
+    EXPECT_LE(nmse, t.o.nmse);
+    EXPECT_NEAR(greedy.certificate.greedy_nmse, nmse, 1e-9 * t.o.nmse);
+    EXPECT_GE(double(p.geometry_points), greedy.certificate.points_bound);
+    const plan best = plan_of(f, optimum_config_of(1e-4)).p;
     EXPECT_GT(p.geometry_points, best.geometry_points) << "the greedy should need more points than the optimum";
-    const double tol = p.optimum.greedy_tolerance;
+    const double tol = greedy.certificate.greedy_tolerance;
     ASSERT_GT(tol, 0.0);
     const frame exact = per_pixel_frame(f.r, f.k, patent);
     // RMS error (levels, per channel) of an interval at (y, x0) of 2^m pixels, recomputed.
@@ -269,20 +286,22 @@ TEST(PipelineOptimal, GreedyFollowsItsRule) {
 // from the rasteriser's segments and the golden model).
 TEST(PipelineOptimal, FromAboveChoosesOnTheLineAbovesErrors) {
     const scene_fixture& f = head();
-    plan_config c = optimum_config(1e-4);
-    const plan best = make_plan(f.r, f.k, patent, c);
-    c.optimal_from_above = 0;
-    const plan p = make_plan(f.r, f.k, patent, c);
+    optimum_case t = optimum_config_of(1e-4);
+    const plan_config& c = t.c;
+    const optimum best = plan_of(f, t);
+    t.o.from_above = 0;
+    const optimum from_above = plan_of(f, t);
+    const plan& p = from_above.p;
     expect_valid_plan(f.r, p, c);
-    const reference_image ref(f, plan_config::reference::interpolation);
+    const reference_image ref(f, reference::interpolation);
     const double nmse = squared_error(f, p, c, ref) / ref.energy;
-    EXPECT_NEAR(p.optimum.above_nmse, nmse, 1e-9 * c.optimal_nmse);
-    EXPECT_LE(nmse, c.optimal_nmse);
-    EXPECT_EQ(p.optimum.points_bound, best.optimum.points_bound) << "the certificate is the optimum's";
-    EXPECT_GT(p.geometry_points, best.geometry_points) << "pricing from the line above should cost points";
-    EXPECT_GT(p.optimum.above_fallback, 0.0);
-    EXPECT_LT(p.optimum.above_fallback, 0.2);
-    const double lambda = p.optimum.above_lambda;
+    EXPECT_NEAR(from_above.certificate.above_nmse, nmse, 1e-9 * t.o.nmse);
+    EXPECT_LE(nmse, t.o.nmse);
+    EXPECT_EQ(from_above.certificate.points_bound, best.certificate.points_bound) << "the certificate is the optimum's";
+    EXPECT_GT(p.geometry_points, best.p.geometry_points) << "pricing from the line above should cost points";
+    EXPECT_GT(from_above.certificate.above_fallback, 0.0);
+    EXPECT_LT(from_above.certificate.above_fallback, 0.2);
+    const double lambda = from_above.certificate.above_lambda;
     ASSERT_GT(lambda, 0.0);
 
     const frame exact = per_pixel_frame(f.r, f.k, patent);
@@ -323,6 +342,49 @@ TEST(PipelineOptimal, FromAboveChoosesOnTheLineAbovesErrors) {
     }
     EXPECT_GE(tried, 40u);
     EXPECT_GE(above, 30u);
-    c.optimal_from_above = int(optimal_window_max) + 1;
-    EXPECT_THROW(make_plan(f.r, f.k, patent, c), scene::scene_error);
+    t.o.from_above = int(window_max) + 1;
+    EXPECT_THROW(plan_of(f, t), scene::scene_error);
+}
+
+// Walking the edges changes what the geometry side pays, never the plan (as test_pipeline_baselines
+// checks for every length policy): the optimum's jobs with the same codes, the same points, fewer
+// long operations; and, without check points, the walked count is one walking span_stepper over the
+// plan's sample points plus the dot products (recomputed here from scanline.h).
+TEST(PipelineOptimal, WalkingEdgesChangesOnlyTheCounts) {
+    const scene_fixture f("head", 256);
+    const scene::device_config squared{scene::specular_device::squared, overflow_mode::saturate};
+    optimum_case t = optimum_config_of(1e-5);
+    t.c.m_max = 5;  // the pipeline's defaults otherwise, with the forward differences
+    t.c.degree = degree_policy::cubic;
+    const plan a = optimal_plan(f.r, f.k, squared, t.c, t.o).p;
+    t.c.walk_edges = true;
+    const plan b = optimal_plan(f.r, f.k, squared, t.c, t.o).p;
+    ASSERT_EQ(a.jobs.size(), b.jobs.size());
+    for (std::size_t i = 0; i < a.jobs.size(); ++i) {
+        ASSERT_EQ(a.jobs[i].x0, b.jobs[i].x0) << i;
+        ASSERT_EQ(a.jobs[i].s, b.jobs[i].s) << i;
+    }
+    EXPECT_EQ(a.geometry_points, b.geometry_points);
+    EXPECT_EQ(a.geometry, b.geometry);  // from scratch: no stepper
+    EXPECT_EQ(a.stepping.walked_starts, 0u);
+    EXPECT_GT(b.stepping.walked_starts, 0u);
+    EXPECT_LT(b.geometry_stepped.long_ops(), a.geometry_stepped.long_ops());
+    std::set<std::pair<unsigned, unsigned>> px;
+    for (const auto& j : b.jobs)
+        for (unsigned e : job_points(j, t.c.set)) px.insert({j.y, at(j, e)});
+    ASSERT_EQ(px.size(), b.geometry_points);
+    scene::span_stepper st(f.r, true);
+    scene::op_counts walked;
+    for (const auto& [y, x] : px) {
+        // The dot products the geometry side charges per point (N.L, its gate, N.H and its clamp).
+        const scene::pixel_geometry g = st.at(x, y, &walked);
+        auto re = [&walked](const scene::cvec3& v) {
+            return scene::cvec3{scene::cnum(v.x.value(), &walked), scene::cnum(v.y.value(), &walked),
+                                scene::cnum(v.z.value(), &walked)};
+        };
+        const scene::cnum zero(0.0, &walked);
+        const scene::cvec3 n = re(g.n);
+        if (dot(n, re(g.l[0])) > zero) max(dot(n, re(g.h[0])), zero);
+    }
+    EXPECT_EQ(b.geometry_stepped, walked);
 }

@@ -1,9 +1,9 @@
-// The optimum plan (pipeline.h, optimal_plan): a yardstick for the length and degree policies. It
+// The optimum plan (optimum.h, optimal_plan): a yardstick for the length and degree policies. It
 // knows what no policy knows (every pixel's colour and its reference) and pays nothing to decide, so
 // no policy can need fewer geometry points at its NMSE; its certificate says how far each policy is
 // from the best the pipeline's intervals allow, and so what ratio against Phong is in reach at all.
 //
-// Per segment (line_geometry.h: the same segments as make_plan), a piece at pixel i is an exact pixel
+// Per segment (pipeline::line_segments: the same segments as make_plan), a piece at pixel i is an exact pixel
 // or an interval of 2^m pixels (m_min..m_max, whose t = 1 sample is pixel i + 2^m of the segment),
 // quadratic or cubic. Points are counted as the geometry side computes them: a piece's first pixel
 // costs one unless an interval ended there (its t = 1 sample), an interval adds its inner samples and
@@ -11,18 +11,27 @@
 // hardware's arithmetic, against the reference image); a backward dynamic programme over the segment
 // then minimises points + lambda x error exactly, for each lambda of a bisection.
 //
-// Planned from the line above (c.optimal_from_above >= 0), each candidate is priced with the line
+// Planned from the line above (o.from_above >= 0), each candidate is priced with the line
 // above's errors instead of its own: what a planner could reach that knew every colour of the line
 // above (more than any hardware keeps) but nothing of its own line. The plan is chosen on those prices
 // and its true error counted; the certificate stays the optimum's.
+#include "studies/yardsticks/optimum.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
-#include "golden_pipeline/line_geometry.h"
-#include "golden_pipeline/pipeline.h"
+namespace shading::yardsticks {
 
-namespace shading::pipeline {
+using namespace shading::pipeline;
+
+void validate(const optimum_config& o) {
+    if (!(o.nmse >= 0.0) || !std::isfinite(o.nmse)) throw scene::scene_error("optimum: the NMSE must be finite and >= 0");
+    if (o.from_above > int(window_max))
+        throw scene::scene_error("optimum: the window over the line above, " + std::to_string(o.from_above) + ", exceeds " +
+                                 std::to_string(window_max) + " pixels; negative for the optimum's own prices");
+}
 
 namespace {
 
@@ -43,13 +52,13 @@ struct piece {
 class optimum_search {
 public:
     optimum_search(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
-                   const plan_config& c, plan& p)
-        : r_(r), k_(k), dev_(dev), c_(c), p_(p), lengths_(c.m_max - c.m_min + 1) {}
+                   const plan_config& c, const optimum_config& o, optimum_certificate& cert)
+        : r_(r), k_(k), dev_(dev), c_(c), o_(o), cert_(cert), lengths_(c.m_max - c.m_min + 1) {}
 
     // The reference image and every segment's candidate errors.
     void prepare() {
         const frame exact = per_pixel_frame(r_, k_, dev_);
-        const scene::shaded_image ref = c_.optimal_reference == plan_config::reference::interpolation
+        const scene::shaded_image ref = o_.ref == optimum_config::reference::interpolation
                                             ? to_image(exact)
                                             : scene::render_phong(r_);
         const double lsb = pixel_fmt.lsb();
@@ -70,7 +79,7 @@ public:
         for (unsigned y = 0; y < r_.height; ++y) {
             for (unsigned x = 0; x < r_.width; ++x)
                 if (r_.covered(x, y)) sg[x] = sample_of(scene::geometry_at(r_, x, y, nullptr));
-            for (const auto& seg : line_segments(r_, y, c_, &p_.decision)) {
+            for (const auto& seg : line_segments(r_, y, c_, &decision_)) {
                 segment_costs s;
                 s.y = y;
                 s.xa = seg[0];
@@ -156,9 +165,9 @@ public:
                 }
             }
         }
-        p_.optimum.above_fallback = candidates > 0 ? double(fallback) / double(candidates) : 0.0;
+        cert_.above_fallback = candidates > 0 ? double(fallback) / double(candidates) : 0.0;
     }
-    const std::vector<segment_costs>& prices() const { return c_.optimal_from_above >= 0 ? priced_ : segs_; }
+    const std::vector<segment_costs>& prices() const { return o_.from_above >= 0 ? priced_ : segs_; }
 
     // Points and squared error of the plan minimising points + lambda x error over every segment, the
     // errors priced by `by` (segs_ for the optimum); with `out`, its pieces per segment.
@@ -262,7 +271,7 @@ public:
 
     // The greedy's tolerance: the largest (bisected) whose plan meets the NMSE.
     std::vector<std::vector<piece>> search_greedy() {
-        const double allowed = c_.optimal_nmse * ref_energy_;
+        const double allowed = o_.nmse * ref_energy_;
         auto meets = [&](double tau) { return greedy(tau * tau, nullptr).second <= allowed; };
         double lo = 0.0, hi = 256.0;  // levels: tau = 0 takes only intervals without error
         if (meets(hi)) lo = hi;
@@ -273,9 +282,9 @@ public:
         }
         std::vector<std::vector<piece>> pieces;
         const double error = greedy(lo * lo, &pieces).second;
-        p_.optimum.greedy_tolerance = lo;
-        p_.optimum.greedy_nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
-        if (c_.optimal_from_above >= 0) p_.optimum.above_nmse = p_.optimum.greedy_nmse;
+        cert_.greedy_tolerance = lo;
+        cert_.greedy_nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
+        if (o_.from_above >= 0) cert_.above_nmse = cert_.greedy_nmse;
         return pieces;
     }
 
@@ -284,7 +293,7 @@ public:
     // plan's NMSE only (there the dual bound does not hold).
     std::vector<std::vector<piece>> search(bool certify) {
         const std::vector<segment_costs>& by = certify ? segs_ : priced_;
-        const double allowed = c_.optimal_nmse * ref_energy_;
+        const double allowed = o_.nmse * ref_energy_;
         double bound = 0.0;
         auto trial = [&](double lambda) {
             const auto [points, error] = solve(lambda, nullptr, by);
@@ -309,48 +318,34 @@ public:
         std::vector<std::vector<piece>> pieces;
         const auto [points, error] = solve(hi, &pieces, by);
         if (!certify) {
-            p_.optimum.above_nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
-            p_.optimum.above_lambda = hi;
+            cert_.above_nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
+            cert_.above_lambda = hi;
             return pieces;
         }
-        p_.optimum.points_bound = feasible ? bound : 0.0;  // <= points: at lambda = hi the error is within
-        p_.optimum.nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
-        p_.optimum.lambda = hi;
-        p_.optimum.feasible = feasible;
+        cert_.points_bound = feasible ? bound : 0.0;  // <= points: at lambda = hi the error is within
+        cert_.nmse = ref_energy_ > 0.0 ? error / ref_energy_ : 0.0;
+        cert_.lambda = hi;
+        cert_.feasible = feasible;
         return pieces;
     }
 
-    // The chosen pieces as jobs, their geometry counted as make_plan counts it.
-    void emit(const std::vector<std::vector<piece>>& pieces) {
-        scene::span_stepper stepper(r_, c_.walk_edges);
-        const std::array<unsigned, 4> cubic = cubic_points(c_.set);
-        std::size_t k = 0;
-        for (unsigned y = 0; y < r_.height; ++y) {
-            line_geometry lg(r_, y, k_, dev_, p_);
-            for (; k < segs_.size() && segs_[k].y == y; ++k)
-                for (const piece& pc : pieces[k]) {
-                    interval_job job;
-                    job.y = y;
-                    job.x0 = segs_[k].xa + pc.i;
-                    job.m = pc.m;
-                    job.len = 1u << pc.m;
-                    job.deg2 = pc.m > 0 && !pc.cubic;
-                    if (pc.m == 0) {
-                        const sample_geometry s = lg.sample(job.x0);
-                        job.s = {s, s, s, s};
-                    } else if (job.deg2) {
-                        for (unsigned j = 0; j < 3; ++j) job.s[j] = lg.sample(job.x0 + quad_points[j] * job.len / 8);
-                        job.s[3] = job.s[2];
-                    } else {
-                        for (unsigned j = 0; j < 4; ++j) job.s[j] = lg.sample(job.x0 + cubic[j] * job.len / 8);
-                    }
-                    job.zone = static_cast<uint8_t>(head_zone(r_, lg.geometry(job.x0)));
-                    p_.pixels += job.len;
-                    p_.jobs.push_back(job);
-                }
-            lg.charge_stepped(stepper, p_);
-        }
-        p_.optimum.point_long_min = cheapest_point();
+    // The chosen pieces as a plan, its geometry counted as make_plan counts it (plan_of_jobs) and the
+    // segments' fold tests as its decision.
+    plan emit(const std::vector<std::vector<piece>>& pieces) {
+        std::vector<interval_job> shapes;
+        for (std::size_t k = 0; k < segs_.size(); ++k)
+            for (const piece& pc : pieces[k]) {
+                interval_job job;
+                job.y = segs_[k].y;
+                job.x0 = segs_[k].xa + pc.i;
+                job.m = pc.m;
+                job.deg2 = pc.m > 0 && !pc.cubic;
+                shapes.push_back(job);
+            }
+        plan p = plan_of_jobs(r_, k_, dev_, c_, shapes);
+        p.decision += decision_;
+        cert_.point_long_min = cheapest_point();
+        return p;
     }
 
 private:
@@ -359,17 +354,16 @@ private:
     }
 
     // The long operations of a point the stepping unit reaches by a step (no triangle set-up, no run
-    // start) with its dot products: no point of any plan costs less. 0 if no two neighbouring pixels
-    // of a line share a triangle (then nothing is claimed).
+    // start) with its dot products: no point of any plan costs less. The stepping unit's count of the
+    // pair (x, x + 1) less that of x alone. 0 if no two neighbouring pixels of a line share a
+    // triangle (then nothing is claimed).
     double cheapest_point() const {
         for (unsigned y = 0; y < r_.height; ++y)
             for (unsigned x = 0; x + 1 < r_.width; ++x)
                 if (r_.covered(x, y) && r_.covered(x + 1, y) && r_.tri[r_.index(x, y)] == r_.tri[r_.index(x + 1, y)]) {
-                    scene::span_stepper stepper(r_);
-                    stepper.at(x, y, nullptr);
-                    scene::op_counts ops;
-                    line_geometry::charge_dots(stepper.at(x + 1, y, &ops), &ops);
-                    return double(ops.long_ops());
+                    const uint64_t pair = stepped_geometry(r_, {{x, y}, {x + 1, y}}, false).ops.long_ops();
+                    const uint64_t first = stepped_geometry(r_, {{x, y}}, false).ops.long_ops();
+                    return double(pair - first);
                 }
         return 0.0;
     }
@@ -378,31 +372,32 @@ private:
     const frame_constants& k_;
     const scene::device_config& dev_;
     const plan_config& c_;
-    plan& p_;
+    const optimum_config& o_;
+    optimum_certificate& cert_;
+    scene::op_counts decision_;  // the segments' fold tests (line_segments), as make_plan charges them
     unsigned lengths_;
     double ref_energy_ = 0.0;
     std::vector<segment_costs> segs_;
-    std::vector<segment_costs> priced_;  // with c.optimal_from_above >= 0: segs_ priced from the line above
+    std::vector<segment_costs> priced_;  // with o.from_above >= 0: segs_ priced from the line above
 };
 
 }  // namespace
 
-plan optimal_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
-                  const plan_config& c) {
-    validate(c);
-    plan p;
-    p.width = r.width;
-    p.height = r.height;
-    optimum_search s(r, k, dev, c, p);
+optimum optimal_plan(const scene::rasterised& r, const frame_constants& k, const scene::device_config& dev,
+                     const plan_config& c, const optimum_config& o) {
+    pipeline::validate(c);
+    validate(o);
+    optimum out;
+    optimum_search s(r, k, dev, c, o, out.certificate);
     s.prepare();
     auto pieces = s.search(true);
-    if (c.optimal_from_above >= 0) {
-        s.price_from_above(unsigned(c.optimal_from_above));
-        if (!c.optimal_greedy) pieces = s.search(false);
+    if (o.from_above >= 0) {
+        s.price_from_above(unsigned(o.from_above));
+        if (!o.greedy) pieces = s.search(false);
     }
-    if (c.optimal_greedy) pieces = s.search_greedy();
-    s.emit(pieces);
-    return p;
+    if (o.greedy) pieces = s.search_greedy();
+    out.p = s.emit(pieces);
+    return out;
 }
 
-}  // namespace shading::pipeline
+}  // namespace shading::yardsticks
