@@ -234,15 +234,11 @@ json report_json(const options& o, const render_data& d) {
     return rep;
 }
 
-std::string report_md(const options& o, const render_data& d) {
+namespace {
+
+// The title, the configuration and the plan.
+void md_configuration(std::ostream& md, const options& o, const render_data& d) {
     RENDER_ALIASES;
-    const auto& whole = d.whole;
-    const auto& errors = d.errors;
-    const auto& zone_px = d.zone_px;
-    const auto& wall = d.wall;
-    const double sim_clocks_per_px = d.sim_clocks_per_px, sim_px_per_s = d.sim_px_per_s;
-    const double sim_px_per_cpu_s = d.sim_px_per_cpu_s, sr_cpu = d.sr_cpu;
-    std::ostringstream md;
     md << "# Shading pipeline report: " << s.name << ", " << r.width << "x" << r.height << "\n\n";
     md << "Configuration: device " << scene::device_name(dev.device) << " (" << o.mode << "), n = " << mat.n
        << ", length " << length_policy_name(cfg.length);
@@ -263,34 +259,45 @@ std::string report_md(const options& o, const render_data& d) {
        << fmt("%.2f", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()) << " pixels), " << hc.samples
        << " samples through the sample stage; pixels exact " << n_deg[1] << ", quadratic " << n_deg[2] << ", cubic "
        << n_deg[3] << ".\n\n";
-    if (cfg.length == length_policy::optimal) {
-        const json rep = report_json(o, d);
-        const json& opt = rep["plan"]["optimum"];
-        md << "The optimum (a yardstick, not a policy: it knows every colour and pays nothing to decide) for "
-           << opt["reference"].get<std::string>() << " NMSE <= " << fmt("%.2e", cfg.optimal_nmse) << ": "
-           << (p.optimum.feasible ? "reached, NMSE " : "out of reach; the lowest-error plan has NMSE ")
-           << fmt("%.3e", p.optimum.nmse) << "; no plan of these segments "
-           << "meets the NMSE with fewer than " << fmt("%.1f", p.optimum.points_bound) << " ("
-           << fmt("%.4f", opt["points_bound_per_pixel"].get<double>()) << " per pixel).";
-        const bool above = cfg.optimal_from_above >= 0;
-        if (cfg.optimal_greedy)
-            md << " The plan here is not the optimum's but the adaptive policies' greedy structure with "
-               << (above ? "the line above's errors as its estimates" : "perfect estimates") << ": RMS tolerance "
-               << fmt("%.3f", p.optimum.greedy_tolerance) << " levels per interval, NMSE "
-               << fmt("%.3e", p.optimum.greedy_nmse) << ", " << p.geometry_points << " geometry points.";
-        else if (above)
-            md << " The plan here is not the optimum's but one chosen the optimum's way on the line above's errors, "
-                  "not each line's own: NMSE "
-               << fmt("%.3e", p.optimum.above_nmse)
-               << (p.optimum.above_nmse <= cfg.optimal_nmse ? "" : ", above the NMSE allowed") << ", "
-               << p.geometry_points << " geometry points.";
-        if (above)
-            md << " Each candidate is priced by the same candidate's largest error on the line above over starts "
-                  "within "
-               << cfg.optimal_from_above << " pixels; " << fmt("%.1f", 100.0 * p.optimum.above_fallback)
-               << " % of the candidates, with none above, by their own.";
-        md << "\n\n";
-    }
+}
+
+// The optimum's paragraph (--length optimal).
+void md_optimum(std::ostream& md, const options& o, const render_data& d) {
+    RENDER_ALIASES;
+    const json rep = report_json(o, d);
+    const json& opt = rep["plan"]["optimum"];
+    md << "The optimum (a yardstick, not a policy: it knows every colour and pays nothing to decide) for "
+       << opt["reference"].get<std::string>() << " NMSE <= " << fmt("%.2e", cfg.optimal_nmse) << ": "
+       << (p.optimum.feasible ? "reached, NMSE " : "out of reach; the lowest-error plan has NMSE ")
+       << fmt("%.3e", p.optimum.nmse) << "; no plan of these segments "
+       << "meets the NMSE with fewer than " << fmt("%.1f", p.optimum.points_bound) << " ("
+       << fmt("%.4f", opt["points_bound_per_pixel"].get<double>()) << " per pixel).";
+    const bool above = cfg.optimal_from_above >= 0;
+    if (cfg.optimal_greedy)
+        md << " The plan here is not the optimum's but the adaptive policies' greedy structure with "
+           << (above ? "the line above's errors as its estimates" : "perfect estimates") << ": RMS tolerance "
+           << fmt("%.3f", p.optimum.greedy_tolerance) << " levels per interval, NMSE "
+           << fmt("%.3e", p.optimum.greedy_nmse) << ", " << p.geometry_points << " geometry points.";
+    else if (above)
+        md << " The plan here is not the optimum's but one chosen the optimum's way on the line above's errors, "
+              "not each line's own: NMSE "
+           << fmt("%.3e", p.optimum.above_nmse)
+           << (p.optimum.above_nmse <= cfg.optimal_nmse ? "" : ", above the NMSE allowed") << ", "
+           << p.geometry_points << " geometry points.";
+    if (above)
+        md << " Each candidate is priced by the same candidate's largest error on the line above over starts "
+              "within "
+           << cfg.optimal_from_above << " pixels; " << fmt("%.1f", 100.0 * p.optimum.above_fallback)
+           << " % of the candidates, with none above, by their own.";
+    md << "\n\n";
+}
+
+// The error tables: the whole frame, the displayed images, each zone.
+void md_errors(std::ostream& md, const render_data& d) {
+    RENDER_ALIASES;
+    const auto& whole = d.whole;
+    const auto& errors = d.errors;
+    const auto& zone_px = d.zone_px;
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";
     md << "| pair | what | NMSE | PSNR dB | max | pixels beyond " << over_levels_text() << " |\n|---|---|---|---|---|---|\n";
     for (const auto& pd : pairs) {
@@ -314,6 +321,12 @@ std::string report_md(const options& o, const render_data& d) {
         for (const auto& pd : pairs) md << ' ' << fmt("%.3e", errors[pd.key]["zones"][zone_name(z)]["nmse"].get<double>()) << " |";
         md << '\n';
     }
+}
+
+// The operations per pixel and the ratios against Phong.
+void md_operations(std::ostream& md, const render_data& d) {
+    RENDER_ALIASES;
+    const auto& errors = d.errors;
     md << "\n## Operations per pixel (counted)\n\n| path | mul | div | sqrt | add | long (mul+div+sqrt) |\n"
           "|---|---|---|---|---|---|\n";
     auto ops_row = [&](const std::string& name, const scene::op_counts& c, double n) {
@@ -346,6 +359,14 @@ std::string report_md(const options& o, const render_data& d) {
        << fmt("%.2f", ratio) << "x**; scan-line Phong / the hardware path's: **" << fmt("%.2f", F.ratio_scan)
        << "x**. The scan-line Phong image against the per-pixel one: NMSE "
        << fmt("%.2e", errors["scanline_phong"]["image"]["nmse"].get<double>()) << ".\n\n";
+}
+
+// The clocks per pixel and the simulation's speed, the images' key, the wall times.
+void md_clocks_and_images(std::ostream& md, const options& o, const render_data& d) {
+    RENDER_ALIASES;
+    const auto& wall = d.wall;
+    const double sim_clocks_per_px = d.sim_clocks_per_px, sim_px_per_s = d.sim_px_per_s;
+    const double sim_px_per_cpu_s = d.sim_px_per_cpu_s, sr_cpu = d.sr_cpu;
     md << "Clocks per pixel (evaluator, counted): " << fmt("%.3f", hw_px > 0 ? hc.clocks / hw_px : 0.0);
     if (sim_j["ran"].get<bool>())
         md << "; simulated: " << fmt("%.3f", sim_clocks_per_px) << " clocks per pixel, "
@@ -370,6 +391,17 @@ std::string report_md(const options& o, const render_data& d) {
     md << "Wall times (s):";
     for (const auto& [name, sec] : wall) md << ' ' << name << ' ' << fmt("%.3f", sec) << ';';
     md << '\n';
+}
+
+}  // namespace
+
+std::string report_md(const options& o, const render_data& d) {
+    std::ostringstream md;
+    md_configuration(md, o, d);
+    if (d.cfg.length == length_policy::optimal) md_optimum(md, o, d);
+    md_errors(md, d);
+    md_operations(md, d);
+    md_clocks_and_images(md, o, d);
     return md.str();
 }
 
