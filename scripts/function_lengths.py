@@ -181,9 +181,7 @@ def function_suffix(rest):
             k += 1
             if k < len(rest) and rest[k].startswith("(") and t in ("noexcept", "throw", "__attribute__"):
                 k += 1
-        elif t.startswith("[["):  # [[...]] reaches us as "[" "[...]" "]"
-            k += 1
-        elif t.startswith("[") and t.endswith("]") and t[1:2] == "[":
+        elif t.startswith("[["):  # an attribute, [[...]], one token
             k += 1
         else:
             break
