@@ -70,13 +70,13 @@ find_package(Threads REQUIRED)
 # The generated Verilog must exist when CMake configures: verilate() runs Verilator then, to learn the
 # C++ files it writes. So src/tools/gen_rtl.cpp is compiled and run here, and any change to it or to
 # the format tables re-runs CMake (the build then re-verilates, as the Verilog it reads changed).
-# It reads modules/squared/sq_count.h (plain C++) for the squaring controller's select codes, and
-# ref::a_exact, whose one definition is the floor's a(n) (arith/ua22802_arith.cpp).
+# It reads the floor's format tables (the squaring stage's select codes among them) and ref::a_exact,
+# whose one definition is the floor's a(n) (arith/ua22802_arith.cpp); never a module.
 set(_gen_sources ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp ${PROJECT_SOURCE_DIR}/src/reference/brdf_reference.cpp
                  ${PROJECT_SOURCE_DIR}/src/floor/arith/ua22802_arith.cpp ${PROJECT_SOURCE_DIR}/src/floor/arith/specular_arith.cpp)
 set(_gen_dir ${PROJECT_BINARY_DIR}/CMakeFiles/gen_rtl_configure)
 try_compile(_gen_ok ${_gen_dir} SOURCES ${_gen_sources}
-            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src;${PROJECT_SOURCE_DIR}/src/floor;${PROJECT_SOURCE_DIR}/modules"
+            CMAKE_FLAGS "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/src;${PROJECT_SOURCE_DIR}/src/floor"
             CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
             OUTPUT_VARIABLE _gen_log COPY_FILE ${_gen_dir}/gen_rtl)
 if(NOT _gen_ok)
@@ -85,8 +85,7 @@ endif()
 file(GLOB _format_headers ${PROJECT_SOURCE_DIR}/src/floor/formats/*.h)
 set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_gen_sources}
              ${PROJECT_SOURCE_DIR}/src/reference/brdf_reference.h ${PROJECT_SOURCE_DIR}/src/floor/arith/ua22802_arith.h
-             ${PROJECT_SOURCE_DIR}/src/floor/arith/specular_arith.h ${_format_headers}
-             ${PROJECT_SOURCE_DIR}/modules/squared/sq_count.h)
+             ${PROJECT_SOURCE_DIR}/src/floor/arith/specular_arith.h ${_format_headers})
 
 # _shading_gen_rtl(<file in SHADING_RTL_GENERATED> <gen_rtl mode> <arguments after the output>):
 # runs the generator, then copies only a changed file, so a re-configure does not re-verilate.
@@ -111,7 +110,6 @@ endforeach()
 # The same generator as a build target, for scripts that want other fraction-bit counts.
 add_executable(gen_rtl ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp)
 target_link_libraries(gen_rtl PRIVATE shading_golden)
-target_include_directories(gen_rtl PRIVATE ${PROJECT_SOURCE_DIR}/modules)
 
 # shading_verilate_rtl(<target> <prefix> TOP <module> SOURCE <file.v> DIRS <dirs...> [ARGS <verilator args...>])
 #   Verilates one RTL top into <target> as the SystemC module <prefix> (header <prefix>.h): pins of

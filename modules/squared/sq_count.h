@@ -17,7 +17,8 @@ namespace shading::squared {
 
 class sq_count {
 public:
-    enum select : unsigned { hold = 0, load = 1, square = 2 };  // MX_SQ's inputs
+    using select = sq_select;  // MX_SQ's inputs (squared_formats.h)
+    static constexpr select hold = sq_hold, load = sq_load, square = sq_square;
 
     // Strobe 17 fell. Returns true when it abandons a result not yet validated.
     bool strobe() {

@@ -25,7 +25,6 @@
 #include "formats/ua22802_formats.h"
 #include "formats/ua60553_formats.h"
 #include "reference/brdf_reference.h"
-#include "squared/sq_count.h"  // modules/: plain C++, the squaring controller's select codes
 
 namespace {
 
@@ -122,13 +121,12 @@ int write_formats(const std::string& path) {
     define_fmt(os, "SQUARED_SQ", squared::sq_fmt);
     define(os, "SQUARED_MAX_SQUARINGS", squared::max_squarings);
     define(os, "SQUARED_SQ_TO_BRDF_DROP", squared::sq_to_brdf_drop);
-    // MX_SQ's inputs, at the select codes of the squaring controller (squared/sq_count.h).
-    using sel = squared::sq_count::select;
+    // MX_SQ's inputs, at the select codes the squaring controller drives (squared_formats.h).
     define(os, "SQUARED_MX_SQ_INPUTS", 3);
-    define(os, "SQUARED_SEL_W", select_wires(sel::square));
-    define(os, "SQUARED_SEL_HOLD", sel::hold);
-    define(os, "SQUARED_SEL_LOAD", sel::load);
-    define(os, "SQUARED_SEL_SQUARE", sel::square);
+    define(os, "SQUARED_SEL_W", select_wires(squared::sq_square));
+    define(os, "SQUARED_SEL_HOLD", squared::sq_hold);
+    define(os, "SQUARED_SEL_LOAD", squared::sq_load);
+    define(os, "SQUARED_SEL_SQUARE", squared::sq_square);
 
     os << "\n// sqmul_formats.h: the square-and-multiply baseline (ours, for comparison)\n";
     define_fmt(os, "SQMUL_P", sqmul::p_fmt);

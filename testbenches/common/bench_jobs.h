@@ -101,6 +101,108 @@ inline bool note_rate(const std::string& note, double& rate, std::string& unit) 
     return unit.size() > 2 && unit.compare(unit.size() - 2, 2, "/s") == 0;
 }
 
+// Child i's command line: the program's own arguments less those the split sets, then its share,
+// its seed, its summary file, child 0's injected mismatches, and its part of the CSV.
+inline child_spec split_child(const split_plan& plan, const std::filesystem::path& dir, const char* argv0,
+                              const std::vector<std::string>& common, const std::string& csv, std::size_t i) {
+    child_spec c{"/proc/self/exe", {argv0}, (dir / ("out" + std::to_string(i))).string()};
+    auto& args = c.args;
+    args.insert(args.end(), common.begin(), common.end());
+    args.insert(args.end(), {"--jobs", "1", "--random", std::to_string(plan.share(i)), "--seed",
+                             std::to_string(plan.seed_of(i)), "--summary", (dir / ("rows" + std::to_string(i))).string()});
+    if (i == 0 && plan.inject != SIZE_MAX) {
+        args.insert(args.end(), {"--inject-mismatch", std::to_string(plan.inject), "--inject-count",
+                                 std::to_string(plan.inject_count)});
+    }
+    if (!csv.empty()) args.insert(args.end(), {"--csv", csv + ".part" + std::to_string(i)});
+    return c;
+}
+
+// The rows of one bench and case, summed over the processes.
+struct merged_row {
+    std::vector<std::string> row;
+    uint64_t samples = 0, mismatches = 0;
+    double rate = 0;
+    std::string unit;
+    unsigned processes = 0;
+};
+
+// The children's summary rows merged by bench and case, keys in first-seen order; a child that
+// failed has its output printed and makes `ok` false.
+struct merged_rows {
+    std::vector<std::string> order;
+    std::map<std::string, merged_row> rows;
+    bool ok = true;
+};
+
+inline merged_rows merge_children(const split_plan& plan, const std::string& bench, const std::filesystem::path& dir,
+                                  const std::vector<int>& status) {
+    merged_rows out;
+    for (unsigned i = 0; i < plan.jobs; ++i) {
+        if (status[i] != 0) {
+            out.ok = false;
+            std::printf("%s: process %u (seed %llu) exited with status %d; its output:\n", bench.c_str(), i,
+                        static_cast<unsigned long long>(plan.seed_of(i)), status[i]);
+            std::ifstream f(dir / ("out" + std::to_string(i)));
+            std::cout << f.rdbuf();
+        }
+        for (const auto& r : read_tsv((dir / ("rows" + std::to_string(i))).string())) {
+            const std::string key = r[0] + '\t' + r[1];
+            auto [it, fresh] = out.rows.try_emplace(key);
+            if (fresh) {
+                out.order.push_back(key);
+                it->second.row = r;
+            }
+            auto& m = it->second;
+            m.samples += std::strtoull(r[2].c_str(), nullptr, 10);
+            m.mismatches += std::strtoull(r[3].c_str(), nullptr, 10);
+            double rate = 0;
+            std::string unit;
+            if (note_rate(r[6], rate, unit)) {
+                m.rate += rate;
+                m.unit = unit;
+            }
+            ++m.processes;
+        }
+    }
+    return out;
+}
+
+// One merged row printed and appended to the summary (when one is written).
+inline void report_merged(merged_row& m, const split_plan& plan, const std::string& bench, double wall,
+                          const std::string& summary) {
+    std::ostringstream note;
+    note << "random differential vs golden, " << m.processes << " processes, seeds " << plan.seed << " + i*2^32";
+    if (!m.unit.empty()) note << ", " << std::setprecision(3) << m.rate << ' ' << m.unit << " summed";
+    std::printf("%s random (%s): %llu samples, %llu mismatches, %u processes, %.4g %s summed over the "
+                "processes, %.2f s wall\n",
+                bench.c_str(), m.row[1].c_str(), static_cast<unsigned long long>(m.samples),
+                static_cast<unsigned long long>(m.mismatches), m.processes, m.rate,
+                m.unit.empty() ? "/s" : m.unit.c_str(), wall);
+    m.row[2] = std::to_string(m.samples);
+    m.row[3] = std::to_string(m.mismatches);
+    m.row[6] = note.str();
+    if (!summary.empty()) {
+        std::ofstream f(summary, std::ios::app);
+        for (std::size_t c = 0; c < m.row.size(); ++c) f << (c ? "\t" : "") << m.row[c];
+        f << '\n';
+    }
+}
+
+// One CSV: the parts in order, the header once; the parts removed.
+inline void join_csv_parts(const std::string& csv, unsigned jobs) {
+    std::ofstream out(csv);
+    for (unsigned i = 0; i < jobs; ++i) {
+        const std::string part = csv + ".part" + std::to_string(i);
+        std::ifstream f(part);
+        std::string line;
+        for (bool first = true; std::getline(f, line); first = false)
+            if (i == 0 || !first) out << line << '\n';
+        std::error_code ignored;
+        std::filesystem::remove(part, ignored);
+    }
+}
+
 }  // namespace detail
 
 // Runs the split; returns the exit status the program returns.
@@ -119,19 +221,7 @@ inline int run_split(const split_plan& plan, const std::string& bench, int argc,
     std::printf("%s: %llu random stimuli in %u processes (seed %llu, process i: seed + i*2^32)\n", bench.c_str(),
                 static_cast<unsigned long long>(plan.total), plan.jobs, static_cast<unsigned long long>(plan.seed));
     std::fflush(stdout);
-    auto spec = [&](std::size_t i) {
-        child_spec c{"/proc/self/exe", {argv[0]}, (dir / ("out" + std::to_string(i))).string()};
-        auto& args = c.args;
-        args.insert(args.end(), common.begin(), common.end());
-        args.insert(args.end(), {"--jobs", "1", "--random", std::to_string(plan.share(i)), "--seed",
-                                 std::to_string(plan.seed_of(i)), "--summary", (dir / ("rows" + std::to_string(i))).string()});
-        if (i == 0 && plan.inject != SIZE_MAX) {
-            args.insert(args.end(), {"--inject-mismatch", std::to_string(plan.inject), "--inject-count",
-                                     std::to_string(plan.inject_count)});
-        }
-        if (!csv.empty()) args.insert(args.end(), {"--csv", csv + ".part" + std::to_string(i)});
-        return c;
-    };
+    auto spec = [&](std::size_t i) { return detail::split_child(plan, dir, argv[0], common, csv, i); };
     // Progress: one line, rewritten on a terminal, as processes finish.
     const bool tty = isatty(STDERR_FILENO) != 0;
     unsigned done = 0;
@@ -143,83 +233,18 @@ inline int run_split(const split_plan& plan, const std::string& bench, int argc,
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    // Merge the rows of the same bench and case, in first-seen order.
-    struct merged {
-        std::vector<std::string> row;
-        uint64_t samples = 0, mismatches = 0;
-        double rate = 0;
-        std::string unit;
-        unsigned processes = 0;
-    };
-    std::vector<std::string> order;
-    std::map<std::string, merged> rows;
-    bool ok = true;
-    for (unsigned i = 0; i < plan.jobs; ++i) {
-        if (status[i] != 0) {
-            ok = false;
-            std::printf("%s: process %u (seed %llu) exited with status %d; its output:\n", bench.c_str(), i,
-                        static_cast<unsigned long long>(plan.seed_of(i)), status[i]);
-            std::ifstream f(dir / ("out" + std::to_string(i)));
-            std::cout << f.rdbuf();
-        }
-        for (const auto& r : detail::read_tsv((dir / ("rows" + std::to_string(i))).string())) {
-            const std::string key = r[0] + '\t' + r[1];
-            auto [it, fresh] = rows.try_emplace(key);
-            if (fresh) {
-                order.push_back(key);
-                it->second.row = r;
-            }
-            auto& m = it->second;
-            m.samples += std::strtoull(r[2].c_str(), nullptr, 10);
-            m.mismatches += std::strtoull(r[3].c_str(), nullptr, 10);
-            double rate = 0;
-            std::string unit;
-            if (detail::note_rate(r[6], rate, unit)) {
-                m.rate += rate;
-                m.unit = unit;
-            }
-            ++m.processes;
-        }
-    }
+    auto merged = detail::merge_children(plan, bench, dir, status);
     uint64_t samples = 0, mismatches = 0;
-    for (const auto& key : order) {
-        auto& m = rows[key];
+    for (const auto& key : merged.order) {
+        auto& m = merged.rows[key];
         samples += m.samples;
         mismatches += m.mismatches;
-        std::ostringstream note;
-        note << "random differential vs golden, " << m.processes << " processes, seeds " << plan.seed
-             << " + i*2^32";
-        if (!m.unit.empty()) note << ", " << std::setprecision(3) << m.rate << ' ' << m.unit << " summed";
-        std::printf("%s random (%s): %llu samples, %llu mismatches, %u processes, %.4g %s summed over the "
-                    "processes, %.2f s wall\n",
-                    bench.c_str(), m.row[1].c_str(), static_cast<unsigned long long>(m.samples),
-                    static_cast<unsigned long long>(m.mismatches), m.processes, m.rate,
-                    m.unit.empty() ? "/s" : m.unit.c_str(), wall);
-        m.row[2] = std::to_string(m.samples);
-        m.row[3] = std::to_string(m.mismatches);
-        m.row[6] = note.str();
-        if (!summary.empty()) {
-            std::ofstream f(summary, std::ios::app);
-            for (std::size_t c = 0; c < m.row.size(); ++c) f << (c ? "\t" : "") << m.row[c];
-            f << '\n';
-        }
+        detail::report_merged(m, plan, bench, wall, summary);
     }
-    // One CSV: the parts in order, the header once.
-    if (!csv.empty()) {
-        std::ofstream out(csv);
-        for (unsigned i = 0; i < plan.jobs; ++i) {
-            const std::string part = csv + ".part" + std::to_string(i);
-            std::ifstream f(part);
-            std::string line;
-            for (bool first = true; std::getline(f, line); first = false)
-                if (i == 0 || !first) out << line << '\n';
-            std::error_code ignored;
-            fs::remove(part, ignored);
-        }
-    }
+    if (!csv.empty()) detail::join_csv_parts(csv, plan.jobs);
     std::error_code ignored;
     fs::remove_all(dir, ignored);
-    ok = ok && samples > 0 && mismatches == 0;
+    const bool ok = merged.ok && samples > 0 && mismatches == 0;
     std::printf("%s: %llu samples, %llu mismatches in %u processes -> %s\n", bench.c_str(),
                 static_cast<unsigned long long>(samples), static_cast<unsigned long long>(mismatches), plan.jobs,
                 ok ? "PASS" : "FAIL");

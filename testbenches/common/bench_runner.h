@@ -2,8 +2,8 @@
 // squared_tb, interp_*_tb): one writer of the summary rows (out/summary.tsv, scripts/run.sh), and
 // one exit status: 0 only when every sample matched the golden model and SystemC reported nothing
 // the bench did not announce. The command line is parsed before, by the program's parse function
-// (options/bench_options.h, which lists the options common to every bench); the runner takes the
-// common part of it:
+// (options/bench_options.h); the runner takes the part common to every bench (common_options.h,
+// which lists those options):
 //
 //   bench_options o = ...;                        // from parse_<program>(argc, argv, ...)
 //   bench_runner run("ua60553", o);
@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "testbenches/common/bench_jobs.h"
+#include "testbenches/common/common_options.h"
 #include "testbenches/common/exit_status.h"
-#include "testbenches/options/bench_options.h"
 #include "testbenches/common/report_log.h"
 #include "core/trace.h"
 #include "formats/fixed_point.h"

@@ -2,7 +2,7 @@
 // sample sets) through the five coefficient units (case 1 / case 2 x shift-and-add / exact
 // division by 3, quadratic), one interval per clock, checks each against its golden model, and
 // writes the relative error that the shift-and-add /3 causes in A and C (CSV).
-// Options common to every bench: options/bench_options.h.
+// Options common to every bench: common/common_options.h.
 //
 //   interp_coef_tb                      VCD traces/interp_coef.vcd, view traces/interp_coef.gtkw
 //   interp_coef_tb --csv out/interp_div3.csv --extra-sets 2000 --no-vcd
@@ -13,6 +13,7 @@
 #include <random>
 
 #include "testbenches/common/bench_runner.h"
+#include "testbenches/options/bench_options.h"
 #include "testbenches/interp/interp_coef_bench.h"
 #include "testbenches/interp/interp_line.h"
 

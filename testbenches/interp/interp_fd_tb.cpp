@@ -3,7 +3,7 @@
 // against the golden model and against the Horner unit's golden result at the same t (documented
 // bound 0..2 LSB of Q16.16), measures the error against the exact intensity; writes a CSV.
 // Fails on a mismatch, a pixel outside the bound, or an unexpected report. Options common to every
-// bench: options/bench_options.h.
+// bench: common/common_options.h.
 //
 //   interp_fd_tb                        VCD traces/interp_fd.vcd, view traces/interp_fd.gtkw
 //   interp_fd_tb --m 6 --csv out/interp_fd.csv
@@ -13,6 +13,7 @@
 #include <iostream>
 
 #include "testbenches/common/bench_runner.h"
+#include "testbenches/options/bench_options.h"
 #include "testbenches/interp/interp_fd_bench.h"
 #include "testbenches/interp/interp_line.h"
 

@@ -3,7 +3,7 @@
 // exact /3, quadratic), back to back through the iterative Horner unit of the interpolation paper, Fig. 4.
 // Checks every micro-step against the golden model, measures clocks per pixel and the error
 // against the exact intensity; writes a per-pixel CSV. Options common to every bench:
-// options/bench_options.h.
+// common/common_options.h.
 //
 //   interp_horner_tb                    VCD traces/interp_horner.vcd, view traces/interp_horner.gtkw
 //   interp_horner_tb --csv out/interp_horner.csv
@@ -14,6 +14,7 @@
 #include <iostream>
 
 #include "testbenches/common/bench_runner.h"
+#include "testbenches/options/bench_options.h"
 #include "testbenches/interp/interp_horner_bench.h"
 #include "testbenches/interp/interp_line.h"
 

@@ -3,7 +3,7 @@
 // forward-difference evaluator, checks every pixel and `last` against the golden chain
 // (golden_cubic_coefs + golden_fd), measures max |I - exact| against the line's exact intensity and
 // the clocks from the first samples to the last pixel. Appends one summary row to $SHADING_SUMMARY.
-// Options common to every bench: options/bench_options.h.
+// Options common to every bench: common/common_options.h.
 //
 //   interp_line_tb                           VCD traces/interp_line.vcd, view traces/interp_line.gtkw
 //   interp_line_tb --case 2 --div3 exact --m 4 --no-vcd
@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "testbenches/common/bench_runner.h"
+#include "testbenches/options/bench_options.h"
 #include "testbenches/interp/interp_line.h"
 #include "testbenches/interp/interp_line_bench.h"
 

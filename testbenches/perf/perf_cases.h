@@ -1,5 +1,7 @@
-// The rows perf_models registers (perf_models.cpp), shared with perf_specular.cpp, the specular
-// devices' rows (kept in their own translation unit: each file compiles in parallel).
+// The rows perf_models registers, and what a file that adds rows builds them from: the list of
+// SystemC rows (sc_cases, add_sc: perf_cases.cpp) and the harness helpers. perf_models.cpp,
+// perf_specular.cpp (the specular devices' rows, kept in their own translation unit: each file
+// compiles in parallel) and perf_floor.cpp (the floor rows) all add rows here; none calls another.
 #pragma once
 
 #include <functional>
@@ -71,12 +73,5 @@ public:
 private:
     sc_core::sc_time batch_, period_;
 };
-
-// perf_specular.cpp: the specular devices (block level, fast, the Verilator twin) and the UA 60553
-// TLM wrapper in one timing mode (loosely timed, or pin-accurate when `pin`).
-void register_specular_cases();
-// perf_floor.cpp: the harnesses with nothing inside (the floors under the targets).
-void register_floor_cases();
-void add_specular_tlm(const std::string& name, bool pin);
 
 }  // namespace shading::perf

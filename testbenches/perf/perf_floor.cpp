@@ -18,6 +18,7 @@
 
 #include "golden/specular_golden.h"
 #include "perf_cases.h"
+#include "perf_floor.h"
 #include "perf_harness.h"
 #include "ua60553/ua60553.h"
 

@@ -48,7 +48,9 @@
 #include "testbenches/interp/interp_horner_bench.h"
 #include "testbenches/interp/interp_line_bench.h"
 #include "perf_cases.h"
+#include "perf_floor.h"
 #include "perf_harness.h"
+#include "perf_specular.h"
 #include "golden_pipeline/pipeline.h"
 #include "testbenches/pipeline/pipeline_sim.h"
 #include "scene/world.h"
@@ -517,21 +519,6 @@ void golden_bench(benchmark::State& st, const golden_case& g) {
 }
 
 }  // namespace
-
-namespace shading::perf {
-
-std::vector<sc_case>& sc_cases() {
-    static std::vector<sc_case> c;
-    return c;
-}
-
-sc_case& add_sc(const std::string& name, const std::string& golden, const std::string& unit,
-                std::function<std::unique_ptr<harness>()> make, bool traced) {
-    sc_cases().push_back({name, golden, unit, std::move(make), traced, nullptr});
-    return sc_cases().back();
-}
-
-}  // namespace shading::perf
 
 int sc_main(int argc, char* argv[]) {
     // Our own flags first (Google Benchmark rejects flags it does not know).

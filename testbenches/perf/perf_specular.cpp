@@ -12,6 +12,7 @@
 #include "golden/ua60553_tuned_golden.h"
 #include "perf_cases.h"
 #include "perf_harness.h"
+#include "perf_specular.h"
 #include "tlm/specular_tlm.h"
 #include "tuned/ua60553_tuned.h"
 #include "ua22802/ua22802.h"

@@ -206,15 +206,11 @@ json report_json(const options& o, const render_data& d) {
     return rep;
 }
 
-std::string report_md(const options& o, const render_data& d) {
+namespace {
+
+// The title, the configuration and the plan.
+void md_configuration(std::ostream& md, const options& o, const render_data& d) {
     RENDER_ALIASES;
-    const auto& whole = d.whole;
-    const auto& errors = d.errors;
-    const auto& zone_px = d.zone_px;
-    const auto& wall = d.wall;
-    const double sim_clocks_per_px = d.sim_clocks_per_px, sim_px_per_s = d.sim_px_per_s;
-    const double sim_px_per_cpu_s = d.sim_px_per_cpu_s, sr_cpu = d.sr_cpu;
-    std::ostringstream md;
     md << "# Shading pipeline report: " << s.name << ", " << r.width << "x" << r.height << "\n\n";
     md << "Configuration: device " << scene::device_name(dev.device) << " (" << o.mode << "), n = " << mat.n
        << ", length " << (d.maker ? d.maker->length_name : std::string(length_policy_name(cfg.length)));
@@ -235,7 +231,14 @@ std::string report_md(const options& o, const render_data& d) {
        << fmt("%.2f", p.jobs.empty() ? 0.0 : double(p.pixels) / p.jobs.size()) << " pixels), " << hc.samples
        << " samples through the sample stage; pixels exact " << n_deg[1] << ", quadratic " << n_deg[2] << ", cubic "
        << n_deg[3] << ".\n\n";
-    if (d.maker && d.maker->md_after_plan) md << d.maker->md_after_plan(d);
+}
+
+// The error tables: the whole frame, the displayed images, each zone.
+void md_errors(std::ostream& md, const render_data& d) {
+    RENDER_ALIASES;
+    const auto& whole = d.whole;
+    const auto& errors = d.errors;
+    const auto& zone_px = d.zone_px;
     md << "## Errors (8-bit levels, covered pixels, three channels)\n\n";
     md << "| pair | what | NMSE | PSNR dB | max | pixels beyond " << over_levels_text() << " |\n|---|---|---|---|---|---|\n";
     for (const auto& pd : pairs) {
@@ -259,6 +262,12 @@ std::string report_md(const options& o, const render_data& d) {
         for (const auto& pd : pairs) md << ' ' << fmt("%.3e", errors[pd.key]["zones"][zone_name(z)]["nmse"].get<double>()) << " |";
         md << '\n';
     }
+}
+
+// The operations per pixel and the ratios against Phong.
+void md_operations(std::ostream& md, const render_data& d) {
+    RENDER_ALIASES;
+    const auto& errors = d.errors;
     md << "\n## Operations per pixel (counted)\n\n| path | mul | div | sqrt | add | long (mul+div+sqrt) |\n"
           "|---|---|---|---|---|---|\n";
     auto ops_row = [&](const std::string& name, const scene::op_counts& c, double n) {
@@ -291,6 +300,14 @@ std::string report_md(const options& o, const render_data& d) {
        << fmt("%.2f", ratio) << "x**; scan-line Phong / the hardware path's: **" << fmt("%.2f", F.ratio_scan)
        << "x**. The scan-line Phong image against the per-pixel one: NMSE "
        << fmt("%.2e", errors["scanline_phong"]["image"]["nmse"].get<double>()) << ".\n\n";
+}
+
+// The clocks per pixel and the simulation's speed, the images' key, the wall times.
+void md_clocks_and_images(std::ostream& md, const options& o, const render_data& d) {
+    RENDER_ALIASES;
+    const auto& wall = d.wall;
+    const double sim_clocks_per_px = d.sim_clocks_per_px, sim_px_per_s = d.sim_px_per_s;
+    const double sim_px_per_cpu_s = d.sim_px_per_cpu_s, sr_cpu = d.sr_cpu;
     md << "Clocks per pixel (evaluator, counted): " << fmt("%.3f", hw_px > 0 ? hc.clocks / hw_px : 0.0);
     if (sim_j["ran"].get<bool>())
         md << "; simulated: " << fmt("%.3f", sim_clocks_per_px) << " clocks per pixel, "
@@ -315,6 +332,17 @@ std::string report_md(const options& o, const render_data& d) {
     md << "Wall times (s):";
     for (const auto& [name, sec] : wall) md << ' ' << name << ' ' << fmt("%.3f", sec) << ';';
     md << '\n';
+}
+
+}  // namespace
+
+std::string report_md(const options& o, const render_data& d) {
+    std::ostringstream md;
+    md_configuration(md, o, d);
+    if (d.maker && d.maker->md_after_plan) md << d.maker->md_after_plan(d);
+    md_errors(md, d);
+    md_operations(md, d);
+    md_clocks_and_images(md, o, d);
     return md.str();
 }
 

@@ -1,7 +1,7 @@
 // Squared-quadratic device testbench program: replays Fig. 3 with the squaring stage's clock (load
 // n and k_s*I through their strobes, then stream cos values on strobe 17, 13 clocks per pixel),
 // checks every output validated by output 29 against the golden model and measures the device
-// against cos^n. Options common to every bench: options/bench_options.h.
+// against cos^n. Options common to every bench: common/common_options.h.
 //
 //   squared_tb                       a sphere's raster line at n = 10, 100 and 1000, VCD in traces/squared.vcd
 //   squared_tb --sweep --no-vcd      every cos code 0..1.0 for n = 1, 3, 10, 100, 512, 1000
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "testbenches/common/bench_runner.h"
+#include "testbenches/options/bench_options.h"
 #include "golden/squared_golden.h"
 #include "scene/scene.h"
 #include "testbenches/specular/specular_tb.h"

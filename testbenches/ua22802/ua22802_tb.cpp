@@ -1,7 +1,7 @@
 // UA 22802 testbench program: streams surfaces (n, k_s*I) and pixels (cos) through the ROM
 // prototype as in UA 60553, Fig. 3, compares every output with the golden model and with cos^n,
 // writes a VCD (open with traces/ua22802.gtkw) and appends one summary row per n to the summary.
-// Options common to every bench: options/bench_options.h.
+// Options common to every bench: common/common_options.h.
 //
 //   ua22802_tb                         8 exponents x 48 pixels, VCD in traces/ua22802.vcd
 //   ua22802_tb --random 100000 --seed 7 --mode wrap
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "testbenches/common/bench_runner.h"
+#include "testbenches/options/bench_options.h"
 #include "golden/ua22802_golden.h"
 #include "testbenches/specular/specular_tb.h"
 #include "ua22802/ua22802.h"

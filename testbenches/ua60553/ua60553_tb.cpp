@@ -1,7 +1,7 @@
 // UA 60553 testbench program: replays Fig. 3 (load n and k_s*I for R, G, B through their strobes,
 // then stream cos values on ctl17), checks every validated output against the golden model and
 // measures the device against cos^n. The generator of a is the patent's (device_ua60553) or a
-// tuned one (device_ua60553_tuned). Options common to every bench: options/bench_options.h.
+// tuned one (device_ua60553_tuned). Options common to every bench: common/common_options.h.
 //
 //   ua60553_tb                       scene line for n = 10 and 100, VCD in traces/ua60553.vcd
 //   ua60553_tb --sweep --no-vcd      every cos code 0..1.0 for n = 1, 10, 100, 512, 1000
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "testbenches/common/bench_runner.h"
+#include "testbenches/options/bench_options.h"
 #include "golden/ua60553_tuned_golden.h"
 #include "scene/scene.h"
 #include "testbenches/specular/specular_tb.h"

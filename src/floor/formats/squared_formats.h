@@ -74,6 +74,11 @@ inline constexpr uint64_t q_sat_hi = q_one;
 inline constexpr qfmt sq_fmt = q_fmt;
 inline constexpr unsigned max_squarings = z_full;  // 9, for n = 512..1023
 
+// MX_SQ's select code, the input RG_SQ takes at a falling edge: its own value, the quadratic ADD11
+// (the load) or MUL_SQ's square. The squaring controller (modules/squared/sq_count.h) drives it, the
+// block model wires MX_SQ's inputs in this order and the RTL generator writes it into the Verilog.
+enum sq_select : unsigned { sq_hold = 0, sq_load = 1, sq_square = 2 };
+
 // The colour multipliers read the squaring register's 16 high wires (Q1.15, 3 low wires open:
 // floor) and are UA 60553's MUL12..14: Q1.15 x 8.0 -> Q9.8.
 inline constexpr unsigned sq_to_brdf_drop = q_frac - spec::brdf_fmt.frac;  // 3
