@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "testbenches/common/bench_runner.h"
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 #include "scene/scene.h"
 #include "testbenches/specular/specular_tb.h"
 #include "squared/squared.h"

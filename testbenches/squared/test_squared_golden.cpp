@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include "arith/squared_arith.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/squared_golden.h"
 #include "reference/brdf_reference.h"
 
 using namespace shading;

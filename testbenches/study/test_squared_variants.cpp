@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arith/squared_arith.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/squared_golden.h"
 #include "head_surface.h"
 #include "scene/image.h"
 #include "scene/raster.h"

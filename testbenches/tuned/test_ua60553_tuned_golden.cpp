@@ -6,8 +6,8 @@
 
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/ua22802_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "testbenches/study/generator_search.h"
 #include "testbenches/study/study_metrics.h"
 

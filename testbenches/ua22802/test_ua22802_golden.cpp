@@ -9,7 +9,7 @@
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
 #include "formats/ua22802_formats.h"
-#include "golden/ua22802_golden.h"
+#include "arith/ua22802_arith.h"
 #include "ua22802_a_rom.h"
 
 using namespace shading;

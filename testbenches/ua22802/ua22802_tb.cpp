@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "testbenches/common/bench_runner.h"
-#include "golden/ua22802_golden.h"
+#include "arith/ua22802_arith.h"
 #include "testbenches/specular/specular_tb.h"
 #include "ua22802/ua22802.h"
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "testbenches/common/bench_runner.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "scene/scene.h"
 #include "testbenches/specular/specular_tb.h"
 #include "tuned/ua60553_tuned.h"

@@ -1,6 +1,7 @@
 // Number formats of the interpolation paper's interpolation hardware: the coefficient
 // units, the iterative Horner unit and the forward-difference evaluator. One table, used by the
-// golden models (src/interp_golden.*), the modules' template widths and the README.
+// golden models (src/floor/arith/interp_arith.*, src/golden/interp_golden.*), the modules'
+// template widths and the README.
 // Notation: Qi.f = i integer bits (sign included when signed), f fraction bits.
 #pragma once
 
