@@ -47,7 +47,7 @@ TEST(UA60553TunedGolden, MinimaxIsTheSearchWinner) {
         EXPECT_EQ(study::candidate_a(all.front(), n), golden_a_tuned(n, ua60553::minimax)) << n;
 }
 
-TEST(UA60553TunedGolden, WorstCaseBeatsTheRomAndTheSeedBound) {
+TEST(UA60553TunedGolden, WorstCaseBeatsTheRomAndTheBrdfPaperBound) {
     // Computed here directly (not through study_metrics) against cos^n.
     double worst_tuned = 0, worst_rom = 0;
     for (unsigned n = 1; n <= 1000; ++n)

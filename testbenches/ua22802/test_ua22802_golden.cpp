@@ -84,7 +84,7 @@ TEST(UA22802Golden, WithinTheRoundingBoundOfTheRealQuadratic) {
     }
 }
 
-TEST(UA22802Golden, SeedAccuracyClaimHoldsBitAccurately) {
+TEST(UA22802Golden, BrdfPaperAccuracyClaimHoldsBitAccurately) {
     // The quadratic-BRDF paper: relative error <= 4 % where cos^n >= 0.56, n in [1, 512]. Measured: 3.16 %.
     double worst = 0;
     for (unsigned n = 1; n <= 1000; ++n)
