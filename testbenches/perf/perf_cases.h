@@ -75,7 +75,7 @@ private:
 // perf_specular.cpp: the specular devices (block level, fast, the Verilator twin) and the UA 60553
 // TLM wrapper in one timing mode (loosely timed, or pin-accurate when `pin`).
 void register_specular_cases();
-// perf_floor.cpp: the harnesses with nothing inside (the floors under the targets).
+// perf_floor.cpp: the harnesses with nothing inside (the floors under the speed targets).
 void register_floor_cases();
 void add_specular_tlm(const std::string& name, bool pin);
 

@@ -471,7 +471,7 @@ TEST(SceneShade, SpecularUnitIsShadedAsADevice) {
 
 // The head at 64x64: it fills a good part of the frame, has a specular highlight (red above
 // 255 (ambient + k_d) = 186, which diffuse light alone cannot reach), and the tuned device's image
-// is close to Phong's (the trial: NMSE of order 1e-3 from the BRDF's clamped tail).
+// is close to Phong's (NMSE of order 1e-3, from the quadratic BRDF's clamped tail).
 TEST(SceneShade, HeadIsLitWithAHighlight) {
     const world s = builtin_scene("head", SHADING_SOURCE_DIR, 64, 64);
     const material& m = s.objects.front().mat;
