@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Simulation speed of every model: runs build/bin/perf_models (Google Benchmark; each
 SystemC case in its own process) and prints one table: model, rate, ratio to its golden model, the
-issue's target where it has one, and whether it is met. Markdown with --markdown (the README's
+speed target set for it where there is one, and whether it is met. Markdown with --markdown (the README's
 "Simulation speed" section quotes it).
 
   scripts/bench.py [--build DIR] [--quick] [--filter REGEX] [--min-time S] [--json FILE] [--markdown]
@@ -70,7 +70,7 @@ def main():
             return None
         return b.get("items_per_second")
 
-    # The issue's targets: (row, measured, goal text, met).
+    # The speed targets: (row, measured, goal text, met).
     targets = {}
 
     def target(name, value, goal, ok):

@@ -27,7 +27,7 @@ for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVe
          lib/cmake/shading/shadingTargets.cmake lib/cmake/shading/shadingSceneTargets.cmake \
          lib/pkgconfig/shading.pc lib/pkgconfig/shading-scene.pc lib/libshading_golden.a lib/libshading_floor.a \
          lib/libshading_scene.a lib/libshading_pipeline.a \
-         include/shading/ua60553/ua60553.h include/shading/golden/specular_golden.h \
+         include/shading/ua60553/ua60553.h include/shading/golden/interp_golden.h \
          include/shading/formats/fixed_point.h include/shading/ua22802_a_rom.h \
          include/shading/tlm/tlm_target_base.h include/shading/tlm/specular_tlm.h \
          include/shading/squared/squared.h include/shading/squared/squared_device.h \
@@ -35,7 +35,7 @@ for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVe
          include/shading/blocks/lzc.h include/shading/blocks/barrel_shifter.h include/shading/blocks/and_gate.h \
          include/shading/monitors/load_checker.h include/shading/monitors/phase_checker.h \
          include/shading/formats/squared_formats.h include/shading/formats/sqmul_formats.h \
-         include/shading/golden/squared_golden.h include/shading/golden/sqmul_golden.h \
+         include/shading/arith/squared_arith.h include/shading/golden/sqmul_golden.h \
          include/shading/arith/specular_arith.h include/shading/arith/pipeline_arith.h \
          include/shading/scene/world.h include/shading/golden_pipeline/pipeline.h \
          include/shading/pipeline/shading_pipeline.h \

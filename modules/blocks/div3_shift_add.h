@@ -1,5 +1,5 @@
 // Division by 3 as the interpolation paper, Fig. 2: x/3 ~ x/2 - x/8 - x/32 - x/128 = x * 43/128 = 0.3359375 x
-// (the seed: relative error <= 0.79 %; exactly +1/128 = 0.78125 % when no wire is dropped).
+// (the paper: relative error <= 0.79 %; exactly +1/128 = 0.78125 % when no wire is dropped).
 // Input: signed WIN-bit bus; output: signed WOUT-bit bus with ALIGN more fraction bits than the
 // input. With ALIGN >= 7 every term keeps all its wires and the result is exactly 43x/128.
 #pragma once

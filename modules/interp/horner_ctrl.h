@@ -13,7 +13,7 @@
 //
 // Micro-steps, with this model's MX2 codes 0 = 0 (hold), 1 = MUL, 2 = B, 3 = C, 4 = D
 // and MX1 codes 0 = A, 1 = RG:
-//   1 RG <- B            MX2 = B,   BK zero       (the seed loads RG with B; done here via MX2)
+//   1 RG <- B            MX2 = B,   BK zero       (the paper loads RG with B; done here via MX2)
 //   2 RG <- A t + B      MX1 = A,   MX2 = MUL, BK pass
 //   3 RG <- RG t         MX1 = RG,  MX2 = MUL, BK zero
 //   4 RG <- RG + C       MX2 = C,   BK pass         (last step when deg2: I = (a t + b) t + c)

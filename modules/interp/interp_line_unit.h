@@ -31,7 +31,7 @@
 #include "blocks/interval_ready.h"
 #include "core/timing_graph.h"
 #include "formats/interp_formats.h"
-#include "interp/coef_unit_cubic_seed.h"
+#include "interp/coef_unit_cubic_partial_sum.h"
 #include "interp/fd_eval.h"
 #include "interp/interp_delays.h"
 

@@ -1,5 +1,5 @@
 // Controller of the iterative Horner unit (modules/interp/horner_ctrl.h, the interpolation paper, Fig. 4): the
-// seed's micro-sequence, one step per clock, a state machine on the rising edge of clk (RG latches
+// paper's micro-sequence, one step per clock, a state machine on the rising edge of clk (RG latches
 // on the falling edge, so every step's selects settle for half a period first).
 // Handshake: start is a level "request pending"; a request is accepted at a rising edge where
 // start = 1 and the unit is idle or finishing (done = 1). done is high during the last step

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The interpolation paper's shading system on the head scan at 512x512 (render_pipeline): the default configuration
 # (fixed 16-pixel intervals, cubic, Horner unit, UA 60553 with the patent's constants), adaptive length
-# and degree through the Horner unit and through the forward differences (also at 1024x1024), and seed
-# 004's zone policy, each through the golden model and the SystemC pipeline (which must agree bit for bit), PNGs and
-# report.md/report.json in $SHADING_OUT/pipeline/<case>/; then the small sweep over interval and
-# degree policies, evaluators and two devices on the golden model (parallel processes), its CSV and
-# plot in $SHADING_OUT/pipeline/sweep/, and every device against n in $SHADING_OUT/pipeline/exponents/.
+# and degree through the Horner unit and through the forward differences (also at 1024x1024), and the
+# interpolation paper's zone policy, each through the golden model and the SystemC pipeline (which must
+# agree bit for bit), PNGs and report.md/report.json in $SHADING_OUT/pipeline/<case>/; then the small
+# sweep over interval and degree policies, evaluators and two devices on the golden model (parallel
+# processes), its CSV and plot in $SHADING_OUT/pipeline/sweep/, and every device against n in
+# $SHADING_OUT/pipeline/exponents/.
 # One summary row per render: samples = covered pixels, mismatches = SystemC vs golden, max_error =
 # the interpolation's NMSE (vs per-pixel shading through the same device), cycles_per_pixel =
 # simulated clocks per pixel. The default configuration runs twice: block level and the fast

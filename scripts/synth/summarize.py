@@ -103,7 +103,7 @@ DESCRIPTIONS = {
     "gen_rom": "generator alone: UA 22802's ROM (F = 6) as logic",
     "gen_linear": "generator alone: UA 60553's MUL6 + ADD15",
     "gen_tuned_minimax": "generator alone: tuned (MUL6 + ADD15 + OR + key)",
-    "coef_c1_shift_add": "cubic coefficient unit, case 1, seed's shift-and-add /3",
+    "coef_c1_shift_add": "cubic coefficient unit, case 1, the interpolation paper's shift-and-add /3",
     "coef_c1_exact": "cubic coefficient unit, case 1, exact /3",
     "coef_c2_shift_add": "cubic coefficient unit, case 2, shift-and-add /3",
     "horner_unit": "Horner unit (Fig. 4) with its controller",

@@ -4,8 +4,8 @@
 #include <bitset>
 #include <cstdlib>
 
+#include "arith/ua22802_arith.h"
 #include "formats/ua22802_formats.h"
-#include "golden/ua22802_golden.h"
 #include "formats/ua60553_formats.h"
 
 namespace shading::study {

@@ -1,13 +1,13 @@
 #include "study_devices.h"
 
+#include "arith/squared_arith.h"
+#include "arith/ua22802_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "formats/sqmul_formats.h"
 #include "formats/squared_formats.h"
 #include "formats/ua22802_formats.h"
 #include "formats/ua60553_formats.h"
 #include "golden/sqmul_golden.h"
-#include "golden/squared_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
 #include "study_metrics.h"
 
 namespace shading::study {

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "reference/brdf_reference.h"
+#include "arith/specular_arith.h"
 #include "formats/specular_formats.h"
-#include "golden/specular_golden.h"
 
 namespace shading::study {
 

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arith/squared_arith.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/squared_golden.h"
 #include "head_surface.h"
 #include "scene/image.h"
 #include "scene/raster.h"
@@ -113,7 +113,7 @@ TEST(TrialLaw, TheFitIsNoWorseThanTheInflection) {
         };
         const double fitted = trial_a_fitted(d, n), best = distribution_nmse(d, n, law(fitted));
         EXPECT_LE(best, distribution_nmse(d, n, law(trial_a_inflection(n)))) << n;
-        // No point of the trial's own 301-point grid over the bracket does better (brute force).
+        // No point of a 301-point grid over the bracket (the law's first fit) does better (brute force).
         const double ai = trial_a_inflection(n), lo = std::max(0.5 * ai, 0.0), hi = 1.5 * ai + 0.01;
         for (int i = 0; i <= 300; ++i) EXPECT_LE(best, distribution_nmse(d, n, law(lo + (hi - lo) * i / 300)) * (1 + 1e-12)) << n;
     }

@@ -1,7 +1,7 @@
 // The interpolation paper's accuracy claim measured: NMSE of the interpolated raster line against the exact
 // intensity, per unit variant and interval length N = 2^m (m = 2..6), through the bit-accurate
 // golden models (the benches prove them bit-exact to the SystemC units). Plus the adaptive degree
-// the seed proposes: per interval, the quadratic where the cubic term is small (|A| <= tau
+// the paper proposes: per interval, the quadratic where the cubic term is small (|A| <= tau
 // intensity levels, a stand-in for the paper's curvature zones, whose figure is not available),
 // the cubic elsewhere; with its mean Horner cycles per pixel (4 quadratic, 6 cubic).
 // NMSE = sum (I_hw - I_exact)^2 / sum I_exact^2 over the line's pixels.
@@ -76,7 +76,7 @@ struct cubic_unit {
     std::string name() const {
         return std::string(set == interp::sample_set::case1 ? "cubic1_" : "cubic2_") +
                (div == interp::div3_mode::shift_add ? "shiftadd" : "exactdiv") +
-               (grouping == interp::div3_grouping::whole_sum ? "" : "_seedgroup");
+               (grouping == interp::div3_grouping::whole_sum ? "" : "_partialsum");
     }
     interp::cubic_coefs coefs(const std::array<uint64_t, 4>& i) const {
         return interp::golden_cubic_coefs(i, set, div, grouping);
@@ -138,7 +138,7 @@ int main(int argc, char* argv[]) {
             std::printf("%3u %4u %-26s %8g %11.3e %9.3f %7.2f\n", m, line.n(), name.c_str(), tau, e.nmse, e.max_abs,
                         e.cycles_per_pixel);
             if (summary && (m == 3 || m == 5) && (name != "adaptive" || tau == 2.0) &&
-                name.find("_seedgroup") == std::string::npos)
+                name.find("_partialsum") == std::string::npos)
                 summary << "interp_nmse\t" << name << (name == "adaptive" ? "_tau2" : "") << "_N" << line.n() << '\t'
                         << width << "\t-\t" << std::scientific << std::setprecision(2) << e.nmse << std::defaultfloat
                         << "\t" << e.cycles_per_pixel << "\tNMSE vs exact intensity (Horner golden); the interpolation paper: <= 1e-4 "

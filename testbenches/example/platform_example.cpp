@@ -10,10 +10,10 @@
 #include <systemc>
 #include <type_traits>
 
-#include "golden/specular_golden.h"  // the bit-accurate golden models, to check what we read
-#include "golden/squared_golden.h"
-#include "squared/squared.h"          // shading::device_squared (link shading_modules)
-#include "ua60553/ua60553.h"          // shading::device_ua60553 (link shading_modules)
+#include "arith/specular_arith.h"  // the bit-accurate golden models, to check what we read
+#include "arith/squared_arith.h"
+#include "squared/squared.h"        // shading::device_squared (link shading_modules)
+#include "ua60553/ua60553.h"        // shading::device_ua60553 (link shading_modules)
 
 using sc_core::SC_NS;
 

@@ -65,7 +65,7 @@ TEST(InterpBlocks, ShifterSignExtendsAndFloors) {
     EXPECT_EQ(down.read(), 0xFFFEu);  // floor(-5/4) = -2
 }
 
-TEST(InterpBlocks, ShiftAddNetworkAndSeedDivisionBy3) {
+TEST(InterpBlocks, ShiftAddNetworkAndFig2DivisionBy3) {
     sc_core::sc_vector<bus<16>> in("in", 2);
     bus<24> y("y"), x("x");
     bus<32> q("q");
@@ -82,7 +82,7 @@ TEST(InterpBlocks, ShiftAddNetworkAndSeedDivisionBy3) {
     EXPECT_EQ(q.read(), sc_dt::sc_uint<32>(static_cast<uint32_t>(-22016)));  // -0.3359375 = -86*256/65536
 }
 
-// The seed-grouping unit's subtractor (coef_unit_cubic_seed.h): an inverter bank and an adder with
+// The partial-sum unit's subtractor (coef_unit_cubic_partial_sum.h): an inverter bank and an adder with
 // carry-in 1, minuend + ~subtrahend + 1, on Q16.16 buses. Hand-worked: case 1 A for a flat line of
 // 1.0, 72 * 43/128 = 24.1875 (the /3 of the divided part, 1585152 LSB) minus 24 (1572864) = 0.1875
 // (12288); and 1 - 2 = -1 wraps to two's complement.

@@ -106,7 +106,7 @@ TEST(InterpCoefGolden, WithinDocumentedBoundOfTheRealSolution) {
 // over 384 (in Q.8 levels): case 1 A by (64I2 + 8I4)/384, C by (32I2 + I4)/384; case 2, where
 // the quotient is subtracted, A by -(8I1 + 64I3)/384, C by -(13I1 + 32I3)/384. The whole-sum
 // grouping is off by the whole sum over 384 (the 129/128 above).
-TEST(InterpCoefGolden, SeedGroupingShiftAddOffByTheDividedPartOver384) {
+TEST(InterpCoefGolden, PartialSumShiftAddOffByTheDividedPartOver384) {
     std::mt19937 rng(16);
     for (int n = 0; n < 2000; ++n) {
         const auto s = random_samples(rng);
@@ -132,7 +132,7 @@ TEST(InterpCoefGolden, SeedGroupingShiftAddOffByTheDividedPartOver384) {
 // shift-and-add (its sum is 0). The paper's grouping divides 72 (A) and 33 (C) levels and subtracts
 // 24 and 11: case 1 A = 72 * 43/128 - 24 = 0.1875 (12288 LSB), C = 33 * 43/128 - 11 = 0.0859375
 // (5632); case 2 A = 24 - 72 * 43/128 = -0.1875, C = 15 - 45 * 43/128 = -0.1171875 (-7680).
-TEST(InterpCoefGolden, SeedGroupingHandWorkedFlatLine) {
+TEST(InterpCoefGolden, PartialSumHandWorkedFlatLine) {
     const std::array<uint64_t, 4> flat{256, 256, 256, 256};
     for (auto set : {sample_set::case1, sample_set::case2})
         EXPECT_EQ(golden_cubic_coefs(flat, set, div3_mode::shift_add), (cubic_coefs{0, 0, 0, 65536}));
@@ -145,7 +145,7 @@ TEST(InterpCoefGolden, SeedGroupingHandWorkedFlatLine) {
 // With the exact divider the grouping costs nothing: in case 1 the integer part Y enters as
 // 256 Y - floor(256 X / 3) = floor(256 (X - 3Y) / 3), bit for bit the whole-sum result; in case 2
 // the quotient is subtracted, Y - floor(X/3) rounds up where the whole sum floors: +1 LSB at most.
-TEST(InterpCoefGolden, SeedGroupingExactDividerIsTheWholeSumWithinOneLsb) {
+TEST(InterpCoefGolden, PartialSumExactDividerIsTheWholeSumWithinOneLsb) {
     std::mt19937 rng(17);
     unsigned case2_up = 0;
     for (int n = 0; n < 5000; ++n) {

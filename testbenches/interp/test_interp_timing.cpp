@@ -11,7 +11,7 @@
 
 #include <systemc>
 
-#include "interp/coef_unit_cubic_seed.h"
+#include "interp/coef_unit_cubic_partial_sum.h"
 #include "interp/coef_unit_quad.h"
 #include "interp/fd_eval.h"
 #include "interp/horner_unit.h"
@@ -102,7 +102,7 @@ struct line_pins : sc_core::sc_module {
 void elaborate() { sc_core::sc_start(sc_core::SC_ZERO_TIME); }
 
 constexpr auto whole = div3_grouping::whole_sum;
-constexpr auto seed = div3_grouping::partial_sum;
+constexpr auto partial = div3_grouping::partial_sum;
 
 }  // namespace
 
@@ -134,11 +134,11 @@ TEST(InterpTiming, CoefUnitsWholeSumAreTheHandSums) {
 // integer part, then the subtractor (inverter on the subtrahend + adder). Case 1, A: net (2 terms,
 // 1 ns) + /3 against net + inverter (1.1 ns), then 1 ns: 1 + 3.1 + 1 = 5.1 ns (C: the same; B 3.1).
 // Case 2, C: the 4-term net (2 ns) + /3 + the inverter (the quotient is subtracted) + 1 ns = 6.2 ns.
-TEST(InterpTiming, CoefUnitsSeedGroupingAreTheHandSums) {
-    cubic_pins<sample_set::case1, div3_mode::shift_add, seed> c1sa("c1sa");
-    cubic_pins<sample_set::case1, div3_mode::exact, seed> c1ex("c1ex");
-    cubic_pins<sample_set::case2, div3_mode::shift_add, seed> c2sa("c2sa");
-    cubic_pins<sample_set::case2, div3_mode::exact, seed> c2ex("c2ex");
+TEST(InterpTiming, CoefUnitsPartialSumGroupingAreTheHandSums) {
+    cubic_pins<sample_set::case1, div3_mode::shift_add, partial> c1sa("c1sa");
+    cubic_pins<sample_set::case1, div3_mode::exact, partial> c1ex("c1ex");
+    cubic_pins<sample_set::case2, div3_mode::shift_add, partial> c2sa("c2sa");
+    cubic_pins<sample_set::case2, div3_mode::exact, partial> c2ex("c2ex");
     elaborate();
     EXPECT_EQ(c1sa.dut.min_low(), sc_time(5300, SC_PS));  // 0.2 + 1 + 3.1 + 1
     EXPECT_EQ(c1ex.dut.min_low(), sc_time(5200, SC_PS));  // 0.2 + 1 + 3 + 1
@@ -181,27 +181,27 @@ TEST(InterpTiming, ForwardDifferencesAreTheHandSums) {
 // The raster-line interpolator: the units keep their own requirements; the path between them,
 // rg_i -> network -> /3 -> A..D -> FD set-up -> MX -> FD register, runs from one falling edge to the
 // next. Whole sum, case 2, shift-and-add: its slowest coefficient C, 0.2 + 4 + 3.1 (= coef's 7.3) +
-// 2 (setup_d1: 3 terms, 2 adder levels) + 0.3 (MX) = 9.6 ns; case 1: net_c 3.1, so 8.7 ns. Seed
-// grouping, case 2: C 6.4 + 2.3 = 8.7 ns; case 1: A and C 5.3 + 2.3 = 7.6 ns. Covered by the two
+// 2 (setup_d1: 3 terms, 2 adder levels) + 0.3 (MX) = 9.6 ns; case 1: net_c 3.1, so 8.7 ns. Partial
+// sum, case 2: C 6.4 + 2.3 = 8.7 ns; case 1: A and C 5.3 + 2.3 = 7.6 ns. Covered by the two
 // units' phase checks (low + high), so the top adds no checker.
 TEST(InterpTiming, LinePathBetweenTheUnitsIsTheHandSumAndCoveredByTheirPhases) {
     line_pins<5, sample_set::case2, div3_mode::shift_add> c2sa("c2sa");
     line_pins<5, sample_set::case1, div3_mode::shift_add> c1sa("c1sa");
-    line_pins<5, sample_set::case2, div3_mode::shift_add, seed> c2sa_seed("c2sa_seed");
-    line_pins<5, sample_set::case1, div3_mode::shift_add, seed> c1sa_seed("c1sa_seed");
+    line_pins<5, sample_set::case2, div3_mode::shift_add, partial> c2sa_partial("c2sa_partial");
+    line_pins<5, sample_set::case1, div3_mode::shift_add, partial> c1sa_partial("c1sa_partial");
     elaborate();
     EXPECT_EQ(c2sa.dut.sample_to_load().delay, sc_time(9600, SC_PS)) << c2sa.dut.sample_to_load().to_string();
     EXPECT_EQ(c2sa.dut.sample_to_load().to_string(), "coef.rg_i1 -> coef.net_c -> coef.div3_c -> fd.setup_d1 -> fd.mx_d1 = 9.6 ns");
     EXPECT_EQ(c1sa.dut.sample_to_load().delay, sc_time(8700, SC_PS));
-    EXPECT_EQ(c2sa_seed.dut.sample_to_load().delay, sc_time(8700, SC_PS));
-    EXPECT_EQ(c1sa_seed.dut.sample_to_load().delay, sc_time(7600, SC_PS));
+    EXPECT_EQ(c2sa_partial.dut.sample_to_load().delay, sc_time(8700, SC_PS));
+    EXPECT_EQ(c1sa_partial.dut.sample_to_load().delay, sc_time(7600, SC_PS));
     EXPECT_EQ(c2sa.dut.min_high(), sc_time(2300, SC_PS));
     EXPECT_EQ(c2sa.dut.min_low(), sc_time(7300, SC_PS));
     EXPECT_EQ(c1sa.dut.min_low(), sc_time(6400, SC_PS));
     EXPECT_LE(c2sa.dut.sample_to_load().delay, c2sa.dut.min_low() + c2sa.dut.min_high());
     EXPECT_LE(c1sa.dut.sample_to_load().delay, c1sa.dut.min_low() + c1sa.dut.min_high());
-    EXPECT_LE(c2sa_seed.dut.sample_to_load().delay, c2sa_seed.dut.min_low() + c2sa_seed.dut.min_high());
-    EXPECT_LE(c1sa_seed.dut.sample_to_load().delay, c1sa_seed.dut.min_low() + c1sa_seed.dut.min_high());
+    EXPECT_LE(c2sa_partial.dut.sample_to_load().delay, c2sa_partial.dut.min_low() + c2sa_partial.dut.min_high());
+    EXPECT_LE(c1sa_partial.dut.sample_to_load().delay, c1sa_partial.dut.min_low() + c1sa_partial.dut.min_high());
 }
 
 // One block kind slower, everything else at its default: each requirement moves by exactly the
@@ -220,8 +220,8 @@ TEST(InterpTiming, ASlowerBlockMovesTheRequirements) {
     interp_delays slow_inv;
     slow_inv.inverter = sc_time(1100, SC_PS);  // +1 ns
     cubic_pins<sample_set::case1, div3_mode::shift_add, whole> coef("coef", slow_reg);
-    cubic_pins<sample_set::case1, div3_mode::shift_add, seed> seed_add("seed_add", slow_adder);
-    cubic_pins<sample_set::case2, div3_mode::shift_add, seed> seed_inv("seed_inv", slow_inv);
+    cubic_pins<sample_set::case1, div3_mode::shift_add, partial> partial_add("partial_add", slow_adder);
+    cubic_pins<sample_set::case2, div3_mode::shift_add, partial> partial_inv("partial_inv", slow_inv);
     quad_pins quad("quad", slow_reg);
     horner_pins h_mul("h_mul", slow_mul);
     horner_pins h_reg("h_reg", slow_reg);
@@ -229,15 +229,15 @@ TEST(InterpTiming, ASlowerBlockMovesTheRequirements) {
     fd_pins<5> f_adder("f_adder", slower_adder);
     line_pins<5, sample_set::case2, div3_mode::shift_add> line("line", slow_mux);
     elaborate();
-    EXPECT_EQ(coef.dut.min_low(), sc_time(6900, SC_PS));      // 6.4 + 0.5
-    EXPECT_EQ(seed_add.dut.min_low(), sc_time(6300, SC_PS));  // 5.3 + 1 (the subtractor)
-    EXPECT_EQ(seed_inv.dut.min_low(), sc_time(7400, SC_PS));  // 6.4 + 1 (inv_c on the quotient)
-    EXPECT_EQ(quad.dut.min_low(), sc_time(3800, SC_PS));      // 3.3 + 0.5
-    EXPECT_EQ(h_mul.dut.min_high(), sc_time(5600, SC_PS));    // 4.6 + 1
+    EXPECT_EQ(coef.dut.min_low(), sc_time(6900, SC_PS));         // 6.4 + 0.5
+    EXPECT_EQ(partial_add.dut.min_low(), sc_time(6300, SC_PS));  // 5.3 + 1 (the subtractor)
+    EXPECT_EQ(partial_inv.dut.min_low(), sc_time(7400, SC_PS));  // 6.4 + 1 (inv_c on the quotient)
+    EXPECT_EQ(quad.dut.min_low(), sc_time(3800, SC_PS));         // 3.3 + 0.5
+    EXPECT_EQ(h_mul.dut.min_high(), sc_time(5600, SC_PS));       // 4.6 + 1
     EXPECT_EQ(h_mul.dut.min_low(), sc_time(200, SC_PS));
     EXPECT_EQ(h_reg.dut.min_high(), sc_time(4600, SC_PS));
-    EXPECT_EQ(h_reg.dut.min_low(), sc_time(700, SC_PS));      // 0.2 + 0.5
-    EXPECT_EQ(f_mux.dut.min_high(), sc_time(2800, SC_PS));    // 2 + 0.8
+    EXPECT_EQ(h_reg.dut.min_low(), sc_time(700, SC_PS));         // 0.2 + 0.5
+    EXPECT_EQ(f_mux.dut.min_high(), sc_time(2800, SC_PS));       // 2 + 0.8
     // Adders at 3 ns: the recurrence RG -> ADD -> MX -> RG is 0.2 + 3 + 0.3 = 3.5 ns, longer than the
     // high phase's 2.3 ns (the set-up networks keep their 1 ns adders): the low phase makes up 1.2 ns.
     EXPECT_EQ(f_adder.dut.min_high(), sc_time(2300, SC_PS));

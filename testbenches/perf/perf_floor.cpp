@@ -16,7 +16,7 @@
 #include <string>
 #include <systemc>
 
-#include "golden/specular_golden.h"
+#include "arith/specular_arith.h"
 #include "perf_cases.h"
 #include "perf_floor.h"
 #include "perf_harness.h"

@@ -3,7 +3,7 @@
 
 namespace shading::perf {
 
-// The harnesses with nothing inside (the floors under the targets).
+// The harnesses with nothing inside (the floors under the speed figures).
 void register_floor_cases();
 
 }  // namespace shading::perf

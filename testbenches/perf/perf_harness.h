@@ -11,8 +11,8 @@
 #include <string>
 #include <systemc>
 
+#include "arith/specular_arith.h"
 #include "formats/specular_formats.h"
-#include "golden/specular_golden.h"
 #include "specular/block_delays.h"
 
 namespace shading::perf {

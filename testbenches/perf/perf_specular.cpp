@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "golden/specular_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/specular_arith.h"
+#include "arith/ua22802_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "perf_cases.h"
 #include "perf_harness.h"
 #include "perf_specular.h"

@@ -50,8 +50,8 @@ std::vector<sweep_point> sweep_grid(const std::string& grid, const std::string& 
     }
     if (grid == "claims") {
         // The policies whose worst case and median the claims are about: the program's default, the
-        // seed's zones, the colour-checked adaptive ones (host only) and the geometry-only ones, each
-        // through both evaluators.
+        // interpolation paper's zones, the colour-checked adaptive ones (host only) and the
+        // geometry-only ones, each through both evaluators.
         struct pol {
             const char* length;
             unsigned m;

@@ -26,7 +26,7 @@
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 #include "squared/squared_device.h"
 
 using namespace shading;

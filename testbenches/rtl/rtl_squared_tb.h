@@ -9,8 +9,8 @@
 #include <systemc>
 #include <vector>
 
+#include "arith/squared_arith.h"
 #include "golden/sqmul_golden.h"
-#include "golden/squared_golden.h"
 #include "testbenches/specular/specular_tb.h"
 
 namespace shading::tb {

@@ -14,7 +14,7 @@
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 #include "rtl_cosim_tb.h"
 #include "rtl_squared_tb.h"
 #include "squared/squared_device.h"

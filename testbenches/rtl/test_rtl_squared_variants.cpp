@@ -16,7 +16,7 @@
 #include "core/report_ids.h"
 #include "formats/squared_formats.h"
 #include "golden/sqmul_golden.h"
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 #include "rtl_squared_tb.h"
 #include "testbenches/specular/specular_tb.h"
 #include "verilated.h"

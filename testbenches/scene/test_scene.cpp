@@ -8,10 +8,10 @@
 #include <fstream>
 #include <string>
 
-#include "golden/specular_golden.h"
-#include "golden/squared_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/specular_arith.h"
+#include "arith/squared_arith.h"
+#include "arith/ua22802_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "scene/image.h"
 #include "scene/raster.h"
 #include "scene/scene.h"
@@ -471,7 +471,7 @@ TEST(SceneShade, SpecularUnitIsShadedAsADevice) {
 
 // The head at 64x64: it fills a good part of the frame, has a specular highlight (red above
 // 255 (ambient + k_d) = 186, which diffuse light alone cannot reach), and the tuned device's image
-// is close to Phong's (the trial: NMSE of order 1e-3 from the BRDF's clamped tail).
+// is close to Phong's (NMSE of order 1e-3, from the quadratic BRDF's clamped tail).
 TEST(SceneShade, HeadIsLitWithAHighlight) {
     const world s = builtin_scene("head", SHADING_SOURCE_DIR, 64, 64);
     const material& m = s.objects.front().mat;

@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <string>
 
-#include "golden/specular_golden.h"
-#include "golden/squared_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/specular_arith.h"
+#include "arith/squared_arith.h"
+#include "arith/ua22802_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "squared/squared_device.h"
 #include "tuned/ua60553_tuned.h"
 #include "ua22802/ua22802.h"

@@ -23,7 +23,7 @@
 
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
-#include "golden/specular_golden.h"
+#include "arith/specular_arith.h"
 #include "formats/ua60553_formats.h"
 #include "core/report_ids.h"
 #include "testbenches/common/bench_source.h"

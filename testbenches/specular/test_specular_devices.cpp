@@ -23,12 +23,12 @@ using sc_core::sc_time;
 namespace {
 
 // What differs between the devices in the shared tests beyond device_traits.h: the quadratic-BRDF paper
-// bound the device must meet (seed_bound < 0: not claimed, e.g. the patent's constants are 56.7 %
+// bound the device must meet (claimed_bound < 0: not claimed, e.g. the patent's constants are 56.7 %
 // off at n = 1), a golden model of another device that must be caught, and checks of the
 // generator's own nets.
 struct ua60553_traits : ua60553_device {
     static strobe_timing timing() { return {}; }
-    static double seed_bound(unsigned) { return -1.0; }
+    static double claimed_bound(unsigned) { return -1.0; }
     // the ROM's a(1) = 0, the patent's 1.29
     static datapath_nets other(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
         return golden_ua22802(n, c, k, m);
@@ -43,7 +43,7 @@ struct ua22802_traits : ua22802_device {
     static strobe_timing timing() { return {}; }
     // The quadratic-BRDF paper: <= 4 % above 0.56. n = 1 and n = 2 are exact in the model: only the output's
     // Q9.8 floor remains (1/256 of 255*0.56 is 2.7e-5 relative).
-    static double seed_bound(unsigned n) { return n <= 2 ? 1e-4 : 0.04; }
+    static double claimed_bound(unsigned n) { return n <= 2 ? 1e-4 : 0.04; }
     // the patent's a = 0.789 n + 0.5: 1.29 at n = 1, where the ROM's a is 0
     static datapath_nets other(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
         return golden_ua60553(n, c, k, m);
@@ -53,7 +53,7 @@ struct ua22802_traits : ua22802_device {
 
 struct tuned_traits : tuned_device {
     static strobe_timing timing() { return {}; }
-    static double seed_bound(unsigned n) { return n == 1 ? 1e-4 : 0.04; }
+    static double claimed_bound(unsigned n) { return n == 1 ? 1e-4 : 0.04; }
     // n = 1: the patent's a = 1.29, here a = 0
     static datapath_nets other(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
         return golden_ua60553(n, c, k, m);
@@ -67,7 +67,7 @@ struct squared_traits : squared_device_traits {
     // 13 clocks per pixel: the result of k = 9 is valid before the next strobe.
     static strobe_timing timing() { return squared_timing(); }
     // Ours: <= 1 % above 0.56 for every n (0.39 % at worst); n = 1, 2: only the output's floor.
-    static double seed_bound(unsigned n) { return n <= 2 ? 1e-4 : 0.01; }
+    static double claimed_bound(unsigned n) { return n <= 2 ? 1e-4 : 0.01; }
     // the patent's a = 0.789 n + 0.5 at n = 1, where this device computes cos itself
     static datapath_nets other(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode m) {
         return golden_ua60553(n, c, k, m);
@@ -99,7 +99,7 @@ using devices = ::testing::Types<ua60553_traits, ua22802_traits, tuned_traits, s
 
 TYPED_TEST_SUITE(SpecularDevice, devices, device_names);
 
-TYPED_TEST(SpecularDevice, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
+TYPED_TEST(SpecularDevice, ExhaustiveCosSweepMatchesGoldenAndTheClaimedBound) {
     std::vector<uint32_t> all;
     for (uint32_t c = 0; c <= spec::cos_one; ++c) all.push_back(c);
     const std::vector<unsigned> ns{1, 2, 3, 512, 1000};
@@ -112,8 +112,8 @@ TYPED_TEST(SpecularDevice, ExhaustiveCosSweepMatchesGoldenAndTheSeedBound) {
     for (unsigned n : ns) {
         const auto& st = bench.checker.stats().at(n);
         EXPECT_GT(st.rel_err_points, 0u);
-        if (TypeParam::seed_bound(n) > 0) {
-            EXPECT_LT(st.max_rel_err_056, TypeParam::seed_bound(n)) << "n = " << n;
+        if (TypeParam::claimed_bound(n) > 0) {
+            EXPECT_LT(st.max_rel_err_056, TypeParam::claimed_bound(n)) << "n = " << n;
         }
     }
     // The generator's word on net a_coef is the last surface's a(1000).

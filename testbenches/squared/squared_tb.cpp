@@ -13,7 +13,7 @@
 
 #include "testbenches/common/bench_runner.h"
 #include "testbenches/options/bench_options.h"
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 #include "scene/scene.h"
 #include "testbenches/specular/specular_tb.h"
 #include "squared/squared.h"

@@ -16,7 +16,7 @@
 #include "testbenches/common/vcd_names.h"
 #include "core/report_ids.h"
 #include "core/trace.h"
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 #include "scene/scene.h"
 #include "testbenches/specular/specular_view.h"
 #include "squared/squared_device.h"

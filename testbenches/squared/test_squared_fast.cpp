@@ -13,7 +13,7 @@
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
-#include "golden/squared_golden.h"
+#include "arith/squared_arith.h"
 #include "testbenches/specular/specular_tb.h"
 #include "squared/squared.h"
 

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include "arith/squared_arith.h"
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/squared_golden.h"
 #include "reference/brdf_reference.h"
 
 using namespace shading;
@@ -126,7 +126,7 @@ TEST(SquaredGolden, CosAboveOneSaturatesOrWraps) {
     EXPECT_EQ(w.brdf, ((w.q * w.q) >> 18) & squared::q_fmt.mask());  // the square's high wires dropped
 }
 
-TEST(SquaredGolden, WorstRelativeErrorAboveTheSeedThresholdIsBelowOnePercent) {
+TEST(SquaredGolden, WorstRelativeErrorAboveTheBrdfPaperThresholdIsBelowOnePercent) {
     // Computed here against cos^n of the code (the quadratic-BRDF paper's measure, where cos^n >= 0.56).
     double worst = 0;
     unsigned worst_n = 0;

@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "testbenches/options/tool_options.h"
-#include "golden/specular_golden.h"
-#include "golden/squared_golden.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/specular_arith.h"
+#include "arith/squared_arith.h"
+#include "arith/ua22802_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "tlm/specular_tlm.h"
 #include "tlm_initiator.h"
 

@@ -10,7 +10,7 @@
 #include "testbenches/specular/specular_tb.h"
 #include "ua60553/ua60553.h"
 #include "tuned/ua60553_tuned.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/ua60553_tuned_arith.h"
 
 using namespace shading;
 using namespace shading::tb;

@@ -7,8 +7,8 @@
 
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
-#include "golden/ua22802_golden.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/ua22802_arith.h"
+#include "arith/ua60553_tuned_arith.h"
 
 using namespace shading;
 
@@ -33,7 +33,7 @@ TEST(UA60553TunedGolden, HandWorkedPixel) {
     EXPECT_EQ(r.out[0], 13400u);
 }
 
-TEST(UA60553TunedGolden, WorstCaseBeatsTheRomAndTheSeedBound) {
+TEST(UA60553TunedGolden, WorstCaseBeatsTheRomAndTheBrdfPaperBound) {
     // Computed here directly (not through study_metrics) against cos^n.
     double worst_tuned = 0, worst_rom = 0;
     for (unsigned n = 1; n <= 1000; ++n)

@@ -18,7 +18,7 @@
 #include "testbenches/specular/specular_tb.h"
 #include "core/trace.h"
 #include "ua22802/ua22802.h"
-#include "golden/ua22802_golden.h"
+#include "arith/ua22802_arith.h"
 #include "ua60553/ua60553.h"
 
 using namespace shading;

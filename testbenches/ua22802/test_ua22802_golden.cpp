@@ -9,7 +9,7 @@
 #include "reference/brdf_reference.h"
 #include "formats/specular_formats.h"
 #include "formats/ua22802_formats.h"
-#include "golden/ua22802_golden.h"
+#include "arith/ua22802_arith.h"
 #include "ua22802_a_rom.h"
 
 using namespace shading;
@@ -84,7 +84,7 @@ TEST(UA22802Golden, WithinTheRoundingBoundOfTheRealQuadratic) {
     }
 }
 
-TEST(UA22802Golden, SeedAccuracyClaimHoldsBitAccurately) {
+TEST(UA22802Golden, BrdfPaperAccuracyClaimHoldsBitAccurately) {
     // The quadratic-BRDF paper: relative error <= 4 % where cos^n >= 0.56, n in [1, 512]. Measured: 3.16 %.
     double worst = 0;
     for (unsigned n = 1; n <= 1000; ++n)

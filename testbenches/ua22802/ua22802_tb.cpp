@@ -14,7 +14,7 @@
 
 #include "testbenches/common/bench_runner.h"
 #include "testbenches/options/bench_options.h"
-#include "golden/ua22802_golden.h"
+#include "arith/ua22802_arith.h"
 #include "testbenches/specular/specular_tb.h"
 #include "ua22802/ua22802.h"
 

@@ -6,8 +6,8 @@
 
 #include "reference/brdf_reference.h"
 #include "scene/scene.h"
+#include "arith/specular_arith.h"
 #include "formats/specular_formats.h"
-#include "golden/specular_golden.h"
 #include "formats/ua60553_formats.h"
 
 using namespace shading;

@@ -14,7 +14,7 @@
 
 #include "testbenches/common/bench_runner.h"
 #include "testbenches/options/bench_options.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "scene/scene.h"
 #include "testbenches/specular/specular_tb.h"
 #include "tuned/ua60553_tuned.h"

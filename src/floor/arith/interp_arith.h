@@ -24,7 +24,7 @@ struct cubic_coefs {
 int64_t golden_div3(int64_t x_q8, div3_mode mode);
 
 // I1..I4 as sample_fmt codes (Q8.8 unsigned). `grouping`: /3 on the whole weighted sum (the
-// default) or on the interpolation paper's partial sum (coef_unit_cubic_seed.h).
+// default) or on the interpolation paper's partial sum (coef_unit_cubic_partial_sum.h).
 cubic_coefs golden_cubic_coefs(const std::array<uint64_t, 4>& i, sample_set set, div3_mode mode,
                                div3_grouping grouping = div3_grouping::whole_sum);
 // Quadratic through t = 0, 1/2, 1: a, b, c returned in the a, b, c fields (d = 0).

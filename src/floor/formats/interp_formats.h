@@ -1,6 +1,7 @@
 // Number formats of the interpolation paper's interpolation hardware: the coefficient
 // units, the iterative Horner unit and the forward-difference evaluator. One table, used by the
-// golden models (src/interp_golden.*), the modules' template widths and the README.
+// golden models (src/floor/arith/interp_arith.*, src/golden/interp_golden.*), the modules'
+// template widths and the README.
 // Notation: Qi.f = i integer bits (sign included when signed), f fraction bits.
 #pragma once
 
@@ -20,7 +21,7 @@ enum class div3_mode { shift_add, exact };
 // 48I3 + 8I4)/3 (this model's default). partial_sum: as the interpolation paper prints it, on the part whose
 // weights are not multiples of 3 only, the rest added as integers: case 1 A = 8(8I2 + I4)/3 -
 // 8(I1 + 2I3), C = (32I2 + I4)/3 - 7I1 - 4I3; case 2 A = 8(2I2 + I4) - 8(I1 + 8I3)/3,
-// C = 3(4I2 + I4) - (13I1 + 32I3)/3 (the seed prints these with I3 and I4 swapped: its subscripts
+// C = 3(4I2 + I4) - (13I1 + 32I3)/3 (the paper prints these with I3 and I4 swapped: its subscripts
 // fit the t = 1 sample named I3; here samples are numbered by increasing t).
 enum class div3_grouping { whole_sum, partial_sum };
 

@@ -55,8 +55,8 @@ inline constexpr unsigned tuned_or_lo = 1;
 // prototype: 3.16 %; the patent's constants: 56.7 %, at n = 1).
 inline constexpr tuned_generator minimax{"minimax", "1100101", "1010000", true};
 
-// The same search ranked n by n against the ROM prototype (the aim: as accurate as the ROM
-// for every n): the candidate whose largest excess over the ROM's error, max over n of
+// The same search ranked n by n against the ROM prototype UA 22802 (aiming to be as accurate as
+// the ROM for every n): the candidate whose largest excess over the ROM's error, max over n of
 // (error(n) - error_ROM(n)), is smallest. Node 32 = -0.1001001b = -0.5703125 (a(2) = 1.0078 close
 // to the exact 1): worse than the ROM only for n = 2..30, by at most 0.26 points; worst case
 // 3.09 %, beside minimax's 3.086 %. Same cost as minimax.

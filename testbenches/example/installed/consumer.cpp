@@ -11,10 +11,10 @@
 #include <systemc>
 #include <type_traits>
 
-#include "golden/specular_golden.h"   // shading::golden
-#include "golden/squared_golden.h"    // shading::golden
-#include "squared/squared.h"          // shading::modules
-#include "ua60553/ua60553.h"          // shading::modules
+#include "arith/specular_arith.h"  // shading::floor: golden_ua60553
+#include "arith/squared_arith.h"   // shading::floor: golden_squared
+#include "squared/squared.h"        // shading::modules
+#include "ua60553/ua60553.h"        // shading::modules
 
 using sc_core::SC_NS;
 using sc_core::sc_time;

@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <systemc>
 
-#include "golden/squared_golden.h"    // its functions: libshading_floor (arith/squared_arith.h)
-#include "golden/ua22802_golden.h"    // libshading_floor (arith/ua22802_arith.h)
-#include "squared/squared_device.h"   // formats/squared_formats.h, the new blocks and monitors
-#include "ua22802/ua22802.h"          // includes the generated ua22802_a_rom.h
+#include "arith/squared_arith.h"     // its functions: libshading_floor
+#include "arith/ua22802_arith.h"     // libshading_floor
+#include "squared/squared_device.h"  // formats/squared_formats.h, the new blocks and monitors
+#include "ua22802/ua22802.h"         // includes the generated ua22802_a_rom.h
 
 int sc_main(int, char*[]) {
     // The installed ROM content (generated from ref::a_exact) against the golden model's ROM word,

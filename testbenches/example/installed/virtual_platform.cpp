@@ -25,8 +25,8 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/simple_target_socket.h>
 
-#include "golden/specular_golden.h"  // shading::golden
-#include "golden/squared_golden.h"   // shading::golden
+#include "arith/specular_arith.h"  // shading::floor: golden_ua60553
+#include "arith/squared_arith.h"   // shading::floor: golden_squared
 #include "golden_pipeline/pipeline.h"        // shading::pipeline: frame constants, sample stage, plan, golden_interval
 #include "scene/raster.h"             // shading::scene: the rasteriser
 #include "scene/world.h"              // shading::scene: the head scene

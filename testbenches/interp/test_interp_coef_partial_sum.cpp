@@ -1,4 +1,4 @@
-// The coefficient unit with the interpolation paper's grouping of the /3 (coef_unit_cubic_seed.h) against its
+// The coefficient unit with the interpolation paper's grouping of the /3 (coef_unit_cubic_partial_sum.h) against its
 // golden model, bit for bit, per sample set and divider (value-parameterised), plus hand-worked
 // values and its clock-phase requirement. A small bench of its own: a driver writes one sample
 // set just after each rising edge; at the next rising edge the coefficients are compared.
@@ -15,7 +15,7 @@
 #include "testbenches/common/sim_guard.h"
 #include "formats/fixed_point.h"
 #include "golden/interp_golden.h"
-#include "interp/coef_unit_cubic_seed.h"
+#include "interp/coef_unit_cubic_partial_sum.h"
 
 using namespace shading;
 using interp::div3_grouping;
@@ -29,7 +29,7 @@ using samples = std::array<uint64_t, 4>;
 using golden_fn = std::function<interp::cubic_coefs(const samples&)>;
 
 template <sample_set SET, div3_mode DIV, div3_grouping G>
-class coef_seed_bench : public sc_core::sc_module {
+class coef_partial_sum_bench : public sc_core::sc_module {
     using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
     using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
 
@@ -39,8 +39,8 @@ public:
     sc_core::sc_vector<sc_core::sc_signal<coef_t>> out{"out", 4};
     coef_unit_cubic_t<SET, DIV, G> dut{"dut"};
 
-    SC_HAS_PROCESS(coef_seed_bench);
-    coef_seed_bench(const sc_core::sc_module_name& name, std::vector<samples> sets, golden_fn golden)
+    SC_HAS_PROCESS(coef_partial_sum_bench);
+    coef_partial_sum_bench(const sc_core::sc_module_name& name, std::vector<samples> sets, golden_fn golden)
         : sc_module(name), sets_(std::move(sets)), golden_(std::move(golden)) {
         dut.clk(clk);
         dut.i1(in[0]); dut.i2(in[1]); dut.i3(in[2]); dut.i4(in[3]);
@@ -102,9 +102,9 @@ void PrintTo(const unit_param& p, std::ostream* os) {
     *os << (p.set == sample_set::case1 ? "case 1, " : "case 2, ") << (p.div == div3_mode::shift_add ? "shift-and-add" : "exact");
 }
 
-// Runs `body` with a bench of the seed-grouping unit for the parameter's set and divider.
+// Runs `body` with a bench of the partial-sum unit for the parameter's set and divider.
 template <typename Body>
-void with_seed_bench(const unit_param& p, std::vector<samples> sets, golden_fn golden, Body body) {
+void with_unit_bench(const unit_param& p, std::vector<samples> sets, golden_fn golden, Body body) {
     auto go = [&](auto* tag) {
         using bench_t = std::remove_pointer_t<decltype(tag)>;
         bench_t bench("tb", std::move(sets), std::move(golden));
@@ -113,16 +113,16 @@ void with_seed_bench(const unit_param& p, std::vector<samples> sets, golden_fn g
     };
     constexpr auto G = div3_grouping::partial_sum;
     if (p.set == sample_set::case1 && p.div == div3_mode::shift_add)
-        go(static_cast<coef_seed_bench<sample_set::case1, div3_mode::shift_add, G>*>(nullptr));
+        go(static_cast<coef_partial_sum_bench<sample_set::case1, div3_mode::shift_add, G>*>(nullptr));
     else if (p.set == sample_set::case1)
-        go(static_cast<coef_seed_bench<sample_set::case1, div3_mode::exact, G>*>(nullptr));
+        go(static_cast<coef_partial_sum_bench<sample_set::case1, div3_mode::exact, G>*>(nullptr));
     else if (p.div == div3_mode::shift_add)
-        go(static_cast<coef_seed_bench<sample_set::case2, div3_mode::shift_add, G>*>(nullptr));
+        go(static_cast<coef_partial_sum_bench<sample_set::case2, div3_mode::shift_add, G>*>(nullptr));
     else
-        go(static_cast<coef_seed_bench<sample_set::case2, div3_mode::exact, G>*>(nullptr));
+        go(static_cast<coef_partial_sum_bench<sample_set::case2, div3_mode::exact, G>*>(nullptr));
 }
 
-class InterpCoefSeedUnit : public ::testing::TestWithParam<unit_param> {};
+class InterpCoefPartialSumUnit : public ::testing::TestWithParam<unit_param> {};
 
 std::string param_name(const ::testing::TestParamInfo<unit_param>& info) {
     return std::string(info.param.set == sample_set::case1 ? "Case1" : "Case2") +
@@ -131,47 +131,47 @@ std::string param_name(const ::testing::TestParamInfo<unit_param>& info) {
 
 }  // namespace
 
-TEST_P(InterpCoefSeedUnit, BitExactAgainstItsGoldenModel) {
+TEST_P(InterpCoefPartialSumUnit, BitExactAgainstItsGoldenModel) {
     const auto p = GetParam();
-    with_seed_bench(p, sample_sets(400, 41), golden_of(p.set, p.div, div3_grouping::partial_sum), [](auto& bench) {
+    with_unit_bench(p, sample_sets(400, 41), golden_of(p.set, p.div, div3_grouping::partial_sum), [](auto& bench) {
         EXPECT_EQ(bench.checked(), 400u);
         EXPECT_EQ(bench.mismatches(), 0u);
         EXPECT_EQ(tb::report_log::get().count(msg::timing), 0u) << "the 20 ns clock meets the unit's phases";
     });
 }
 
-INSTANTIATE_TEST_SUITE_P(SetsAndDividers, InterpCoefSeedUnit,
+INSTANTIATE_TEST_SUITE_P(SetsAndDividers, InterpCoefPartialSumUnit,
                          ::testing::Values(unit_param{sample_set::case1, div3_mode::shift_add},
                                            unit_param{sample_set::case1, div3_mode::exact},
                                            unit_param{sample_set::case2, div3_mode::shift_add},
                                            unit_param{sample_set::case2, div3_mode::exact}),
                          param_name);
 
-// The bench tells the groupings apart: with the shift-and-add, seed - whole = 43X/128 - Y -
+// The bench tells the groupings apart: with the shift-and-add, partial - whole = 43X/128 - Y -
 // 43(X - 3Y)/128 = Y/128 per coefficient (Y the integer part: case 1 8I1 + 16I3 and 7I1 + 4I3),
 // so the whole-sum golden model fails on every set but those with I1 = I3 = 0.
-TEST(InterpCoefSeedChecks, WholeSumGoldenDoesNotMatchTheSeedGrouping) {
+TEST(InterpCoefPartialSumChecks, WholeSumGoldenDoesNotMatchThePartialSumGrouping) {
     const unit_param p{sample_set::case1, div3_mode::shift_add};
     const auto sets = sample_sets(50, 42);
     std::size_t differ = 0;
     for (const auto& s : sets) differ += (s[0] | s[2]) != 0 ? 1 : 0;
     EXPECT_EQ(differ, 48u);  // the corners {0, 0, 0, 0} and {0, hi, 0, hi}
-    with_seed_bench(p, sets, golden_of(p.set, p.div, div3_grouping::whole_sum), [&](auto& bench) {
+    with_unit_bench(p, sets, golden_of(p.set, p.div, div3_grouping::whole_sum), [&](auto& bench) {
         EXPECT_EQ(bench.checked(), 50u);
         EXPECT_EQ(bench.mismatches(), differ);
     });
 }
 
 // A flat line, every sample 1.0 (hand-worked in test_interp_golden): the real A = C = 0; the
-// seed's grouping with the shift-and-add gives case 1 A = 0.1875, C = 0.0859375 (12288 and 5632
+// partial-sum grouping with the shift-and-add gives case 1 A = 0.1875, C = 0.0859375 (12288 and 5632
 // LSB), case 2 A = -0.1875, C = -0.1171875 (-12288, -7680); with the exact divider 0 (72, 33 and
 // 45 are multiples of 3). B = 0, D = 1.0 (65536).
-TEST_P(InterpCoefSeedUnit, HandWorkedFlatLine) {
+TEST_P(InterpCoefPartialSumUnit, HandWorkedFlatLine) {
     const auto p = GetParam();
     const bool sa = p.div == div3_mode::shift_add, c1 = p.set == sample_set::case1;
     const interp::cubic_coefs want{sa ? (c1 ? 12288 : -12288) : 0, 0, sa ? (c1 ? 5632 : -7680) : 0, 65536};
     auto unused = [](const samples&) { return interp::cubic_coefs{}; };
-    with_seed_bench(p, {{256, 256, 256, 256}}, unused, [&](auto& bench) {
+    with_unit_bench(p, {{256, 256, 256, 256}}, unused, [&](auto& bench) {
         ASSERT_EQ(bench.results().size(), 1u);
         EXPECT_EQ(bench.results()[0], want);
     });

@@ -48,7 +48,7 @@ inline const std::vector<sa_term> c_int_case2{{1, 3, false}, {1, 2, false}, {3, 
 }  // namespace coef_terms
 
 template <interp::sample_set SET, interp::div3_mode DIV>
-class coef_unit_cubic_seed : public sc_core::sc_module {
+class coef_unit_cubic_partial_sum : public sc_core::sc_module {
     static constexpr unsigned WI = interp::sample_fmt.width;
     static constexpr unsigned WS = interp::sum_fmt.width;
     static constexpr unsigned WC = interp::coef_fmt.width;
@@ -93,7 +93,7 @@ public:
     // Derived from the elaborated blocks at end_of_elaboration.
     phase_checker chk_clock{"chk_clock"};
 
-    explicit coef_unit_cubic_seed(const sc_core::sc_module_name& name, const interp_delays& t = {})
+    explicit coef_unit_cubic_partial_sum(const sc_core::sc_module_name& name, const interp_delays& t = {})
         : sc_module(name),
           rg_i1("rg_i1", t.reg), rg_i2("rg_i2", t.reg), rg_i3("rg_i3", t.reg), rg_i4("rg_i4", t.reg),
           net_a_div("net_a_div", 4, case1 ? coef_terms::a_div_case1 : coef_terms::a_div_case2),
@@ -143,6 +143,6 @@ private:
 // The coefficient unit by grouping of the /3: today's whole weighted sum or the interpolation paper's partial sum.
 template <interp::sample_set SET, interp::div3_mode DIV, interp::div3_grouping G>
 using coef_unit_cubic_t = std::conditional_t<G == interp::div3_grouping::whole_sum, coef_unit_cubic<SET, DIV>,
-                                             coef_unit_cubic_seed<SET, DIV>>;
+                                             coef_unit_cubic_partial_sum<SET, DIV>>;
 
 }  // namespace shading
