@@ -30,6 +30,7 @@
 #include <systemc>
 #include <type_traits>
 
+#include "arith/pipeline_arith.h"
 #include "blocks/and_gate.h"
 #include "blocks/eq_cmp.h"
 #include "blocks/mux.h"
@@ -43,16 +44,15 @@
 #include "pipeline/horner_channel.h"
 #include "pipeline/horner_pixel_ctrl.h"
 #include "pipeline/pipe_device.h"
-#include "pipeline/pipe_eval.h"
 #include "pipeline/sample_channel.h"
 #include "pipeline/sample_ctrl.h"
 #include "specular/block_delays.h"
 
 namespace shading {
 
-template <class AGen, pipe_eval EVAL>
+template <class AGen, pipeline::evaluator EVAL>
 class shading_pipeline : public sc_core::sc_module {
-    static constexpr bool horner = EVAL == pipe_eval::horner;
+    static constexpr bool horner = EVAL == pipeline::evaluator::horner;
     static constexpr unsigned WCOS = spec::cos_fmt.width;
     static constexpr unsigned WI = interp::sample_fmt.width;
 

@@ -34,15 +34,14 @@
 #include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
-#include "pipeline/pipe_eval.h"
 #include "pipeline/sample_fsm.h"
 #include "squared/sq_count.h"
 
 namespace shading {
 
-template <pipe_eval EVAL>
+template <pipeline::evaluator EVAL>
 class shading_pipeline_fast : public sc_core::sc_module {
-    static constexpr bool horner = EVAL == pipe_eval::horner;
+    static constexpr bool horner = EVAL == pipeline::evaluator::horner;
 
 public:
     using coord_t = sc_dt::sc_uint<16>;
@@ -212,8 +211,7 @@ private:
         j.m = job_.m;
         j.deg2 = job_.deg2;
         j.s = job_s_;
-        job_.px = pipeline::interval_pixels(j, k_, dev_, horner ? pipeline::evaluator::horner : pipeline::evaluator::fd,
-                                            set_, div_);
+        job_.px = pipeline::interval_pixels(j, k_, dev_, EVAL, set_, div_);
         return pipe::job_samples(job_.m, job_.deg2);
     }
 

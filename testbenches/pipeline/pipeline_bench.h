@@ -23,7 +23,7 @@
 namespace shading {
 // The fast abstraction (pipeline/shading_pipeline_fast.h), included only where a fast bench is built
 // (pipeline_sim_fast.cpp), so the block-level runs do not recompile when it changes.
-template <pipe_eval EVAL>
+template <pipeline::evaluator EVAL>
 class shading_pipeline_fast;
 }  // namespace shading
 
@@ -243,7 +243,7 @@ void bind_geometry_source(geometry_source& src, B& b, sc_core::sc_signal<bool>& 
 // The bench: clock, pins, the pipeline, the frame buffer, the geometry source and the checker. FAST:
 // the fast pin-level abstraction (shading_pipeline_fast.h, which names the device by `dev` and
 // ignores `gen`) instead of the block-level pipeline.
-template <class AGen, pipe_eval EVAL, bool FAST = false>
+template <class AGen, evaluator EVAL, bool FAST = false>
 class pipeline_bench : public sc_core::sc_module {
 public:
     using dut_t = std::conditional_t<FAST, shading_pipeline_fast<EVAL>, shading_pipeline<AGen, EVAL>>;
@@ -276,7 +276,7 @@ public:
                    std::function<void(std::size_t, std::size_t)> progress, std::function<bool()> others_done = {})
         : sc_module(name), dut(make_dut("dut", dev, gen, c)), fb("fb", p.width, p.height),
           src("src", p, k, [this, others_done] { return dut.idle() && (!others_done || others_done()); }),
-          checker(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
+          checker(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
         bind_pipeline_inputs(dut, *this);
         dut.ready(ready);
         dut.px_valid(px_valid); dut.px_x(px_x); dut.px_y(px_y);
