@@ -117,8 +117,8 @@ private:
         }
         rising();
         const auto st = fsm_.current();
-        const bool waiting = (st == pipe::sample_fsm::low_st || st == pipe::sample_fsm::copy_st) &&
-                             fsm_.sample_bank() == pipe::sample_fsm::bank_full && !ld_e_ && !fsm_.wait_valid();
+        const bool waiting = (st == pipeline::sample_fsm::low_st || st == pipeline::sample_fsm::copy_st) &&
+                             fsm_.sample_bank() == pipeline::sample_fsm::bank_full && !ld_e_ && !fsm_.wait_valid();
         const bool finishing = horner ? h_done_ : f_rem_ != 0;
         if (waiting && !finishing) next_trigger(clk.posedge_event());
     }
@@ -198,7 +198,7 @@ private:
     // sample_ctrl's check (sample_fsm.h's job_problem), then the interval's pixels through the
     // floor's interval arithmetic (the golden pipeline's). Returns the job's samples, 0 for a dropped job.
     unsigned check_job() {
-        const std::string problem = pipe::job_problem(job_.m, job_.len, job_.deg2, fd_m_);
+        const std::string problem = pipeline::job_problem(job_.m, job_.len, job_.deg2, fd_m_);
         if (!problem.empty()) {
             std::ostringstream msg;
             msg << name() << ": job checked at " << sc_core::sc_time_stamp() << " (taken one clock before): " << problem
@@ -212,7 +212,7 @@ private:
         j.deg2 = job_.deg2;
         j.s = job_s_;
         job_.px = pipeline::interval_pixels(j, k_, dev_, EVAL, set_, div_);
-        return pipe::job_samples(job_.m, job_.deg2);
+        return pipeline::job_samples(job_.m, job_.deg2);
     }
 
     void write_px(const rgb& v) {
@@ -317,7 +317,7 @@ private:
     unsigned fd_m_;
     pipeline::frame_constants k_;
     // Sample controller.
-    pipe::sample_fsm fsm_;
+    pipeline::sample_fsm fsm_;
     bool samples_ready_ = false;
     uint64_t edges_ = 0, strobe_edge_ = 0;  // falling edges so far; the last one strobe 17 fell at
     uint64_t dev_clocks_ = 2;               // the squared-quadratic device's k + 2 for the frame's n

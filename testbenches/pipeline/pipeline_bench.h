@@ -132,7 +132,7 @@ private:
 class geometry_source : public sc_core::sc_module {
 public:
     using coord_t = sc_dt::sc_uint<16>;
-    using cos_t = pipe::cos_t;
+    using cos_t = pipeline::cos_t;
 
     sc_core::sc_in<bool> clk{"clk"}, ready{"ready"};
     sc_core::sc_out<bool> start{"start"}, load_frame{"load_frame"};
@@ -143,8 +143,8 @@ public:
     sc_core::sc_vector<sc_core::sc_out<cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_out<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
     sc_core::sc_vector<sc_core::sc_out<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
-    sc_core::sc_vector<sc_core::sc_out<pipe::kdi_t>> kdi{"kdi", 3};
-    sc_core::sc_vector<sc_core::sc_out<pipe::sample_t>> amb{"amb", 3};
+    sc_core::sc_vector<sc_core::sc_out<pipeline::kdi_t>> kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_out<pipeline::sample_t>> amb{"amb", 3};
 
     SC_HAS_PROCESS(geometry_source);
     geometry_source(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
@@ -255,14 +255,14 @@ public:
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
     sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::kdi_t>> kdi{"kdi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::kdi_t>> kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::sample_t>> amb{"amb", 3};
     sc_core::sc_signal<bool> px_valid{"px_valid"};
     sc_core::sc_signal<coord_t> px_x{"px_x"}, px_y{"px_y"};
-    sc_core::sc_signal<pipe::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
+    sc_core::sc_signal<pipeline::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
 
     dut_t dut;
     frame_buffer fb;

@@ -110,7 +110,7 @@ public:
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> ready_b{"ready_b"}, ready_f{"ready_f"}, valid_b{"valid_b"}, valid_f{"valid_f"};
     sc_core::sc_in<coord_t> x_b{"x_b"}, x_f{"x_f"}, y_b{"y_b"}, y_f{"y_f"};
-    sc_core::sc_vector<sc_core::sc_in<pipe::sample_t>> px_b{"px_b", 3}, px_f{"px_f", 3};
+    sc_core::sc_vector<sc_core::sc_in<pipeline::sample_t>> px_b{"px_b", 3}, px_f{"px_f", 3};
 
     SC_HAS_PROCESS(pin_comparator);
     explicit pin_comparator(const sc_core::sc_module_name& name) : sc_module(name) {
@@ -154,7 +154,7 @@ public:
     struct outs {
         sc_core::sc_signal<bool> ready, valid;
         sc_core::sc_signal<coord_t> x, y;
-        sc_core::sc_signal<pipe::sample_t> r, g, b;
+        sc_core::sc_signal<pipeline::sample_t> r, g, b;
     };
 
     sc_core::sc_clock clk{"clk", pipeline_period()};
@@ -163,11 +163,11 @@ public:
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
     sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::kdi_t>> kdi{"kdi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::kdi_t>> kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::sample_t>> amb{"amb", 3};
     outs ob, of;
 
     block_t blk;
