@@ -32,18 +32,9 @@
 #include "interp/coef_unit_cubic.h"
 #include "interp/coef_unit_quad.h"
 #include "interp/interp_delays.h"
+#include "pipeline/pipeline_pins.h"
 
 namespace shading {
-
-namespace pipeline {
-// The sample stage's buses, in the formats of src/floor/formats/pipeline_formats.h (the golden pipeline
-// reads the same).
-using kdi_t = sc_dt::sc_uint<kdi_fmt.width>;
-using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
-using spec_t = sc_dt::sc_uint<spec::out_fmt.width>;
-using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
-using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
-}  // namespace pipeline
 
 class sample_channel : public sc_core::sc_module {
 public:

@@ -38,55 +38,34 @@
 #include "blocks/wire.h"
 #include "formats/interp_formats.h"
 #include "formats/specular_formats.h"
+#include "formats/ua60553_formats.h"
 #include "interp/interp_delays.h"
 #include "pipeline/fd_channel.h"
 #include "pipeline/fd_pixel_ctrl.h"
 #include "pipeline/horner_channel.h"
 #include "pipeline/horner_pixel_ctrl.h"
 #include "pipeline/pipe_device.h"
+#include "pipeline/pipeline_pins.h"
 #include "pipeline/sample_channel.h"
 #include "pipeline/sample_ctrl.h"
 #include "specular/block_delays.h"
 
 namespace shading {
 
+// Pins: pipeline_pins.h.
 template <class AGen, pipeline::evaluator EVAL>
-class shading_pipeline : public sc_core::sc_module {
+class shading_pipeline : public sc_core::sc_module, public pipeline_pins {
     static constexpr bool horner = EVAL == pipeline::evaluator::horner;
     static constexpr unsigned WCOS = spec::cos_fmt.width;
     static constexpr unsigned WI = interp::sample_fmt.width;
+    static_assert(AGen::n_fmt.width == ua60553::n_fmt.width, "in_n: every device takes n on in16's width");
+    static_assert(std::is_same_v<len_t, sc_dt::sc_uint<sample_ctrl::len_bits>> &&
+                      std::is_same_v<m_t, sc_dt::sc_uint<sample_ctrl::m_bits>>,
+                  "the job registers' widths are the sample controller's");
 
 public:
-    using coord_t = sc_dt::sc_uint<16>;
-    using len_t = sc_dt::sc_uint<sample_ctrl::len_bits>;
-    using m_t = sc_dt::sc_uint<sample_ctrl::m_bits>;
-    using bit_t = sc_dt::sc_uint<1>;
-    using n_t = sc_dt::sc_uint<AGen::n_fmt.width>;
-    using cos_t = pipeline::cos_t;
-    using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
-    using sample_t = pipeline::sample_t;
     using eval_channel = std::conditional_t<horner, horner_channel, fd_channel>;
     using pixel_ctrl = std::conditional_t<horner, horner_pixel_ctrl, fd_pixel_ctrl>;
-
-    // Pins from the geometry side.
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"}, load_frame{"load_frame"};
-    sc_core::sc_out<bool> ready{"ready"};
-    sc_core::sc_in<coord_t> in_y{"in_y"}, in_x0{"in_x0"};
-    sc_core::sc_in<len_t> in_len{"in_len"};
-    sc_core::sc_in<m_t> in_m{"in_m"};
-    sc_core::sc_in<bit_t> in_deg2{"in_deg2"};
-    sc_core::sc_in<cos_t> in_nh1{"in_nh1"}, in_nh2{"in_nh2"}, in_nh3{"in_nh3"}, in_nh4{"in_nh4"};
-    sc_core::sc_in<cos_t> in_nl1{"in_nl1"}, in_nl2{"in_nl2"}, in_nl3{"in_nl3"}, in_nl4{"in_nl4"};
-    // Frame constants.
-    sc_core::sc_in<n_t> in_n{"in_n"};
-    sc_core::sc_in<ksi_t> in_ksi_r{"in_ksi_r"}, in_ksi_g{"in_ksi_g"}, in_ksi_b{"in_ksi_b"};
-    sc_core::sc_in<pipeline::kdi_t> in_kdi_r{"in_kdi_r"}, in_kdi_g{"in_kdi_g"}, in_kdi_b{"in_kdi_b"};
-    sc_core::sc_in<sample_t> in_amb_r{"in_amb_r"}, in_amb_g{"in_amb_g"}, in_amb_b{"in_amb_b"};
-    // Pixel stream.
-    sc_core::sc_out<bool> px_valid{"px_valid"};
-    sc_core::sc_out<coord_t> px_x{"px_x"}, px_y{"px_y"};
-    sc_core::sc_out<sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
 
     // Nets.
     sc_core::sc_signal<bool> ld_job{"ld_job"}, ld_d{"ld_d"}, ld_k{"ld_k"}, samples_ready{"samples_ready"}, ld_e{"ld_e"};

@@ -34,46 +34,18 @@
 #include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
+#include "pipeline/pipeline_pins.h"
 #include "pipeline/sample_fsm.h"
 #include "squared/sq_count.h"
 
 namespace shading {
 
+// shading_pipeline's pins (pipeline_pins.h).
 template <pipeline::evaluator EVAL>
-class shading_pipeline_fast : public sc_core::sc_module {
+class shading_pipeline_fast : public sc_core::sc_module, public pipeline_pins {
     static constexpr bool horner = EVAL == pipeline::evaluator::horner;
 
 public:
-    using coord_t = sc_dt::sc_uint<16>;
-    using len_t = sc_dt::sc_uint<16>;
-    using m_t = sc_dt::sc_uint<4>;
-    using bit_t = sc_dt::sc_uint<1>;
-    using n_t = sc_dt::sc_uint<ua60553::n_fmt.width>;
-    using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
-    using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
-    using kdi_t = sc_dt::sc_uint<pipeline::kdi_fmt.width>;
-    using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
-
-    // Pins from the geometry side (shading_pipeline.h).
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"}, load_frame{"load_frame"};
-    sc_core::sc_out<bool> ready{"ready"};
-    sc_core::sc_in<coord_t> in_y{"in_y"}, in_x0{"in_x0"};
-    sc_core::sc_in<len_t> in_len{"in_len"};
-    sc_core::sc_in<m_t> in_m{"in_m"};
-    sc_core::sc_in<bit_t> in_deg2{"in_deg2"};
-    sc_core::sc_in<cos_t> in_nh1{"in_nh1"}, in_nh2{"in_nh2"}, in_nh3{"in_nh3"}, in_nh4{"in_nh4"};
-    sc_core::sc_in<cos_t> in_nl1{"in_nl1"}, in_nl2{"in_nl2"}, in_nl3{"in_nl3"}, in_nl4{"in_nl4"};
-    // Frame constants.
-    sc_core::sc_in<n_t> in_n{"in_n"};
-    sc_core::sc_in<ksi_t> in_ksi_r{"in_ksi_r"}, in_ksi_g{"in_ksi_g"}, in_ksi_b{"in_ksi_b"};
-    sc_core::sc_in<kdi_t> in_kdi_r{"in_kdi_r"}, in_kdi_g{"in_kdi_g"}, in_kdi_b{"in_kdi_b"};
-    sc_core::sc_in<sample_t> in_amb_r{"in_amb_r"}, in_amb_g{"in_amb_g"}, in_amb_b{"in_amb_b"};
-    // Pixel stream.
-    sc_core::sc_out<bool> px_valid{"px_valid"};
-    sc_core::sc_out<coord_t> px_x{"px_x"}, px_y{"px_y"};
-    sc_core::sc_out<sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
-
     SC_HAS_PROCESS(shading_pipeline_fast);
     // fd_m as shading_pipeline's: the forward differences' fixed interval length 2^fd_m, 0 for any m
     // per interval; ignored for Horner.
