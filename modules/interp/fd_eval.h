@@ -23,6 +23,7 @@
 #include "core/timing_graph.h"
 #include "formats/interp_formats.h"
 #include "interp/fd_ctrl.h"
+#include "interp/fd_pins.h"
 #include "interp/fd_setup.h"
 #include "interp/interp_delays.h"
 #include "monitors/phase_checker.h"
@@ -60,24 +61,17 @@ void wire_fd_recurrence(E& e) {
     e.out_align.x(e.p_value); e.out_align.y(e.i_px);
 }
 
+// Pins: fd_pins.h (fd_eval_pins).
 template <unsigned M>
-class fd_eval : public sc_core::sc_module {
+class fd_eval : public sc_core::sc_module, public fd_eval_pins<M> {
     static_assert(M >= interp::m_min && M <= interp::m_max, "interval of 2^M pixels, M in 2..6");
     static constexpr unsigned WC = interp::coef_fmt.width;  // 32
     static constexpr unsigned WF = interp::fd_fmt.width;    // 56
     static constexpr int S = fd_setup::align;  // 18: Q.16 -> Q.34
-    using coef_t = sc_dt::sc_uint<WC>;
     using fd_t = sc_dt::sc_uint<WF>;
 
 public:
-    using len_t = typename fd_ctrl<M>::len_t;
-
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"};
-    sc_core::sc_in<len_t> len{"len"};
-    sc_core::sc_in<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
-    sc_core::sc_out<coef_t> i_px{"i_px"};
-    sc_core::sc_out<bool> valid{"valid"}, last{"last"};
+    using len_t = typename fd_eval_pins<M>::len_t;
 
     // Nets.
     sc_core::sc_signal<fd_t> init_p{"init_p"}, init_d1{"init_d1"}, init_d2{"init_d2"}, init_d3{"init_d3"};
@@ -113,15 +107,15 @@ public:
           mx_d3("mx_d3", t.mux), rg_p("rg_p", t.reg), rg_d1("rg_d1", t.reg), rg_d2("rg_d2", t.reg),
           rg_d3("rg_d3", t.reg), add_p("add_p", overflow_mode::wrap, 0, 0, t.adder),
           add_d1("add_d1", overflow_mode::wrap, 0, 0, t.adder), add_d2("add_d2", overflow_mode::wrap, 0, 0, t.adder) {
-        setup_p.x(d); setup_p.y(init_p);
-        setup_d1.in[0](a); setup_d1.in[1](b); setup_d1.in[2](c); setup_d1.y(init_d1);
-        setup_d2.in[0](a); setup_d2.in[1](b); setup_d2.y(init_d2);
-        setup_d3.in[0](a); setup_d3.y(init_d3);
+        setup_p.x(this->d); setup_p.y(init_p);
+        setup_d1.in[0](this->a); setup_d1.in[1](this->b); setup_d1.in[2](this->c); setup_d1.y(init_d1);
+        setup_d2.in[0](this->a); setup_d2.in[1](this->b); setup_d2.y(init_d2);
+        setup_d3.in[0](this->a); setup_d3.y(init_d3);
 
         wire_fd_recurrence(*this);
-        ctrl.clk(clk); ctrl.start(start); ctrl.len(len);
-        ctrl.fd_sel(fd_sel); ctrl.pixel(pixel); ctrl.valid(valid); ctrl.last(last);
-        chk_clock.clk(clk);
+        ctrl.clk(this->clk); ctrl.start(this->start); ctrl.len(this->len);
+        ctrl.fd_sel(fd_sel); ctrl.pixel(pixel); ctrl.valid(this->valid); ctrl.last(this->last);
+        chk_clock.clk(this->clk);
     }
 
     void end_of_elaboration() override { chk_clock.derive(timing_graph(*this), {&ctrl}); }

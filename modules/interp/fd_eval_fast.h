@@ -16,29 +16,24 @@
 #include "arith/interp_arith.h"
 #include "formats/interp_formats.h"
 #include "interp/fd_count.h"
+#include "interp/fd_pins.h"
 
 namespace shading {
 
+// fd_eval<M>'s pins (fd_pins.h).
 template <unsigned M>
-class fd_eval_fast : public sc_core::sc_module {
+class fd_eval_fast : public sc_core::sc_module, public fd_eval_pins<M> {
     static_assert(M >= interp::m_min && M <= interp::m_max, "interval of 2^M pixels, M in 2..6");
     static constexpr unsigned n_pixels = 1u << M;
     using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
 
 public:
-    using len_t = sc_dt::sc_uint<interp::len_width(M)>;  // fd_ctrl<M>::len_t
-
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"};
-    sc_core::sc_in<len_t> len{"len"};
-    sc_core::sc_in<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
-    sc_core::sc_out<coef_t> i_px{"i_px"};
-    sc_core::sc_out<bool> valid{"valid"}, last{"last"};
+    using len_t = typename fd_eval_pins<M>::len_t;
 
     SC_HAS_PROCESS(fd_eval_fast);
     explicit fd_eval_fast(const sc_core::sc_module_name& name) : sc_module(name) {
         SC_METHOD(on_edge);
-        sensitive << clk;
+        sensitive << this->clk;
         dont_initialize();
     }
 
@@ -48,35 +43,35 @@ private:
     void on_edge() {
         if (woken_by_start_) {
             woken_by_start_ = false;
-            if (clk.posedge()) {  // start rose with the clock in the same delta: this edge samples it
+            if (this->clk.posedge()) {  // start rose with the clock in the same delta: this edge samples it
                 rising();
                 return;
             }
-            next_trigger(clk.posedge_event());
+            next_trigger(this->clk.posedge_event());
             return;
         }
-        if (clk.read()) rising();
+        if (this->clk.read()) rising();
         else falling();
     }
 
     void rising() {
-        sel_ = count_.rising(start.read(), [this] {
-            return interp::checked_len(name(), static_cast<unsigned>(len.read().to_uint()), n_pixels);
+        sel_ = count_.rising(this->start.read(), [this] {
+            return interp::checked_len(name(), static_cast<unsigned>(this->len.read().to_uint()), n_pixels);
         });
-        valid.write(count_.valid());
-        last.write(count_.last());
+        this->valid.write(count_.valid());
+        this->last.write(count_.last());
         if (sel_ == select::hold) {
-            if (start.read()) next_trigger(clk.posedge_event());  // nothing latches at the falling edge
+            if (this->start.read()) next_trigger(this->clk.posedge_event());  // nothing latches at the falling edge
             else {
                 woken_by_start_ = true;
-                next_trigger(start.posedge_event());
+                next_trigger(this->start.posedge_event());
             }
         }
     }
 
     void falling() {
         if (sel_ == select::load) {
-            const interp::cubic_coefs k{code(a), code(b), code(c), code(d)};
+            const interp::cubic_coefs k{code(this->a), code(this->b), code(this->c), code(this->d)};
             px_ = interp::golden_fd(k, M, count_.length());
             k_ = 0;
         } else if (sel_ == select::step) {
@@ -84,7 +79,7 @@ private:
         } else {
             return;
         }
-        i_px.write(coef_t(px_[k_]));
+        this->i_px.write(coef_t(px_[k_]));
     }
 
     static int64_t code(const sc_core::sc_in<coef_t>& p) {

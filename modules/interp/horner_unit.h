@@ -21,6 +21,7 @@
 #include "core/timing_graph.h"
 #include "formats/interp_formats.h"
 #include "interp/horner_ctrl.h"
+#include "interp/horner_pins.h"
 #include "interp/interp_delays.h"
 #include "monitors/phase_checker.h"
 
@@ -32,23 +33,12 @@ using mul_block = mul<interp::coef_fmt.width, interp::t_fmt.width, interp::coef_
                       interp::horner_mul_drop, true, false>;
 }  // namespace horner_detail
 
-class horner_unit : public sc_core::sc_module {
+// Pins and the RG net rg_value: horner_pins.h.
+class horner_unit : public sc_core::sc_module, public horner_unit_pins {
     static constexpr unsigned WC = interp::coef_fmt.width;  // 32
-    static constexpr unsigned WT = interp::t_fmt.width;     // 9
-    using coef_t = sc_dt::sc_uint<WC>;
-    using t_t = sc_dt::sc_uint<WT>;
 
 public:
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"};
-    sc_core::sc_in<bool> deg2{"deg2"};
-    sc_core::sc_in<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
-    sc_core::sc_in<t_t> t{"t"};
-    sc_core::sc_out<coef_t> i_t{"i_t"};
-    sc_core::sc_out<bool> done{"done"}, busy{"busy"};
-
-    // Nets, by what they carry.
-    sc_core::sc_signal<coef_t> rg_value{"rg_value"};        // RG: the partial Horner sum
+    // Nets, by what they carry (RG's output, rg_value, is in horner_pins.h).
     sc_core::sc_signal<coef_t> mx1_operand{"mx1_operand"};  // A or RG
     sc_core::sc_signal<coef_t> mul_product{"mul_product"};  // MX1 * t
     sc_core::sc_signal<coef_t> mx2_operand{"mx2_operand"};  // 0, MUL, B, C or D

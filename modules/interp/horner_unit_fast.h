@@ -17,27 +17,14 @@
 #include "arith/interp_arith.h"
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
+#include "interp/horner_pins.h"
 #include "interp/horner_steps.h"
 
 namespace shading {
 
-class horner_unit_fast : public sc_core::sc_module {
-    static constexpr unsigned WC = interp::coef_fmt.width;  // 32
-    static constexpr unsigned WT = interp::t_fmt.width;     // 9
-    using coef_t = sc_dt::sc_uint<WC>;
-    using t_t = sc_dt::sc_uint<WT>;
-
+// horner_unit's pins and RG net (horner_pins.h).
+class horner_unit_fast : public sc_core::sc_module, public horner_unit_pins {
 public:
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"};
-    sc_core::sc_in<bool> deg2{"deg2"};
-    sc_core::sc_in<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
-    sc_core::sc_in<t_t> t{"t"};
-    sc_core::sc_out<coef_t> i_t{"i_t"};
-    sc_core::sc_out<bool> done{"done"}, busy{"busy"};
-
-    sc_core::sc_signal<coef_t> rg_value{"rg_value"};  // RG: the partial Horner sum (as in horner_unit)
-
     SC_HAS_PROCESS(horner_unit_fast);
     explicit horner_unit_fast(const sc_core::sc_module_name& name) : sc_module(name) {
         // Statically on the falling edges (RG latches at each one while stepping, the usual case);

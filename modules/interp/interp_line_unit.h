@@ -33,27 +33,20 @@
 #include "formats/interp_formats.h"
 #include "interp/coef_unit_cubic_partial_sum.h"
 #include "interp/fd_eval.h"
+#include "interp/fd_pins.h"
 #include "interp/interp_delays.h"
 
 namespace shading {
 
+// Pins: fd_pins.h (interp_line_pins: clk, start, len, I1..I4 in; i_px, valid, last, ready out).
 template <unsigned M, interp::sample_set SET, interp::div3_mode DIV,
           interp::div3_grouping G = interp::div3_grouping::whole_sum>
-class interp_line_unit : public sc_core::sc_module {
-    using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
+class interp_line_unit : public sc_core::sc_module, public interp_line_pins<M> {
     using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
 
 public:
-    using len_t = typename fd_eval<M>::len_t;
+    using len_t = typename interp_line_pins<M>::len_t;
     static constexpr unsigned n_pixels = 1u << M;
-
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"};                       // interval pending
-    sc_core::sc_in<len_t> len{"len"};                          // pixels of this interval, 1..N
-    sc_core::sc_in<sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};  // Q8.8 samples
-    sc_core::sc_out<coef_t> i_px{"i_px"};                      // Q16.16 pixel
-    sc_core::sc_out<bool> valid{"valid"}, last{"last"};        // pixel on i_px; last of its interval
-    sc_core::sc_out<bool> ready{"ready"};                      // start is taken at the next rising edge
 
     // Nets between the units: the coefficients, Q16.16 signed.
     sc_core::sc_signal<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
@@ -64,13 +57,13 @@ public:
 
     explicit interp_line_unit(const sc_core::sc_module_name& name, const interp_delays& t = {})
         : sc_module(name), coef("coef", t), fd("fd", t), rdy("rdy", t.gate) {
-        coef.clk(clk);
-        coef.i1(i1); coef.i2(i2); coef.i3(i3); coef.i4(i4);
+        coef.clk(this->clk);
+        coef.i1(this->i1); coef.i2(this->i2); coef.i3(this->i3); coef.i4(this->i4);
         coef.a(a); coef.b(b); coef.c(c); coef.d(d);
-        fd.clk(clk); fd.start(start); fd.len(len);
+        fd.clk(this->clk); fd.start(this->start); fd.len(this->len);
         fd.a(a); fd.b(b); fd.c(c); fd.d(d);
-        fd.i_px(i_px); fd.valid(valid); fd.last(last);
-        rdy.valid(valid); rdy.last(last); rdy.ready(ready);
+        fd.i_px(this->i_px); fd.valid(this->valid); fd.last(this->last);
+        rdy.valid(this->valid); rdy.last(this->last); rdy.ready(this->ready);
     }
 
     // The path that crosses the units: launched by the falling edge that latches the samples

@@ -18,32 +18,25 @@
 #include "arith/interp_arith.h"
 #include "formats/interp_formats.h"
 #include "interp/fd_count.h"
+#include "interp/fd_pins.h"
 
 namespace shading {
 
+// interp_line_unit's pins (fd_pins.h).
 template <unsigned M, interp::sample_set SET, interp::div3_mode DIV,
           interp::div3_grouping G = interp::div3_grouping::whole_sum>
-class interp_line_unit_fast : public sc_core::sc_module {
+class interp_line_unit_fast : public sc_core::sc_module, public interp_line_pins<M> {
     static_assert(M >= interp::m_min && M <= interp::m_max, "interval of 2^M pixels, M in 2..6");
-    using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
     using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
 
 public:
-    using len_t = sc_dt::sc_uint<interp::len_width(M)>;  // fd_eval<M>::len_t
+    using len_t = typename interp_line_pins<M>::len_t;
     static constexpr unsigned n_pixels = 1u << M;
-
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"};
-    sc_core::sc_in<len_t> len{"len"};
-    sc_core::sc_in<sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};
-    sc_core::sc_out<coef_t> i_px{"i_px"};
-    sc_core::sc_out<bool> valid{"valid"}, last{"last"};
-    sc_core::sc_out<bool> ready{"ready"};
 
     SC_HAS_PROCESS(interp_line_unit_fast);
     explicit interp_line_unit_fast(const sc_core::sc_module_name& name) : sc_module(name) {
         SC_METHOD(on_edge);
-        sensitive << clk;
+        sensitive << this->clk;
         dont_initialize();
         // ready starts 0 and rises at the first rising edge, as the block unit's gate settles only
         // after its first evaluation (at the first edge it reads 0 there too).
@@ -53,17 +46,17 @@ private:
     using select = interp::fd_count::select;
 
     void on_edge() {
-        if (clk.read()) rising();
+        if (this->clk.read()) rising();
         else falling();
     }
 
     void rising() {
-        sel_ = count_.rising(start.read(), [this] {
-            return interp::checked_len(name(), static_cast<unsigned>(len.read().to_uint()), n_pixels);
+        sel_ = count_.rising(this->start.read(), [this] {
+            return interp::checked_len(name(), static_cast<unsigned>(this->len.read().to_uint()), n_pixels);
         });
-        valid.write(count_.valid());
-        last.write(count_.last());
-        ready.write(count_.ready());
+        this->valid.write(count_.valid());
+        this->last.write(count_.last());
+        this->ready.write(count_.ready());
     }
 
     void falling() {
@@ -71,13 +64,13 @@ private:
         if (sel_ == select::load) {
             px_ = interp::golden_fd(k_, M, count_.length());
             at_ = 0;
-            i_px.write(coef_t(px_[0]));
+            this->i_px.write(coef_t(px_[0]));
         } else if (sel_ == select::step) {
-            i_px.write(coef_t(px_[++at_]));
+            this->i_px.write(coef_t(px_[++at_]));
         }
         // The coefficient unit's sample registers (every falling edge).
-        const std::array<uint64_t, 4> s{i1.read().to_uint64(), i2.read().to_uint64(), i3.read().to_uint64(),
-                                         i4.read().to_uint64()};
+        const std::array<uint64_t, 4> s{this->i1.read().to_uint64(), this->i2.read().to_uint64(),
+                                         this->i3.read().to_uint64(), this->i4.read().to_uint64()};
         if (!latched_ || s != held_) {
             held_ = s;
             latched_ = true;

@@ -30,7 +30,7 @@ public:
     using addr_t = buffer::addr_t;
     using len_t = fd_channel::len_t;
     using m_t = fd_channel::m_t;
-    using sample_t = pipe::sample_t;
+    using sample_t = pipeline::sample_t;
 
     sc_core::sc_in<bool> clk{"clk"}, ld_lat{"ld_lat"};
     sc_core::sc_vector<sc_core::sc_in<sample_t>> in_lat{"in_lat", 9};
@@ -43,14 +43,14 @@ public:
 
     // Nets.
     sc_core::sc_vector<sc_core::sc_signal<sample_t>> lat{"lat", 9};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::coef_t>> col_a{"col_a", 3}, col_b{"col_b", 3}, col_c{"col_c", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::coef_t>> col_a{"col_a", 3}, col_b{"col_b", 3}, col_c{"col_c", 3};
     sc_core::sc_vector<sc_core::sc_signal<sample_t>> col_px{"col_px", 3}, col_rd{"col_rd", 3};
     sc_core::sc_vector<sc_core::sc_signal<bool>> col_valid_n{"col_valid_n", 2}, col_last_n{"col_last_n", 2};
-    sc_core::sc_signal<pipe::coef_t> row_a{"row_a"}, row_b{"row_b"}, row_c{"row_c"}, zero_word{"zero_word"};
+    sc_core::sc_signal<pipeline::coef_t> row_a{"row_a"}, row_b{"row_b"}, row_c{"row_c"}, zero_word{"zero_word"};
     sc_core::sc_signal<fd_channel::sel_t> quad_sel{"quad_sel"};
 
     sc_core::sc_vector<reg<WI>> rg_lat;
-    constant<pipe::coef_t> k_zero{"k_zero", pipe::coef_t(0)};
+    constant<pipeline::coef_t> k_zero{"k_zero", pipeline::coef_t(0)};
     constant<fd_channel::sel_t> k_quad{"k_quad", fd_channel::sel_t(1)};  // fd_channel: 1 selects the quadratic
     sc_core::sc_vector<coef_unit_quad> cq_col;
     sc_core::sc_vector<fd_channel> fd_col;

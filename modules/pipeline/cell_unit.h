@@ -25,7 +25,7 @@ class cell_unit : public sc_core::sc_module {
 public:
     using coord_t = cell_ctrl::coord_t;
     using m_t = cell_ctrl::m_t;
-    using sample_t = pipe::sample_t;
+    using sample_t = pipeline::sample_t;
     using lattice_pins = sc_core::sc_vector<sc_core::sc_in<sample_t>>;
 
     sc_core::sc_in<bool> clk{"clk"}, start{"start"};

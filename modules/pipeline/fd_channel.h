@@ -34,13 +34,13 @@ public:
     sc_core::sc_in<sel_t> deg_sel{"deg_sel"};
     sc_core::sc_in<len_t> len{"len"};
     sc_core::sc_in<m_t> m{"m"};  // read by fd_eval_var only (fd_eval<M> is built for its M)
-    sc_core::sc_in<pipe::coef_t> ca{"ca"}, cb{"cb"}, cc{"cc"}, cd{"cd"}, qa{"qa"}, qb{"qb"}, qc{"qc"};
-    sc_core::sc_out<pipe::sample_t> px{"px"};
+    sc_core::sc_in<pipeline::coef_t> ca{"ca"}, cb{"cb"}, cc{"cc"}, cd{"cd"}, qa{"qa"}, qb{"qb"}, qc{"qc"};
+    sc_core::sc_out<pipeline::sample_t> px{"px"};
     sc_core::sc_out<bool> valid{"valid"}, last{"last"};
 
-    sc_core::sc_signal<pipe::coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"}, i_px{"i_px"}, zero_word{"zero_word"};
+    sc_core::sc_signal<pipeline::coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"}, i_px{"i_px"}, zero_word{"zero_word"};
 
-    constant<pipe::coef_t> k_zero{"k_zero", pipe::coef_t(0)};
+    constant<pipeline::coef_t> k_zero{"k_zero", pipeline::coef_t(0)};
     mux<interp::coef_fmt.width, 2> mx_a, mx_b, mx_c, mx_d;
     std::unique_ptr<sc_core::sc_module> fd;        // fd_eval<M> or fd_eval_var<m_min, m_max>
     std::unique_ptr<sc_core::sc_module> len_wires;  // the M + 1 low wires of len (shifter, wiring)

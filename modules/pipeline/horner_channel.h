@@ -24,11 +24,11 @@ public:
     sc_core::sc_in<bool> clk{"clk"}, start{"start"}, deg2{"deg2"};
     sc_core::sc_in<sel_t> deg_sel{"deg_sel"};  // deg2 as the multiplexers' select code
     sc_core::sc_in<t_t> t{"t"};
-    sc_core::sc_in<pipe::coef_t> ca{"ca"}, cb{"cb"}, cc{"cc"}, cd{"cd"}, qa{"qa"}, qb{"qb"}, qc{"qc"};
-    sc_core::sc_out<pipe::sample_t> px{"px"};
+    sc_core::sc_in<pipeline::coef_t> ca{"ca"}, cb{"cb"}, cc{"cc"}, cd{"cd"}, qa{"qa"}, qb{"qb"}, qc{"qc"};
+    sc_core::sc_out<pipeline::sample_t> px{"px"};
     sc_core::sc_out<bool> done{"done"}, busy{"busy"};
 
-    sc_core::sc_signal<pipe::coef_t> a{"a"}, b{"b"}, c{"c"}, i_t{"i_t"};
+    sc_core::sc_signal<pipeline::coef_t> a{"a"}, b{"b"}, c{"c"}, i_t{"i_t"};
 
     mux<interp::coef_fmt.width, 2> mx_a, mx_b, mx_c;
     horner_unit horner;

@@ -32,50 +32,36 @@
 #include "interp/coef_unit_cubic.h"
 #include "interp/coef_unit_quad.h"
 #include "interp/interp_delays.h"
+#include "pipeline/pipeline_pins.h"
 
 namespace shading {
-
-namespace pipe {
-// Bus formats of the sample stage: src/floor/formats/pipeline_formats.h (the golden pipeline reads the same).
-using pipeline::kdi_fmt;
-using pipeline::diffuse_fmt;
-using pipeline::diffuse_drop;
-using pipeline::ambient_fmt;
-using pipeline::colour_fmt;
-using pipeline::ad_fmt;
-using kdi_t = sc_dt::sc_uint<kdi_fmt.width>;
-using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
-using spec_t = sc_dt::sc_uint<spec::out_fmt.width>;
-using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
-using coef_t = sc_dt::sc_uint<interp::coef_fmt.width>;
-}  // namespace pipe
 
 class sample_channel : public sc_core::sc_module {
 public:
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> ld_i1{"ld_i1"}, ld_i2{"ld_i2"}, ld_i3{"ld_i3"}, ld_i4{"ld_i4"}, ld_e{"ld_e"};
-    sc_core::sc_in<pipe::kdi_t> kdi{"kdi"};              // frame constant k_d * I_l
-    sc_core::sc_in<pipe::sample_t> ambient{"ambient"};   // frame constant 255 * ambient, Q8.8
-    sc_core::sc_in<pipe::cos_t> cos_nl{"cos_nl"};        // this sample's N.L
-    sc_core::sc_in<pipe::spec_t> specular{"specular"};   // the device's out25 / out26 / out27
+    sc_core::sc_in<pipeline::kdi_t> kdi{"kdi"};              // frame constant k_d * I_l
+    sc_core::sc_in<pipeline::sample_t> ambient{"ambient"};   // frame constant 255 * ambient, Q8.8
+    sc_core::sc_in<pipeline::cos_t> cos_nl{"cos_nl"};        // this sample's N.L
+    sc_core::sc_in<pipeline::spec_t> specular{"specular"};   // the device's out25 / out26 / out27
     sc_core::sc_in<sc_dt::sc_uint<1>> carry_sel{"carry_sel"};  // 1: the bus carries the last sample
     sc_core::sc_in<bool> ld_last{"ld_last"};
-    sc_core::sc_out<pipe::coef_t> ca{"ca"}, cb{"cb"}, cc{"cc"}, cd{"cd"};  // cubic A..D, Q16.16
-    sc_core::sc_out<pipe::coef_t> qa{"qa"}, qb{"qb"}, qc{"qc"};            // quadratic a..c
+    sc_core::sc_out<pipeline::coef_t> ca{"ca"}, cb{"cb"}, cc{"cc"}, cd{"cd"};  // cubic A..D, Q16.16
+    sc_core::sc_out<pipeline::coef_t> qa{"qa"}, qb{"qb"}, qc{"qc"};            // quadratic a..c
 
     // Nets.
-    sc_core::sc_signal<pipe::spec_t> mul_diffuse_p{"mul_diffuse_p"};
-    sc_core::sc_signal<sc_dt::sc_uint<pipe::ad_fmt.width>> add_ambient_s{"add_ambient_s"};
-    sc_core::sc_signal<pipe::sample_t> colour{"colour"};
-    sc_core::sc_signal<pipe::sample_t> bus{"bus"}, last{"last"};  // the colour bus, the last sample
-    sc_core::sc_signal<pipe::sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};  // sample registers
-    sc_core::sc_signal<pipe::sample_t> e1{"e1"}, e2{"e2"}, e3{"e3"}, e4{"e4"};  // interval registers
+    sc_core::sc_signal<pipeline::spec_t> mul_diffuse_p{"mul_diffuse_p"};
+    sc_core::sc_signal<sc_dt::sc_uint<pipeline::ad_fmt.width>> add_ambient_s{"add_ambient_s"};
+    sc_core::sc_signal<pipeline::sample_t> colour{"colour"};
+    sc_core::sc_signal<pipeline::sample_t> bus{"bus"}, last{"last"};  // the colour bus, the last sample
+    sc_core::sc_signal<pipeline::sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};  // sample registers
+    sc_core::sc_signal<pipeline::sample_t> e1{"e1"}, e2{"e2"}, e3{"e3"}, e4{"e4"};  // interval registers
     sc_core::sc_signal<bool> carry0{"carry0"};
 
     // Blocks.
-    mul<pipe::kdi_fmt.width, spec::cos_fmt.width, pipe::diffuse_fmt.width, pipe::diffuse_drop> mul_diffuse;
-    adder<pipe::ambient_fmt.width, pipe::diffuse_fmt.width, pipe::ad_fmt.width> add_ambient;
-    adder<pipe::ad_fmt.width, spec::out_fmt.width, pipe::colour_fmt.width> add_colour;  // saturating
+    mul<pipeline::kdi_fmt.width, spec::cos_fmt.width, pipeline::diffuse_fmt.width, pipeline::diffuse_drop> mul_diffuse;
+    adder<pipeline::ambient_fmt.width, pipeline::diffuse_fmt.width, pipeline::ad_fmt.width> add_ambient;
+    adder<pipeline::ad_fmt.width, spec::out_fmt.width, pipeline::colour_fmt.width> add_colour;  // saturating
     constant<bool> k_carry0{"k_carry0", false};
     mux<interp::sample_fmt.width, 2> mx_carry;
     reg<interp::sample_fmt.width> rg_last;
@@ -87,7 +73,7 @@ public:
                    const interp_delays& t = {})
         : sc_module(name), mul_diffuse("mul_diffuse", t.multiplier),
           add_ambient("add_ambient", overflow_mode::wrap, 0, 0, t.adder),
-          add_colour("add_colour", overflow_mode::saturate, 0, static_cast<int64_t>(pipe::colour_fmt.mask()), t.adder),
+          add_colour("add_colour", overflow_mode::saturate, 0, static_cast<int64_t>(pipeline::colour_fmt.mask()), t.adder),
           mx_carry("mx_carry", t.mux), rg_last("rg_last", t.reg),
           rg_i1("rg_i1", t.reg), rg_i2("rg_i2", t.reg), rg_i3("rg_i3", t.reg), rg_i4("rg_i4", t.reg),
           rg_e1("rg_e1", t.reg), rg_e2("rg_e2", t.reg), rg_e3("rg_e3", t.reg), rg_e4("rg_e4", t.reg),

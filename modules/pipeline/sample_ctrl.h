@@ -131,7 +131,7 @@ private:
     unsigned check_job() const {
         const unsigned mm = m.read().to_uint(), n = len.read().to_uint();
         const bool d2 = deg2.read() == 1;
-        const std::string problem = pipe::job_problem(mm, n, d2, fd_m_);
+        const std::string problem = pipeline::job_problem(mm, n, d2, fd_m_);
         if (!problem.empty()) {
             std::ostringstream msg;
             msg << name() << ": job checked at " << sc_core::sc_time_stamp() << " (taken one clock before): " << problem
@@ -139,11 +139,11 @@ private:
             SC_REPORT_WARNING(msg::input, msg.str().c_str());
             return 0;
         }
-        return pipe::job_samples(mm, d2);
+        return pipeline::job_samples(mm, d2);
     }
 
     unsigned fd_m_;
-    pipe::sample_fsm fsm_;
+    pipeline::sample_fsm fsm_;
 };
 
 }  // namespace shading

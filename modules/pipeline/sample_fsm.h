@@ -18,7 +18,7 @@
 
 #include "formats/interp_formats.h"
 
-namespace shading::pipe {
+namespace shading::pipeline {
 
 // Why a job is refused (empty: it is valid): m neither 0 nor m_min..m_max, len 0 or above 2^m, an
 // exact pixel marked quadratic, or another m than the forward-difference evaluator is built for.
@@ -198,4 +198,4 @@ private:
     std::size_t jobs_ = 0, dropped_ = 0, samples_ = 0, carried_ = 0;
 };
 
-}  // namespace shading::pipe
+}  // namespace shading::pipeline

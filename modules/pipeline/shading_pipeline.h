@@ -30,6 +30,7 @@
 #include <systemc>
 #include <type_traits>
 
+#include "arith/pipeline_arith.h"
 #include "blocks/and_gate.h"
 #include "blocks/eq_cmp.h"
 #include "blocks/mux.h"
@@ -37,56 +38,34 @@
 #include "blocks/wire.h"
 #include "formats/interp_formats.h"
 #include "formats/specular_formats.h"
+#include "formats/ua60553_formats.h"
 #include "interp/interp_delays.h"
 #include "pipeline/fd_channel.h"
 #include "pipeline/fd_pixel_ctrl.h"
 #include "pipeline/horner_channel.h"
 #include "pipeline/horner_pixel_ctrl.h"
 #include "pipeline/pipe_device.h"
-#include "pipeline/pipe_eval.h"
+#include "pipeline/pipeline_pins.h"
 #include "pipeline/sample_channel.h"
 #include "pipeline/sample_ctrl.h"
 #include "specular/block_delays.h"
 
 namespace shading {
 
-template <class AGen, pipe_eval EVAL>
-class shading_pipeline : public sc_core::sc_module {
-    static constexpr bool horner = EVAL == pipe_eval::horner;
+// Pins: pipeline_pins.h.
+template <class AGen, pipeline::evaluator EVAL>
+class shading_pipeline : public sc_core::sc_module, public pipeline_pins {
+    static constexpr bool horner = EVAL == pipeline::evaluator::horner;
     static constexpr unsigned WCOS = spec::cos_fmt.width;
     static constexpr unsigned WI = interp::sample_fmt.width;
+    static_assert(AGen::n_fmt.width == ua60553::n_fmt.width, "in_n: every device takes n on in16's width");
+    static_assert(std::is_same_v<len_t, sc_dt::sc_uint<sample_ctrl::len_bits>> &&
+                      std::is_same_v<m_t, sc_dt::sc_uint<sample_ctrl::m_bits>>,
+                  "the job registers' widths are the sample controller's");
 
 public:
-    using coord_t = sc_dt::sc_uint<16>;
-    using len_t = sc_dt::sc_uint<sample_ctrl::len_bits>;
-    using m_t = sc_dt::sc_uint<sample_ctrl::m_bits>;
-    using bit_t = sc_dt::sc_uint<1>;
-    using n_t = sc_dt::sc_uint<AGen::n_fmt.width>;
-    using cos_t = pipe::cos_t;
-    using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
-    using sample_t = pipe::sample_t;
     using eval_channel = std::conditional_t<horner, horner_channel, fd_channel>;
     using pixel_ctrl = std::conditional_t<horner, horner_pixel_ctrl, fd_pixel_ctrl>;
-
-    // Pins from the geometry side.
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"}, load_frame{"load_frame"};
-    sc_core::sc_out<bool> ready{"ready"};
-    sc_core::sc_in<coord_t> in_y{"in_y"}, in_x0{"in_x0"};
-    sc_core::sc_in<len_t> in_len{"in_len"};
-    sc_core::sc_in<m_t> in_m{"in_m"};
-    sc_core::sc_in<bit_t> in_deg2{"in_deg2"};
-    sc_core::sc_in<cos_t> in_nh1{"in_nh1"}, in_nh2{"in_nh2"}, in_nh3{"in_nh3"}, in_nh4{"in_nh4"};
-    sc_core::sc_in<cos_t> in_nl1{"in_nl1"}, in_nl2{"in_nl2"}, in_nl3{"in_nl3"}, in_nl4{"in_nl4"};
-    // Frame constants.
-    sc_core::sc_in<n_t> in_n{"in_n"};
-    sc_core::sc_in<ksi_t> in_ksi_r{"in_ksi_r"}, in_ksi_g{"in_ksi_g"}, in_ksi_b{"in_ksi_b"};
-    sc_core::sc_in<pipe::kdi_t> in_kdi_r{"in_kdi_r"}, in_kdi_g{"in_kdi_g"}, in_kdi_b{"in_kdi_b"};
-    sc_core::sc_in<sample_t> in_amb_r{"in_amb_r"}, in_amb_g{"in_amb_g"}, in_amb_b{"in_amb_b"};
-    // Pixel stream.
-    sc_core::sc_out<bool> px_valid{"px_valid"};
-    sc_core::sc_out<coord_t> px_x{"px_x"}, px_y{"px_y"};
-    sc_core::sc_out<sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
 
     // Nets.
     sc_core::sc_signal<bool> ld_job{"ld_job"}, ld_d{"ld_d"}, ld_k{"ld_k"}, samples_ready{"samples_ready"}, ld_e{"ld_e"};
@@ -109,13 +88,13 @@ public:
     sc_core::sc_signal<bool> ld_last{"ld_last"}, nh_hit{"nh_hit"}, nl_hit{"nl_hit"}, carry_hit{"carry_hit"};
     sc_core::sc_signal<sample_ctrl::bit_t> carry_sel{"carry_sel"};
     sc_core::sc_signal<sc_dt::sc_uint<spec::out_fmt.width>> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
-    sc_core::sc_signal<pipe::kdi_t> kdi_r{"kdi_r"}, kdi_g{"kdi_g"}, kdi_b{"kdi_b"};
+    sc_core::sc_signal<pipeline::kdi_t> kdi_r{"kdi_r"}, kdi_g{"kdi_g"}, kdi_b{"kdi_b"};
     sc_core::sc_signal<sample_t> amb_r{"amb_r"}, amb_g{"amb_g"}, amb_b{"amb_b"};
     template <class T>
     using rgb_nets = sc_core::sc_vector<sc_core::sc_signal<T>>;
-    rgb_nets<pipe::coef_t> ca{"ca", 3, rgb_net<pipe::coef_t>}, cb{"cb", 3, rgb_net<pipe::coef_t>},
-        cc{"cc", 3, rgb_net<pipe::coef_t>}, cd{"cd", 3, rgb_net<pipe::coef_t>}, qa{"qa", 3, rgb_net<pipe::coef_t>},
-        qb{"qb", 3, rgb_net<pipe::coef_t>}, qc{"qc", 3, rgb_net<pipe::coef_t>};
+    rgb_nets<pipeline::coef_t> ca{"ca", 3, rgb_net<pipeline::coef_t>}, cb{"cb", 3, rgb_net<pipeline::coef_t>},
+        cc{"cc", 3, rgb_net<pipeline::coef_t>}, cd{"cd", 3, rgb_net<pipeline::coef_t>}, qa{"qa", 3, rgb_net<pipeline::coef_t>},
+        qb{"qb", 3, rgb_net<pipeline::coef_t>}, qc{"qc", 3, rgb_net<pipeline::coef_t>};
     sc_core::sc_signal<bool> ev_start{"ev_start"}, deg2{"deg2"};
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg_sel{"deg_sel"};
     sc_core::sc_signal<horner_channel::t_t> t{"t"};
@@ -137,7 +116,7 @@ public:
     eq_cmp<WCOS> eq_nh, eq_nl;
     and_gate and_carry;
     typename pipe_device<AGen>::type dev;
-    reg<pipe::kdi_fmt.width> rg_kd_r, rg_kd_g, rg_kd_b;
+    reg<pipeline::kdi_fmt.width> rg_kd_r, rg_kd_g, rg_kd_b;
     reg<WI> rg_amb_r, rg_amb_g, rg_amb_b;
     sample_channel smp_r, smp_g, smp_b;
     eval_channel ev_r, ev_g, ev_b;
@@ -213,7 +192,7 @@ public:
 
         sample_channel* smp[] = {&smp_r, &smp_g, &smp_b};
         eval_channel* ev[] = {&ev_r, &ev_g, &ev_b};
-        sc_core::sc_signal<pipe::kdi_t>* kd[] = {&kdi_r, &kdi_g, &kdi_b};
+        sc_core::sc_signal<pipeline::kdi_t>* kd[] = {&kdi_r, &kdi_g, &kdi_b};
         sc_core::sc_signal<sample_t>* amb[] = {&amb_r, &amb_g, &amb_b};
         sc_core::sc_signal<sc_dt::sc_uint<spec::out_fmt.width>>* spec[] = {&out25_r, &out26_g, &out27_b};
         sc_core::sc_out<sample_t>* px[] = {&px_r, &px_g, &px_b};

@@ -34,47 +34,18 @@
 #include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
-#include "pipeline/pipe_eval.h"
+#include "pipeline/pipeline_pins.h"
 #include "pipeline/sample_fsm.h"
 #include "squared/sq_count.h"
 
 namespace shading {
 
-template <pipe_eval EVAL>
-class shading_pipeline_fast : public sc_core::sc_module {
-    static constexpr bool horner = EVAL == pipe_eval::horner;
+// shading_pipeline's pins (pipeline_pins.h).
+template <pipeline::evaluator EVAL>
+class shading_pipeline_fast : public sc_core::sc_module, public pipeline_pins {
+    static constexpr bool horner = EVAL == pipeline::evaluator::horner;
 
 public:
-    using coord_t = sc_dt::sc_uint<16>;
-    using len_t = sc_dt::sc_uint<16>;
-    using m_t = sc_dt::sc_uint<4>;
-    using bit_t = sc_dt::sc_uint<1>;
-    using n_t = sc_dt::sc_uint<ua60553::n_fmt.width>;
-    using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
-    using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
-    using kdi_t = sc_dt::sc_uint<pipeline::kdi_fmt.width>;
-    using sample_t = sc_dt::sc_uint<interp::sample_fmt.width>;
-
-    // Pins from the geometry side (shading_pipeline.h).
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> start{"start"}, load_frame{"load_frame"};
-    sc_core::sc_out<bool> ready{"ready"};
-    sc_core::sc_in<coord_t> in_y{"in_y"}, in_x0{"in_x0"};
-    sc_core::sc_in<len_t> in_len{"in_len"};
-    sc_core::sc_in<m_t> in_m{"in_m"};
-    sc_core::sc_in<bit_t> in_deg2{"in_deg2"};
-    sc_core::sc_in<cos_t> in_nh1{"in_nh1"}, in_nh2{"in_nh2"}, in_nh3{"in_nh3"}, in_nh4{"in_nh4"};
-    sc_core::sc_in<cos_t> in_nl1{"in_nl1"}, in_nl2{"in_nl2"}, in_nl3{"in_nl3"}, in_nl4{"in_nl4"};
-    // Frame constants.
-    sc_core::sc_in<n_t> in_n{"in_n"};
-    sc_core::sc_in<ksi_t> in_ksi_r{"in_ksi_r"}, in_ksi_g{"in_ksi_g"}, in_ksi_b{"in_ksi_b"};
-    sc_core::sc_in<kdi_t> in_kdi_r{"in_kdi_r"}, in_kdi_g{"in_kdi_g"}, in_kdi_b{"in_kdi_b"};
-    sc_core::sc_in<sample_t> in_amb_r{"in_amb_r"}, in_amb_g{"in_amb_g"}, in_amb_b{"in_amb_b"};
-    // Pixel stream.
-    sc_core::sc_out<bool> px_valid{"px_valid"};
-    sc_core::sc_out<coord_t> px_x{"px_x"}, px_y{"px_y"};
-    sc_core::sc_out<sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
-
     SC_HAS_PROCESS(shading_pipeline_fast);
     // fd_m as shading_pipeline's: the forward differences' fixed interval length 2^fd_m, 0 for any m
     // per interval; ignored for Horner.
@@ -118,8 +89,8 @@ private:
         }
         rising();
         const auto st = fsm_.current();
-        const bool waiting = (st == pipe::sample_fsm::low_st || st == pipe::sample_fsm::copy_st) &&
-                             fsm_.sample_bank() == pipe::sample_fsm::bank_full && !ld_e_ && !fsm_.wait_valid();
+        const bool waiting = (st == pipeline::sample_fsm::low_st || st == pipeline::sample_fsm::copy_st) &&
+                             fsm_.sample_bank() == pipeline::sample_fsm::bank_full && !ld_e_ && !fsm_.wait_valid();
         const bool finishing = horner ? h_done_ : f_rem_ != 0;
         if (waiting && !finishing) next_trigger(clk.posedge_event());
     }
@@ -199,7 +170,7 @@ private:
     // sample_ctrl's check (sample_fsm.h's job_problem), then the interval's pixels through the
     // floor's interval arithmetic (the golden pipeline's). Returns the job's samples, 0 for a dropped job.
     unsigned check_job() {
-        const std::string problem = pipe::job_problem(job_.m, job_.len, job_.deg2, fd_m_);
+        const std::string problem = pipeline::job_problem(job_.m, job_.len, job_.deg2, fd_m_);
         if (!problem.empty()) {
             std::ostringstream msg;
             msg << name() << ": job checked at " << sc_core::sc_time_stamp() << " (taken one clock before): " << problem
@@ -212,9 +183,8 @@ private:
         j.m = job_.m;
         j.deg2 = job_.deg2;
         j.s = job_s_;
-        job_.px = pipeline::interval_pixels(j, k_, dev_, horner ? pipeline::evaluator::horner : pipeline::evaluator::fd,
-                                            set_, div_);
-        return pipe::job_samples(job_.m, job_.deg2);
+        job_.px = pipeline::interval_pixels(j, k_, dev_, EVAL, set_, div_);
+        return pipeline::job_samples(job_.m, job_.deg2);
     }
 
     void write_px(const rgb& v) {
@@ -319,7 +289,7 @@ private:
     unsigned fd_m_;
     pipeline::frame_constants k_;
     // Sample controller.
-    pipe::sample_fsm fsm_;
+    pipeline::sample_fsm fsm_;
     bool samples_ready_ = false;
     uint64_t edges_ = 0, strobe_edge_ = 0;  // falling edges so far; the last one strobe 17 fell at
     uint64_t dev_clocks_ = 2;               // the squared-quadratic device's k + 2 for the frame's n

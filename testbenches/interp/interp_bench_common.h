@@ -1,8 +1,7 @@
 // What the benches of the interpolation paper's units share (interp_coef_bench.h, interp_horner_bench.h,
-// interp_fd_bench.h, interp_line_bench.h). Each bench comes in three pieces reused by the
-// testbench programs and the GoogleTest suites:
-//   *_stimulus - drives the unit's pins synchronously (writes just after rising edges), from a
-//                list or a generator (item_source: the random mode streams 10^7 requests);
+// interp_fd_bench.h, interp_line_bench.h), each in three pieces the programs and the GoogleTest suites reuse:
+//   *_stimulus - drives the unit's pins synchronously (writes just after rising edges), from a list or a
+//                generator (item_source: the random mode streams 10^7 requests), in one loop (interp_stimulus);
 //   *_monitor  - samples the pins at rising edges: the inputs a request was evaluated with and
 //                the result at the edge where the unit says it is valid;
 //   *_checker  - compares every sample with the golden model (src/golden/interp_golden.h).
@@ -15,6 +14,7 @@
 #include <limits>
 #include <string>
 #include <systemc>
+#include <utility>
 #include <vector>
 
 #include "testbenches/common/bench_source.h"
@@ -87,6 +87,59 @@ private:
     bool keep_ = true;
     std::vector<Sample> samples_;
     sc_core::sc_time first_accepted_, last_valid_, period_ = interp_period();
+};
+
+// The stimulus loop of every interp bench (coef_stimulus, horner_stimulus, fd_stimulus_of,
+// line_stimulus), written once: a thread on the rising edges of clk that writes just after them. At
+// the first edge it presents item 0 (begin); at each later edge the bench's handshake, reading the
+// pins as they were before it, takes its step (edge) until every item is through (through: the unit
+// finished all of them); then the bench's tail (two rising edges unless it says otherwise), the run
+// marked finished and the simulation stopped.
+template <typename Item>
+class interp_stimulus : public sc_core::sc_module {
+public:
+    sc_core::sc_in<bool> clk{"clk"};
+
+    bool finished() const { return finished_; }
+    std::size_t size() const { return items_.size(); }
+
+protected:
+    SC_HAS_PROCESS(interp_stimulus);
+    interp_stimulus(const sc_core::sc_module_name& name, item_source<Item> items)
+        : sc_module(name), items_(std::move(items)) {
+        SC_THREAD(run);
+    }
+
+    // Item i (a generator's items in increasing order; the current one may be read again).
+    const Item& item(std::size_t i) { return items_[i]; }
+    virtual void present(const Item& it) = 0;  // put an item on the pins
+    virtual void begin() {
+        if (size() > 0) present(item(0));
+    }
+    virtual void edge() = 0;
+    virtual bool through() const { return ended_ >= size(); }
+    virtual void tail() {
+        wait(clk.posedge_event());
+        wait(clk.posedge_event());
+    }
+
+    std::size_t accepted_ = 0, ended_ = 0;  // items the unit took, and finished
+
+private:
+    void run() {
+        wait(clk.posedge_event());
+        begin();
+        while (!through()) {
+            wait(clk.posedge_event());
+            edge();
+        }
+        tail();
+        finished_ = true;
+        sc_core::sc_stop();
+    }
+
+    item_source<Item> items_;
+    bool finished_ = false;
 };
 
 // Random sample codes over the whole sample bus (what the coefficient units must take).

@@ -38,36 +38,32 @@ struct coef_sample {
     sc_core::sc_time at;
 };
 
-class coef_stimulus : public sc_core::sc_module {
+// One sample set per clock, no handshake: every set presented is taken at the next edge.
+class coef_stimulus : public interp_stimulus<coef_inputs> {
 public:
-    sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_out<bool> sample_valid{"sample_valid"};
     sc_core::sc_vector<sc_core::sc_out<sample_t>> c1{"c1", 4}, c2{"c2", 4}, q{"q", 3};
 
-    SC_HAS_PROCESS(coef_stimulus);
     coef_stimulus(const sc_core::sc_module_name& name, item_source<coef_inputs> sets)
-        : sc_module(name), sets_(std::move(sets)) {
-        SC_THREAD(run);
-    }
-    bool finished() const { return finished_; }
+        : interp_stimulus(name, std::move(sets)) {}
 
 private:
-    void run() {
-        for (std::size_t k = 0; k < sets_.size(); ++k) {
-            const auto& s = sets_[k];
-            wait(clk.posedge_event());
-            for (std::size_t i = 0; i < 4; ++i) c1[i].write(s.c1[i]), c2[i].write(s.c2[i]);
-            for (std::size_t i = 0; i < 3; ++i) q[i].write(s.q[i]);
-            sample_valid.write(true);
-        }
-        wait(clk.posedge_event());
+    void present(const coef_inputs& s) override {
+        for (std::size_t i = 0; i < 4; ++i) c1[i].write(s.c1[i]), c2[i].write(s.c2[i]);
+        for (std::size_t i = 0; i < 3; ++i) q[i].write(s.q[i]);
+        sample_valid.write(true);
+    }
+    void begin() override {
+        if (size() > 0) edge();
+    }
+    void edge() override { present(item(accepted_++)); }
+    bool through() const override { return accepted_ >= size(); }
+    // sample_valid drops at the edge after the last set (at the first edge when there is none).
+    void tail() override {
+        if (size() > 0) wait(clk.posedge_event());
         sample_valid.write(false);
         wait(clk.posedge_event());
-        finished_ = true;
-        sc_core::sc_stop();
     }
-    item_source<coef_inputs> sets_;
-    bool finished_ = false;
 };
 
 class coef_monitor : public sc_core::sc_module {

@@ -74,54 +74,41 @@ struct m_pin_of<Port, void> {
 // valid = 0 or last = 1) it drops start, holds the inputs one more clock (the registers load at
 // the falling edge after acceptance) and then presents the next interval with start = 1.
 template <class Iv, class LenT, class MT = void>
-class fd_stimulus_of : public sc_core::sc_module {
+class fd_stimulus_of : public interp_stimulus<Iv> {
 public:
     using len_t = LenT;
-    sc_core::sc_in<bool> clk{"clk"}, valid{"valid"}, last{"last"};
+    sc_core::sc_in<bool> valid{"valid"}, last{"last"};
     sc_core::sc_out<bool> start{"start"};
     sc_core::sc_out<len_t> len{"len"};
     typename m_pin_of<sc_core::sc_out, MT>::type m{"m"};
     sc_core::sc_out<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
 
-    SC_HAS_PROCESS(fd_stimulus_of);
-    fd_stimulus_of(const sc_core::sc_module_name& name, item_source<Iv> ivs) : sc_module(name), ivs_(std::move(ivs)) {
-        SC_THREAD(run);
-    }
-    bool finished() const { return finished_; }
+    fd_stimulus_of(const sc_core::sc_module_name& name, item_source<Iv> ivs)
+        : interp_stimulus<Iv>(name, std::move(ivs)) {}
 
 private:
-    void present(const Iv& iv) {
+    void present(const Iv& iv) override {
         a.write(coef_word(iv.k.a)); b.write(coef_word(iv.k.b));
         c.write(coef_word(iv.k.c)); d.write(coef_word(iv.k.d));
         len.write(len_t(iv.len));
         if constexpr (!std::is_void_v<MT>) m.write(MT(iv.m));
         start.write(true);
     }
-    void run() {
-        const std::size_t n = ivs_.size();
-        wait(clk.posedge_event());
-        if (n > 0) present(ivs_[0]);
-        std::size_t accepted = 0, ended = 0;
-        bool change = false;
-        while (ended < n) {
-            wait(clk.posedge_event());
-            const bool v = valid.read(), l = last.read();
-            if (v && l) ++ended;
-            if (change) {
-                present(ivs_[accepted]);
-                change = false;
-            } else if (start.read() && (!v || l)) {
-                ++accepted;
-                start.write(false);
-                change = accepted < n;
-            }
+    void edge() override {
+        const bool v = valid.read(), l = last.read();
+        if (v && l) ++this->ended_;
+        if (change_) {
+            present(this->item(this->accepted_));
+            change_ = false;
+        } else if (start.read() && (!v || l)) {
+            ++this->accepted_;
+            start.write(false);
+            change_ = this->accepted_ < this->size();
         }
-        wait(2 * interp_period());
-        finished_ = true;
-        sc_core::sc_stop();
     }
-    item_source<Iv> ivs_;
-    bool finished_ = false;
+    void tail() override { this->wait(2 * interp_period()); }
+
+    bool change_ = false;  // the next interval goes on the pins at the next edge
 };
 template <unsigned M>
 using fd_stimulus = fd_stimulus_of<fd_interval, typename fd_ctrl<M>::len_t>;

@@ -49,60 +49,47 @@ struct horner_sample {
 // Moore source: presents request 0 with start = 1; at each acceptance edge (start = 1 and
 // busy = 0 or done = 1) it presents the accepted request's inputs and keeps start high while more
 // requests follow (back to back). With gap > 0 it instead waits `gap` clocks after each done.
-class horner_stimulus : public sc_core::sc_module {
+class horner_stimulus : public interp_stimulus<horner_request> {
 public:
-    sc_core::sc_in<bool> clk{"clk"}, busy{"busy"}, done{"done"};
+    sc_core::sc_in<bool> busy{"busy"}, done{"done"};
     sc_core::sc_out<bool> start{"start"}, deg2{"deg2"};
     sc_core::sc_out<coef_t> a{"a"}, b{"b"}, c{"c"}, d{"d"};
     sc_core::sc_out<t_t> t{"t"};
 
-    SC_HAS_PROCESS(horner_stimulus);
     horner_stimulus(const sc_core::sc_module_name& name, item_source<horner_request> reqs, unsigned gap = 0)
-        : sc_module(name), reqs_(std::move(reqs)), gap_(gap) {
-        SC_THREAD(run);
-    }
-    bool finished() const { return finished_; }
-    std::size_t requests() const { return reqs_.size(); }
+        : interp_stimulus(name, std::move(reqs)), gap_(gap) {}
+    std::size_t requests() const { return size(); }
 
 private:
-    void present(const horner_request& r) {
+    void present(const horner_request& r) override {
         a.write(coef_word(r.k.a)); b.write(coef_word(r.k.b));
         c.write(coef_word(r.k.c)); d.write(coef_word(r.k.d));
         t.write(t_t(r.t));
         deg2.write(r.deg2);
     }
-    void run() {
-        const std::size_t n = reqs_.size();
-        wait(clk.posedge_event());
-        if (n > 0) {
-            present(reqs_[0]);
+    void begin() override {
+        if (size() == 0) return;
+        present(item(0));
+        start.write(true);
+    }
+    void edge() override {
+        const bool dn = done.read();
+        const bool acc = start.read() && (!busy.read() || dn);
+        if (dn) ++ended_;
+        if (acc) {
+            present(item(accepted_));
+            ++accepted_;
+            start.write(gap_ == 0 && accepted_ < size());
+        } else if (gap_ > 0 && dn && accepted_ < size()) {
+            gap_left_ = gap_;
+        } else if (gap_left_ > 0 && --gap_left_ == 0) {
+            present(item(accepted_));
             start.write(true);
         }
-        std::size_t accepted = 0, dones = 0;
-        unsigned gap_left = 0;
-        while (dones < n) {
-            wait(clk.posedge_event());
-            const bool dn = done.read();
-            const bool acc = start.read() && (!busy.read() || dn);
-            if (dn) ++dones;
-            if (acc) {
-                present(reqs_[accepted]);
-                ++accepted;
-                start.write(gap_ == 0 && accepted < n);
-            } else if (gap_ > 0 && dn && accepted < n) {
-                gap_left = gap_;
-            } else if (gap_left > 0 && --gap_left == 0) {
-                present(reqs_[accepted]);
-                start.write(true);
-            }
-        }
-        wait(2 * interp_period());
-        finished_ = true;
-        sc_core::sc_stop();
     }
-    item_source<horner_request> reqs_;
-    unsigned gap_;
-    bool finished_ = false;
+    void tail() override { wait(2 * interp_period()); }
+
+    unsigned gap_, gap_left_ = 0;
 };
 
 class horner_monitor : public sc_core::sc_module {

@@ -59,58 +59,42 @@ struct line_sample {
 };
 
 template <unsigned M>
-class line_stimulus : public sc_core::sc_module {
+class line_stimulus : public interp_stimulus<interp::interval_samples> {
 public:
     using len_t = typename fd_ctrl<M>::len_t;
-    sc_core::sc_in<bool> clk{"clk"}, ready{"ready"}, valid{"valid"}, last{"last"};
+    sc_core::sc_in<bool> ready{"ready"}, valid{"valid"}, last{"last"};
     sc_core::sc_out<bool> start{"start"};
     sc_core::sc_out<len_t> len{"len"};
     sc_core::sc_out<sample_t> i1{"i1"}, i2{"i2"}, i3{"i3"}, i4{"i4"};
 
-    SC_HAS_PROCESS(line_stimulus);
     line_stimulus(const sc_core::sc_module_name& name, item_source<interp::interval_samples> ivs, unsigned gap = 0)
-        : sc_module(name), ivs_(std::move(ivs)), gap_(gap) {
-        SC_THREAD(run);
-    }
-    bool finished() const { return finished_; }
+        : interp_stimulus(name, std::move(ivs)), gap_(gap) {}
     // When each interval's samples were put on the inputs (just after that rising edge).
     const std::vector<sc_core::sc_time>& presented() const { return presented_; }
 
 private:
-    void present(const interp::interval_samples& iv) {
+    void present(const interp::interval_samples& iv) override {
         i1.write(iv.i[0]); i2.write(iv.i[1]); i3.write(iv.i[2]); i4.write(iv.i[3]);
         len.write(len_t(iv.len));
         start.write(true);
         presented_.push_back(sc_core::sc_time_stamp());
     }
-    void run() {
-        const std::size_t n = ivs_.size();
-        wait(clk.posedge_event());
-        if (n > 0) present(ivs_[0]);
-        std::size_t accepted = 0, ended = 0;
-        unsigned gap_left = 0;
-        while (ended < n) {
-            wait(clk.posedge_event());
-            if (start.read() && ready.read()) {  // accepted at this edge
-                ++accepted;
-                if (accepted < n && gap_ == 0) present(ivs_[accepted]);
-                else start.write(false);
-            }
-            if (valid.read() && last.read()) {  // the last pixel of an interval came out at this edge
-                ++ended;
-                if (gap_ > 0 && accepted < n) gap_left = gap_;
-            } else if (gap_left > 0 && --gap_left == 0) {
-                present(ivs_[accepted]);
-            }
+    void edge() override {
+        if (start.read() && ready.read()) {  // accepted at this edge
+            ++accepted_;
+            if (accepted_ < size() && gap_ == 0) present(item(accepted_));
+            else start.write(false);
         }
-        for (int i = 0; i < 2; ++i) wait(clk.posedge_event());
-        finished_ = true;
-        sc_core::sc_stop();
+        if (valid.read() && last.read()) {  // the last pixel of an interval came out at this edge
+            ++ended_;
+            if (gap_ > 0 && accepted_ < size()) gap_left_ = gap_;
+        } else if (gap_left_ > 0 && --gap_left_ == 0) {
+            present(item(accepted_));
+        }
     }
-    item_source<interp::interval_samples> ivs_;
-    unsigned gap_;
+
+    unsigned gap_, gap_left_ = 0;
     std::vector<sc_core::sc_time> presented_;
-    bool finished_ = false;
 };
 
 template <unsigned M>

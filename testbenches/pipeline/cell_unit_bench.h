@@ -37,7 +37,7 @@ public:
     sc_core::sc_out<bool> start{"start"};
     sc_core::sc_out<cell_unit::coord_t> x0{"x0"}, y0{"y0"};
     sc_core::sc_out<cell_unit::m_t> m{"m"};
-    sc_core::sc_vector<sc_core::sc_out<pipe::sample_t>> lat_r{"lat_r", 9}, lat_g{"lat_g", 9}, lat_b{"lat_b", 9};
+    sc_core::sc_vector<sc_core::sc_out<pipeline::sample_t>> lat_r{"lat_r", 9}, lat_g{"lat_g", 9}, lat_b{"lat_b", 9};
 
     SC_HAS_PROCESS(cell_stimulus);
     cell_stimulus(const sc_core::sc_module_name& name, std::vector<cell_input> cells)
@@ -145,8 +145,8 @@ public:
     sc_core::sc_signal<bool> start{"start"}, ready{"ready"}, px_valid{"px_valid"};
     sc_core::sc_signal<cell_unit::coord_t> x0{"x0"}, y0{"y0"}, px_x{"px_x"}, px_y{"px_y"};
     sc_core::sc_signal<cell_unit::m_t> m{"m"};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> lat_r{"lat_r", 9}, lat_g{"lat_g", 9}, lat_b{"lat_b", 9};
-    sc_core::sc_signal<pipe::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::sample_t>> lat_r{"lat_r", 9}, lat_g{"lat_g", 9}, lat_b{"lat_b", 9};
+    sc_core::sc_signal<pipeline::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
 
     cell_stimulus src;
     cell_unit dut{"dut"};

@@ -23,7 +23,7 @@
 namespace shading {
 // The fast abstraction (pipeline/shading_pipeline_fast.h), included only where a fast bench is built
 // (pipeline_sim_fast.cpp), so the block-level runs do not recompile when it changes.
-template <pipe_eval EVAL>
+template <pipeline::evaluator EVAL>
 class shading_pipeline_fast;
 }  // namespace shading
 
@@ -132,7 +132,7 @@ private:
 class geometry_source : public sc_core::sc_module {
 public:
     using coord_t = sc_dt::sc_uint<16>;
-    using cos_t = pipe::cos_t;
+    using cos_t = pipeline::cos_t;
 
     sc_core::sc_in<bool> clk{"clk"}, ready{"ready"};
     sc_core::sc_out<bool> start{"start"}, load_frame{"load_frame"};
@@ -143,8 +143,8 @@ public:
     sc_core::sc_vector<sc_core::sc_out<cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_out<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
     sc_core::sc_vector<sc_core::sc_out<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
-    sc_core::sc_vector<sc_core::sc_out<pipe::kdi_t>> kdi{"kdi", 3};
-    sc_core::sc_vector<sc_core::sc_out<pipe::sample_t>> amb{"amb", 3};
+    sc_core::sc_vector<sc_core::sc_out<pipeline::kdi_t>> kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_out<pipeline::sample_t>> amb{"amb", 3};
 
     SC_HAS_PROCESS(geometry_source);
     geometry_source(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
@@ -243,7 +243,7 @@ void bind_geometry_source(geometry_source& src, B& b, sc_core::sc_signal<bool>& 
 // The bench: clock, pins, the pipeline, the frame buffer, the geometry source and the checker. FAST:
 // the fast pin-level abstraction (shading_pipeline_fast.h, which names the device by `dev` and
 // ignores `gen`) instead of the block-level pipeline.
-template <class AGen, pipe_eval EVAL, bool FAST = false>
+template <class AGen, evaluator EVAL, bool FAST = false>
 class pipeline_bench : public sc_core::sc_module {
 public:
     using dut_t = std::conditional_t<FAST, shading_pipeline_fast<EVAL>, shading_pipeline<AGen, EVAL>>;
@@ -255,14 +255,14 @@ public:
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
     sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::kdi_t>> kdi{"kdi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::kdi_t>> kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::sample_t>> amb{"amb", 3};
     sc_core::sc_signal<bool> px_valid{"px_valid"};
     sc_core::sc_signal<coord_t> px_x{"px_x"}, px_y{"px_y"};
-    sc_core::sc_signal<pipe::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
+    sc_core::sc_signal<pipeline::sample_t> px_r{"px_r"}, px_g{"px_g"}, px_b{"px_b"};
 
     dut_t dut;
     frame_buffer fb;
@@ -276,7 +276,7 @@ public:
                    std::function<void(std::size_t, std::size_t)> progress, std::function<bool()> others_done = {})
         : sc_module(name), dut(make_dut("dut", dev, gen, c)), fb("fb", p.width, p.height),
           src("src", p, k, [this, others_done] { return dut.idle() && (!others_done || others_done()); }),
-          checker(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
+          checker(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0), progress_(std::move(progress)) {
         bind_pipeline_inputs(dut, *this);
         dut.ready(ready);
         dut.px_valid(px_valid); dut.px_x(px_x); dut.px_y(px_y);

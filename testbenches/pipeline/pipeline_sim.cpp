@@ -26,8 +26,8 @@ sim_result simulate_frame(const plan& p, const frame_constants& k, const scene::
         SC_REPORT_ERROR(msg::config, bad.c_str());
         return r;
     }
-    return c.eval == evaluator::horner ? sim_detail::run_device<pipe_eval::horner>(p, k, dev, c, o)
-                                       : sim_detail::run_device<pipe_eval::fd>(p, k, dev, c, o);
+    return c.eval == evaluator::horner ? sim_detail::run_device<evaluator::horner>(p, k, dev, c, o)
+                                       : sim_detail::run_device<evaluator::fd>(p, k, dev, c, o);
 }
 
 }  // namespace shading::pipeline

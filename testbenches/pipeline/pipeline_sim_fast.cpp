@@ -5,15 +5,15 @@
 
 namespace shading::pipeline::sim_detail {
 
-template <pipe_eval EVAL>
+template <evaluator EVAL>
 sim_result run_fast(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
                     const sim_options& o) {
     return run<a_gen_linear, EVAL, true>(p, k, dev, c, ua60553::patent, o);
 }
 
-template sim_result run_fast<pipe_eval::horner>(const plan&, const frame_constants&, const scene::device_config&,
+template sim_result run_fast<evaluator::horner>(const plan&, const frame_constants&, const scene::device_config&,
                                                 const plan_config&, const sim_options&);
-template sim_result run_fast<pipe_eval::fd>(const plan&, const frame_constants&, const scene::device_config&,
+template sim_result run_fast<evaluator::fd>(const plan&, const frame_constants&, const scene::device_config&,
                                             const plan_config&, const sim_options&);
 
 }  // namespace shading::pipeline::sim_detail

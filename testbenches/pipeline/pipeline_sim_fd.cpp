@@ -3,7 +3,7 @@
 
 namespace shading::pipeline::sim_detail {
 
-template sim_result run_device<pipe_eval::fd>(const plan&, const frame_constants&, const scene::device_config&,
+template sim_result run_device<evaluator::fd>(const plan&, const frame_constants&, const scene::device_config&,
                                                 const plan_config&, const sim_options&);
 
 }  // namespace shading::pipeline::sim_detail

@@ -37,7 +37,7 @@ inline sc_core::sc_time time_limit(const plan& p) {
     return pipeline_period() * static_cast<double>(clocks);
 }
 
-template <class AGen, pipe_eval EVAL, bool FAST = false>
+template <class AGen, evaluator EVAL, bool FAST = false>
 sim_result run(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
                const typename AGen::config& gen, const sim_options& o) {
     sim_result res;
@@ -100,11 +100,11 @@ sim_result run(const plan& p, const frame_constants& k, const scene::device_conf
 }
 
 // The fast abstraction's run (pipeline_sim_fast.cpp; it names the device by dev, no generator type).
-template <pipe_eval EVAL>
+template <evaluator EVAL>
 sim_result run_fast(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
                     const sim_options& o);
 
-template <pipe_eval EVAL>
+template <evaluator EVAL>
 inline sim_result run_device(const plan& p, const frame_constants& k, const scene::device_config& dev, const plan_config& c,
                       const sim_options& o) {
     if (o.level == abstraction::fast) return run_fast<EVAL>(p, k, dev, c, o);
@@ -122,13 +122,13 @@ inline sim_result run_device(const plan& p, const frame_constants& k, const scen
 }
 
 // Each evaluator's runs are compiled in their own translation unit, the fast ones in a third.
-extern template sim_result run_fast<pipe_eval::horner>(const plan&, const frame_constants&, const scene::device_config&,
+extern template sim_result run_fast<evaluator::horner>(const plan&, const frame_constants&, const scene::device_config&,
                                                         const plan_config&, const sim_options&);
-extern template sim_result run_fast<pipe_eval::fd>(const plan&, const frame_constants&, const scene::device_config&,
+extern template sim_result run_fast<evaluator::fd>(const plan&, const frame_constants&, const scene::device_config&,
                                                     const plan_config&, const sim_options&);
-extern template sim_result run_device<pipe_eval::horner>(const plan&, const frame_constants&, const scene::device_config&,
+extern template sim_result run_device<evaluator::horner>(const plan&, const frame_constants&, const scene::device_config&,
                                                           const plan_config&, const sim_options&);
-extern template sim_result run_device<pipe_eval::fd>(const plan&, const frame_constants&, const scene::device_config&,
+extern template sim_result run_device<evaluator::fd>(const plan&, const frame_constants&, const scene::device_config&,
                                                       const plan_config&, const sim_options&);
 
 }  // namespace shading::pipeline::sim_detail

@@ -110,7 +110,7 @@ public:
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> ready_b{"ready_b"}, ready_f{"ready_f"}, valid_b{"valid_b"}, valid_f{"valid_f"};
     sc_core::sc_in<coord_t> x_b{"x_b"}, x_f{"x_f"}, y_b{"y_b"}, y_f{"y_f"};
-    sc_core::sc_vector<sc_core::sc_in<pipe::sample_t>> px_b{"px_b", 3}, px_f{"px_f", 3};
+    sc_core::sc_vector<sc_core::sc_in<pipeline::sample_t>> px_b{"px_b", 3}, px_f{"px_f", 3};
 
     SC_HAS_PROCESS(pin_comparator);
     explicit pin_comparator(const sc_core::sc_module_name& name) : sc_module(name) {
@@ -145,7 +145,7 @@ private:
     std::size_t diffs_ = 0, edges_ = 0, valid_edges_ = 0;
 };
 
-template <class AGen, pipe_eval EVAL>
+template <class AGen, evaluator EVAL>
 class pair_bench : public sc_core::sc_module {
 public:
     using coord_t = sc_dt::sc_uint<16>;
@@ -154,7 +154,7 @@ public:
     struct outs {
         sc_core::sc_signal<bool> ready, valid;
         sc_core::sc_signal<coord_t> x, y;
-        sc_core::sc_signal<pipe::sample_t> r, g, b;
+        sc_core::sc_signal<pipeline::sample_t> r, g, b;
     };
 
     sc_core::sc_clock clk{"clk", pipeline_period()};
@@ -163,11 +163,11 @@ public:
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
     sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
     sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::cos_t>> nh{"nh", 4}, nl{"nl", 4};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::cos_t>> nh{"nh", 4}, nl{"nl", 4};
     sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
     sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::kdi_t>> kdi{"kdi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipe::sample_t>> amb{"amb", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::kdi_t>> kdi{"kdi", 3};
+    sc_core::sc_vector<sc_core::sc_signal<pipeline::sample_t>> amb{"amb", 3};
     outs ob, of;
 
     block_t blk;
@@ -184,7 +184,7 @@ public:
           fst("fst", dev, fast_set, c.div, fd_m(c), c.carry_samples),
           fb_b("fb_b", p.width, p.height), fb_f("fb_f", p.width, p.height),
           src("src", p, k, [this] { return blk.idle() && fst.idle(); }),
-          chk_b(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0), chk_f(p, k, dev, c, EVAL == pipe_eval::fd ? fd_m(c) : 0) {
+          chk_b(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0), chk_f(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0) {
         bind(blk, ob);
         bind(fst, of);
         fb_b.clk(clk); fb_b.valid(ob.valid); fb_b.x(ob.x); fb_b.y(ob.y); fb_b.r(ob.r); fb_b.g(ob.g); fb_b.b(ob.b);
@@ -212,7 +212,7 @@ private:
 struct pair_case {
     const char* name;
     scene::specular_device device;
-    pipe_eval eval;
+    evaluator eval;
     unsigned fd_m;  // forward differences: 0 any m per interval, else the fixed m
     uint64_t seed;
     bool carry = false;  // both pipelines with the carry, on a plan whose jobs chain
@@ -221,17 +221,17 @@ void PrintTo(const pair_case& c, std::ostream* os) { *os << c.name; }
 
 // other_set: the fast pipeline built with the other cubic sample set (the comparison must then see
 // differences: it can fail).
-template <class AGen, pipe_eval EVAL>
+template <class AGen, evaluator EVAL>
 void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_set = false) {
     tb::report_log::get().expect(msg::input);  // the invalid jobs, reported by both
-    const plan p = random_plan(pc.seed, 400, 64, EVAL == pipe_eval::fd ? pc.fd_m : 0, 12, pc.carry);
+    const plan p = random_plan(pc.seed, 400, 64, EVAL == evaluator::fd ? pc.fd_m : 0, 12, pc.carry);
     const frame_constants k = random_constants(pc.seed);
     scene::device_config dev;
     dev.device = pc.device;
     dev.mode = pc.seed % 2 ? overflow_mode::wrap : overflow_mode::saturate;
     plan_config c;
     c.carry_samples = pc.carry;
-    c.eval = EVAL == pipe_eval::horner ? evaluator::horner : evaluator::fd;
+    c.eval = EVAL;
     c.length = pc.fd_m == 0 ? length_policy::adaptive : length_policy::fixed;
     c.m = pc.fd_m == 0 ? 4 : pc.fd_m;
     c.set = pc.seed % 3 ? interp::sample_set::case1 : interp::sample_set::case2;
@@ -276,51 +276,51 @@ class PipelineFastPins : public ::testing::TestWithParam<pair_case> {};
 
 TEST_P(PipelineFastPins, SameAsBlockLevelAtEveryEdge) {
     const pair_case pc = GetParam();
-    const bool horner = pc.eval == pipe_eval::horner;
+    const bool horner = pc.eval == evaluator::horner;
     switch (pc.device) {
         case scene::specular_device::patent:
-            if (horner) run_pair<a_gen_linear, pipe_eval::horner>(pc, ua60553::patent);
-            else run_pair<a_gen_linear, pipe_eval::fd>(pc, ua60553::patent);
+            if (horner) run_pair<a_gen_linear, evaluator::horner>(pc, ua60553::patent);
+            else run_pair<a_gen_linear, evaluator::fd>(pc, ua60553::patent);
             break;
         case scene::specular_device::minimax:
-            if (horner) run_pair<a_gen_tuned, pipe_eval::horner>(pc, ua60553::minimax);
-            else run_pair<a_gen_tuned, pipe_eval::fd>(pc, ua60553::minimax);
+            if (horner) run_pair<a_gen_tuned, evaluator::horner>(pc, ua60553::minimax);
+            else run_pair<a_gen_tuned, evaluator::fd>(pc, ua60553::minimax);
             break;
         case scene::specular_device::rom_matched:
-            if (horner) run_pair<a_gen_tuned, pipe_eval::horner>(pc, ua60553::rom_matched);
-            else run_pair<a_gen_tuned, pipe_eval::fd>(pc, ua60553::rom_matched);
+            if (horner) run_pair<a_gen_tuned, evaluator::horner>(pc, ua60553::rom_matched);
+            else run_pair<a_gen_tuned, evaluator::fd>(pc, ua60553::rom_matched);
             break;
         case scene::specular_device::ua22802:
-            if (horner) run_pair<a_gen_rom, pipe_eval::horner>(pc, a_gen_rom::default_config());
-            else run_pair<a_gen_rom, pipe_eval::fd>(pc, a_gen_rom::default_config());
+            if (horner) run_pair<a_gen_rom, evaluator::horner>(pc, a_gen_rom::default_config());
+            else run_pair<a_gen_rom, evaluator::fd>(pc, a_gen_rom::default_config());
             break;
         case scene::specular_device::squared:
-            if (horner) run_pair<squared_device, pipe_eval::horner>(pc, squared_device::default_config());
-            else run_pair<squared_device, pipe_eval::fd>(pc, squared_device::default_config());
+            if (horner) run_pair<squared_device, evaluator::horner>(pc, squared_device::default_config());
+            else run_pair<squared_device, evaluator::fd>(pc, squared_device::default_config());
             break;
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Random, PipelineFastPins,
-    ::testing::Values(pair_case{"horner_patent", scene::specular_device::patent, pipe_eval::horner, 0, 1},
-                      pair_case{"horner_ua22802", scene::specular_device::ua22802, pipe_eval::horner, 0, 2},
-                      pair_case{"horner_minimax", scene::specular_device::minimax, pipe_eval::horner, 0, 3},
-                      pair_case{"fd_any_m_rom_matched", scene::specular_device::rom_matched, pipe_eval::fd, 0, 4},
-                      pair_case{"fd_m4_patent", scene::specular_device::patent, pipe_eval::fd, 4, 5},
-                      pair_case{"fd_m2_minimax", scene::specular_device::minimax, pipe_eval::fd, 2, 6},
-                      pair_case{"horner_squared", scene::specular_device::squared, pipe_eval::horner, 0, 8},
-                      pair_case{"fd_any_m_squared", scene::specular_device::squared, pipe_eval::fd, 0, 9},
-                      pair_case{"horner_patent_carry", scene::specular_device::patent, pipe_eval::horner, 0, 10, true},
-                      pair_case{"fd_any_m_squared_carry", scene::specular_device::squared, pipe_eval::fd, 0, 11, true},
-                      pair_case{"fd_m3_ua22802_carry", scene::specular_device::ua22802, pipe_eval::fd, 3, 13, true}),
+    ::testing::Values(pair_case{"horner_patent", scene::specular_device::patent, evaluator::horner, 0, 1},
+                      pair_case{"horner_ua22802", scene::specular_device::ua22802, evaluator::horner, 0, 2},
+                      pair_case{"horner_minimax", scene::specular_device::minimax, evaluator::horner, 0, 3},
+                      pair_case{"fd_any_m_rom_matched", scene::specular_device::rom_matched, evaluator::fd, 0, 4},
+                      pair_case{"fd_m4_patent", scene::specular_device::patent, evaluator::fd, 4, 5},
+                      pair_case{"fd_m2_minimax", scene::specular_device::minimax, evaluator::fd, 2, 6},
+                      pair_case{"horner_squared", scene::specular_device::squared, evaluator::horner, 0, 8},
+                      pair_case{"fd_any_m_squared", scene::specular_device::squared, evaluator::fd, 0, 9},
+                      pair_case{"horner_patent_carry", scene::specular_device::patent, evaluator::horner, 0, 10, true},
+                      pair_case{"fd_any_m_squared_carry", scene::specular_device::squared, evaluator::fd, 0, 11, true},
+                      pair_case{"fd_m3_ua22802_carry", scene::specular_device::ua22802, evaluator::fd, 3, 13, true}),
     [](const ::testing::TestParamInfo<pair_case>& i) { return std::string(i.param.name); });
 
 // The comparison can fail: the fast pipeline built with the other sample set differs at the pins.
 TEST(PipelineFastPinsVerdict, AnotherSampleSetIsSeen) {
     tb::report_log::get().expect(msg::mismatch);  // the fast frame buffer's checker
-    run_pair<a_gen_linear, pipe_eval::horner>(
-        pair_case{"horner_other_set", scene::specular_device::patent, pipe_eval::horner, 0, 7}, ua60553::patent, true);
+    run_pair<a_gen_linear, evaluator::horner>(
+        pair_case{"horner_other_set", scene::specular_device::patent, evaluator::horner, 0, 7}, ua60553::patent, true);
 }
 
 // ---- Alone: renders through simulate_frame ----
