@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "formats/ua60553_formats.h"
-#include "golden/ua60553_tuned_golden.h"
+#include "arith/ua60553_tuned_arith.h"
 #include "generator_search.h"
 #include "study_metrics.h"
 
