@@ -1,7 +1,7 @@
 // The squared-quadratic specular device (ours, built from UA 60553's Fig. 1): the patent's datapath
 // evaluates the quadratic at the small exponent n' = n / 2^k in [1, 2), a squaring stage squares
 // the result k times, and the colour multipliers take it, so the device approximates cos^n with its
-// tail (formats/squared_formats.h; the law, the fit and the figures in modules/squared/README.md).
+// tail (formats/squared_formats.h; the device in modules/squared/README.md, the fit in studies/accuracy/README.md).
 //   RG1..RG5     UA 60553's registers, written on the falling edges of strobes 15, 17, 20, 22, 24
 //   a_gen        n -> a, z (a_gen_squared.h): LZC, barrel shifts, a 9 x 9 multiplier, an adder
 //   MUL7, INV8, node 28, ADD9, MUL10, node 30, ADD11   Fig. 1 at n' (MUL10: Q0.12 a; ADD11: Q1.18)

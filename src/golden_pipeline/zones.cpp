@@ -5,7 +5,7 @@
 // quadratic suits, and calibrate the boxes on the head scan (Lee Perry-Smith's, data/head/) by eye on
 // a zone map drawn over the shaded head (test_pipeline_plan writes it: build/out/pipeline/zones_head.png).
 // The zone policy takes an interval's degree from the zone of its first pixel; intervals are not cut
-// at zone borders (plan.cpp, modules/pipeline/README.md: why not).
+// at zone borders (plan.cpp; docs/shading-system.md, "Zone borders: not cut").
 #include <algorithm>
 #include <cmath>
 

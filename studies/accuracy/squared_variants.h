@@ -1,5 +1,5 @@
 // The squared-quadratic device (ours; formats/squared_formats.h) with its two design choices made
-// parameters, for the study that fixed them (modules/squared/accuracy.md, "The fit"). A golden
+// parameters, for the study that fixed them (studies/accuracy/README.md, "The fit"). A golden
 // model of the variants, plain C++ from the law, not a change to the device: with the device's
 // parameters (bend shifts {2}, 18 fraction bits) it gives golden_squared's words bit for bit
 // (test_squared_variants checks every n and code).

@@ -9,7 +9,7 @@
 //  - --length adaptive --perfect-decisions: the adaptive length policy with every decision taken on
 //    the true error of what it sends (perfect_decisions.h), its check points still paid.
 // Neither is a policy a geometry side can run: they know every colour. How far a policy is from them
-// is what scripts/pipeline_gap.py and scripts/pipeline_targets.py tabulate.
+// is what studies/scripts/pipeline_gap.py and studies/scripts/pipeline_targets.py tabulate.
 //   build/bin/yardstick_study --scene head --size 512 --device squared --eval fd --carry-samples
 //       --length optimal --optimal-nmse 1e-5 --no-sim --out out/yardsticks/optimum
 //   build/bin/yardstick_study --scene head --size 512 --device squared --eval fd --carry-samples

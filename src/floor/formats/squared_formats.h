@@ -4,7 +4,7 @@
 //     cos^n = (cos^n')^(2^k),   n = 2^k * (1 + f),   n' = 1 + f,   f in [0, 1).
 // At n' in [1, 2) the quadratic q(c) = c + a (c^2 - c) is the linear interpolation of c^x between
 // x = 1 and x = 2 when a = f; its zero lies at c <= 0, so the tail of cos^n is kept. The generator
-// of a bends that line slightly (the fit: modules/squared/accuracy.md):
+// of a bends that line slightly (the fit: studies/accuracy/README.md, "The fit"):
 //     a = f + f (1 - f) / 2^(k + 2),
 // built from the normalised n alone: a leading-zero counter, two barrel shifts, a 9 x 9 multiplier
 // and an adder (no ROM, no constant multiplier). One table, read by the golden model, the SystemC
@@ -69,7 +69,7 @@ inline constexpr uint64_t q_sat_hi = q_one;
 // (floor) and the 19 wires above kept (Q1.18; in saturate mode the value is <= 1 and 1.0^2 = 1.0
 // fits; in wrap mode the high wires are dropped). Why 18 fraction bits: the relative error of the
 // k-th square grows like 2^k LSB; at 16 bits the worst case above cos^n = 0.56 exceeds 1 % at
-// n = 882 (k = 9), at 18 it stays below the law's own 0.39 % (modules/squared/accuracy.md, the
+// n = 882 (k = 9), at 18 it stays below the law's own 0.39 % (studies/accuracy/README.md, the
 // fraction sweep).
 inline constexpr qfmt sq_fmt = q_fmt;
 inline constexpr unsigned max_squarings = z_full;  // 9, for n = 512..1023
