@@ -66,6 +66,50 @@ if(NOT SHADING_RTL_TRACE)
 endif()
 find_package(Threads REQUIRED)
 
+# Verilator's runtime, compiled once: verilate() adds verilated.cpp, verilated_threads.cpp and (with
+# TRACE) verilated_vcd_c.cpp to every program that verilates a model (test_rtl_specular,
+# test_rtl_squared, test_rtl_interp, perf_models), 15-18 CPU seconds at -O3 each time; the
+# shading_verilate_* functions take them out of the program again and link this library. These
+# sources read VM_TRACE only to define WAVES, which nothing reads, so one object serves the models
+# without tracing (test_rtl_interp) too. -O3 like the rest of the build (perf_models' RTL row).
+set(SHADING_VERILATED_RUNTIME ${VERILATOR_ROOT}/include/verilated.cpp ${VERILATOR_ROOT}/include/verilated_threads.cpp
+    ${VERILATOR_ROOT}/include/verilated_vcd_c.cpp)
+add_library(shading_verilated STATIC ${SHADING_VERILATED_RUNTIME})
+target_include_directories(shading_verilated PUBLIC ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
+target_compile_definitions(shading_verilated PRIVATE VM_COVERAGE=0 VM_SC=1 VM_TRACE=1 VM_TRACE_VCD=1 VM_TRACE_FST=0)
+target_compile_features(shading_verilated PRIVATE cxx_std_11)
+target_link_libraries(shading_verilated PUBLIC Verilator::systemc Threads::Threads)
+target_compile_options(shading_verilated PRIVATE -Wno-unused-parameter)
+if(SHADING_SANITIZE)  # not ours: uninstrumented, as shading_verilate_rtl says
+  target_compile_options(shading_verilated PRIVATE -fno-sanitize=all -g0)
+endif()
+
+# shading_use_verilated_runtime(<target>): after verilate(), the runtime sources it added to <target>
+# replaced by shading_verilated. A runtime file the library lacks (another Verilator) stops the configure.
+function(shading_use_verilated_runtime target)
+  get_target_property(_sources ${target} SOURCES)
+  set(_kept)
+  foreach(_s IN LISTS _sources)
+    if(_s MATCHES "/include/verilated[^/]*\\.cpp$")
+      if(NOT _s IN_LIST SHADING_VERILATED_RUNTIME)
+        message(FATAL_ERROR "verilate() added ${_s} to ${target}: add it to SHADING_VERILATED_RUNTIME")
+      endif()
+    else()
+      list(APPEND _kept ${_s})
+    endif()
+  endforeach()
+  set_property(TARGET ${target} PROPERTY SOURCES ${_kept})
+  target_link_libraries(${target} PRIVATE shading_verilated)
+  # The generated model keeps -O3 in a suite built at SHADING_TEST_OPT_FLAGS (cmake/shading.cmake):
+  # its many small files cost about as much at -Og (test_rtl_squared's four models: 112 CPU s,
+  # 123 at -O3), but at -Og test_rtl_squared's tests ran 49 CPU s instead of 35.
+  foreach(_s IN LISTS _kept)
+    if(_s MATCHES "/[^/]+\\.dir/[^/]+\\.cpp$" AND NOT _s MATCHES "/${target}\\.dir/[^/]+\\.cpp$")
+      set_property(SOURCE ${_s} APPEND PROPERTY COMPILE_OPTIONS $<$<CONFIG:Release>:-O3>)
+    endif()
+  endforeach()
+endfunction()
+
 
 # The generated Verilog must exist when CMake configures: verilate() runs Verilator then, to learn the
 # C++ files it writes. So src/tools/gen_rtl.cpp is compiled and run here, and any change to it or to
@@ -123,6 +167,7 @@ function(shading_verilate_rtl target prefix)
            SOURCES ${ARG_SOURCE}
            INCLUDE_DIRS ${ARG_DIRS}
            VERILATOR_ARGS -Wall --pins-sc-uint ${ARG_ARGS})
+  shading_use_verilated_runtime(${target})
   target_link_libraries(${target} PRIVATE Threads::Threads)
   # Verilator's own headers and generated code leave parameters unused (verilated_vcd_sc.h).
   target_compile_options(${target} PRIVATE -Wno-unused-parameter)
