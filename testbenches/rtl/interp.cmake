@@ -56,7 +56,7 @@ function(shading_verilate_interp target prefix top)
            SOURCES ${SHADING_RTL_DIR}/interp/${top}.v
            INCLUDE_DIRS ${SHADING_RTL_INTERP_DIRS}
            VERILATOR_ARGS -Wall --pins-sc-uint ${ARGN})
-  shading_use_verilated_runtime(${target})  # cmake/verilator.cmake: the runtime compiled once
+  shading_verilated_finish(${target} ${prefix})  # cmake/verilator.cmake: the runtime once, the model as one unit
 endfunction()
 
 # The co-simulation suite: the RTL coefficient unit (4 variants) and Horner unit beside ours.
