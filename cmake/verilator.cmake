@@ -3,7 +3,7 @@
 # scripts/setup.sh installs it) there are no RTL targets, and the RTL tests are registered as skipped
 # with the reason (testbenches/rtl).
 #
-# Sets SHADING_RTL (ON/OFF: Verilator found), SHADING_RTL_SKIP_REASON (why not, when OFF),
+# Sets SHADING_RTL (ON/OFF: Verilator found and SHADING_VERILATE on), SHADING_RTL_SKIP_REASON (why not, when OFF),
 # SHADING_RTL_TRACE (ON/OFF: Verilator's SystemC trace file, which the co-simulations of the specular
 # devices record their RTL waveform with, builds against the chosen SystemC) and
 # SHADING_RTL_TRACE_SKIP_REASON, SHADING_RTL_DIR (rtl/ in the source tree), SHADING_RTL_GENERATED (the
@@ -22,6 +22,15 @@ set(SHADING_RTL_SQUARED_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/square
 set(SHADING_RTL OFF)
 set(SHADING_RTL_TRACE OFF)
 if(NOT SHADING_TOP_LEVEL)
+  return()
+endif()
+# scripts/test.sh --sanitize turns this off: Verilator's generated models are not ours (compiled
+# uninstrumented even there) and the normal run co-simulates every one, so the instrumented build
+# spends its time on the project's own code; the RTL tests are then registered as skipped.
+option(SHADING_VERILATE "Verilate the RTL twin and co-simulate it with the model (needs verilator)" ON)
+if(NOT SHADING_VERILATE)
+  set(SHADING_RTL_SKIP_REASON "the RTL is not verilated in this build (SHADING_VERILATE=OFF: scripts/test.sh --sanitize leaves the co-simulation to the normal run)")
+  message(STATUS "${SHADING_RTL_SKIP_REASON}")
   return()
 endif()
 find_package(verilator QUIET HINTS $ENV{VERILATOR_ROOT})
