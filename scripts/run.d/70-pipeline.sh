@@ -3,10 +3,9 @@
 # (fixed 16-pixel intervals, cubic, Horner unit, UA 60553 with the patent's constants), adaptive length
 # and degree through the Horner unit and through the forward differences (also at 1024x1024), and the
 # interpolation paper's zone policy, each through the golden model and the SystemC pipeline (which must
-# agree bit for bit), PNGs and report.md/report.json in $SHADING_OUT/pipeline/<case>/; then the small
-# sweep over interval and degree policies, evaluators and two devices on the golden model (parallel
-# processes), its CSV and plot in $SHADING_OUT/pipeline/sweep/, and every device against n in
-# $SHADING_OUT/pipeline/exponents/.
+# agree bit for bit), PNGs and report.md/report.json in $SHADING_OUT/pipeline/<case>/. The sweeps over
+# policies, evaluators, devices and n are the pipeline study's (studies/pipeline/README.md gives their
+# commands), not run here.
 # One summary row per render: samples = covered pixels, mismatches = SystemC vs golden, max_error =
 # the interpolation's NMSE (vs per-pixel shading through the same device), cycles_per_pixel =
 # simulated clocks per pixel. The default configuration runs twice: block level and the fast
@@ -66,9 +65,3 @@ render squared_fd --device squared --n 20 --length adaptive --length-tol 0.9 --d
 # The interpolation paper's own policy: quadratic in its zones 2, 4, 7, cubic elsewhere, one interval length.
 render zones --degree zones --m 3 --device ua22802
 
-# The small sweep at the same size on the golden model (bit-exact to SystemC by the tests).
-"$bin" --sweep --scene head --size "$size" --grid small --out "$out/sweep"
-/usr/bin/python3 scripts/plot_pipeline.py "$out/sweep/sweep.csv"
-# The total error against Phong for every device and n (2..500) with adaptive length and degree.
-"$bin" --sweep --scene head --size "$size" --grid exponents --length adaptive --degree adaptive --out "$out/exponents"
-/usr/bin/python3 scripts/plot_pipeline.py "$out/exponents/sweep.csv"
