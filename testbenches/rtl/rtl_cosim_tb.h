@@ -39,7 +39,8 @@ struct stimulus_items<S, std::void_t<typename S::items>> {
     using type = typename S::items;
 };
 
-template <typename Device, typename Rtl, typename Stimulus = specular_stimulus, typename ModelMonitor = specular_monitor>
+template <typename Device, typename Rtl, typename Stimulus = specular_stimulus,
+          typename ModelMonitor = specular_monitor>
 // The Fig. 1 bundle (specular/fig1_pins.h): the inputs both devices read, the SystemC model's outputs.
 class rtl_cosim_bench : public sc_core::sc_module, public fig1_signals {
 public:

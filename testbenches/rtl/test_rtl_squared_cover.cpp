@@ -3,7 +3,7 @@
 // golden_squared:
 //   - dropped and restarted samples: strobe 17 again before output 29 at every distance
 //     (squared_restart_tb.h: before the taking edge, the load's clock, mid-squaring, one clock
-//     before done; at done, for contrast; three drops in a row), for every n 0..1023: the two
+//     before done; just after done, for contrast; three drops in a row), for every n 0..1023: the two
 //     devices' output-29 rises paired (instant and colour), the model's drop reports counted
 //     against the plan's, the clocks per sample measured on the model (never assumed) equal for
 //     every pixel of a surface and k plus one constant over all n;

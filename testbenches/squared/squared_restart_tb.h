@@ -197,7 +197,7 @@ private:
     bool finished_ = false;
 };
 
-// For n: the reference at cos^n near 0.01; chains restarting at each distance; one at done (no
+// For n: the reference at cos^n near 0.01; chains restarting at each distance; one after done (no
 // drop); three drops in a row. cos near 0.5, 0.1 and 0.01 (cos_codes_near_levels) and above 1.0,
 // so each pixel's outputs tell which cos came out.
 inline restart_episode restart_plan(unsigned n) {
