@@ -1,11 +1,13 @@
 // Testbench parts shared by the co-simulation of the squared-quadratic device's RTL
-// (test_rtl_squared.cpp) and the checks of the two designs it is compared with
-// (test_rtl_squared_variants.cpp): the strobe timings, a probe that logs when output 29 rises
-// after each latch, and the clocks per sample each design must take, from the golden models.
+// (test_rtl_squared.cpp, test_rtl_squared_cover.cpp) and the checks of the two designs it is
+// compared with (test_rtl_squared_variants.cpp): the strobe timings, a probe that logs when output
+// 29 rises after each latch, the clocks per sample each design must take, from the golden models,
+// and the checker's golden function and the typed suites' variants (an RTL and its overflow mode).
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <systemc>
 #include <vector>
 
@@ -14,6 +16,29 @@
 #include "testbenches/specular/specular_tb.h"
 
 namespace shading::tb {
+
+// The checker's golden function: golden_squared in mode m (of n + n_offset: for negative tests).
+inline specular_checker::golden_fn squared_golden(overflow_mode m, unsigned n_offset = 0) {
+    return [m, n_offset](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        datapath_nets r{};
+        r.out = golden_squared(n + n_offset, c, k, m).out;
+        return r;
+    };
+}
+
+// A verilated squared device and the overflow mode it was built with, for typed test suites.
+template <typename Rtl, overflow_mode Mode>
+struct squared_variant {
+    using rtl = Rtl;
+    static constexpr overflow_mode mode = Mode;
+};
+
+struct squared_variant_names {
+    template <typename T>
+    static std::string GetName(int) {
+        return T::mode == overflow_mode::saturate ? "Saturate" : "Wrap";
+    }
+};
 
 // Fig. 3 for the square-and-multiply baseline: output 29 rises at most 20 clocks after strobe 17
 // fell (n = 1023: the taking edge, 9 squares, 9 multiplications, the done edge), so a pixel
