@@ -223,15 +223,20 @@ function(shading_verilate_specular target prefix)
 endfunction()
 
 # shading_verilate_squared(<target> <prefix> TOP <squared_device|squared_series_device|sqmul_device|sqmul_r2l_device>
-#                          SATURATE <0|1>)
+#                          SATURATE <0|1> [WORD <F>])
 #   The squared-quadratic device (rtl/squared), its series variant or a square-and-multiply design
-#   (rtl/sqmul: the left-to-right baseline, the right-to-left one), in that overflow mode.
+#   (rtl/sqmul: the left-to-right baseline, the right-to-left one), in that overflow mode; WORD: a
+#   square-and-multiply design at the P word Q1.F (the formats of sqmul_word/p<F>/ found first).
 function(shading_verilate_squared target prefix)
-  cmake_parse_arguments(ARG "" "TOP;SATURATE" "" ${ARGN})
+  cmake_parse_arguments(ARG "" "TOP;SATURATE;WORD" "" ${ARGN})
   set(_dir squared)
   if(ARG_TOP MATCHES "^sqmul")
     set(_dir sqmul)
   endif()
+  set(_dirs ${SHADING_RTL_SQUARED_DIRS})
+  if(ARG_WORD)
+    set(_dirs ${SHADING_RTL_GENERATED}/sqmul_word/p${ARG_WORD} ${_dirs})
+  endif()
   shading_verilate_rtl(${target} ${prefix} TOP ${ARG_TOP} SOURCE ${SHADING_RTL_DIR}/${_dir}/${ARG_TOP}.v
-                       DIRS ${SHADING_RTL_SQUARED_DIRS} ARGS -GSATURATE=${ARG_SATURATE})
+                       DIRS ${_dirs} ARGS -GSATURATE=${ARG_SATURATE})
 endfunction()

@@ -6,7 +6,9 @@
 // its right-to-left twin (rtl/sqmul/sqmul_r2l_device.v: a squarer and a multiplier in one clock
 // per bit; golden_sqmul_r2l), all saturating (the synthesis table's variants; no range checker:
 // n = 0, n > 1000 and cos > 1.0 are simply compared). Random pixels, every n 0..1023, every cos
-// code at n = 1000, the clocked designs' clocks per sample for every n, and negative tests.
+// code at n = 1000, the clocked designs' clocks per sample for every n, and negative tests; both
+// square-and-multiply designs also at the word-length study's Q1.16 P word (the same RTL read
+// with the formats of sqmul_word/p16/).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -15,6 +17,7 @@
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
+#include "formats/sqmul_formats.h"
 #include "formats/squared_formats.h"
 #include "golden/sqmul_golden.h"
 #include "arith/squared_arith.h"
@@ -22,6 +25,8 @@
 #include "testbenches/specular/specular_tb.h"
 #include "verilated.h"
 
+#include "Vrtl_sqmul_p16.h"
+#include "Vrtl_sqmul_r2l_p16.h"
 #include "Vrtl_sqmul_r2l_saturate.h"
 #include "Vrtl_sqmul_saturate.h"
 #include "Vrtl_squared_series_saturate.h"
@@ -79,10 +84,19 @@ std::vector<surface> every_cos_code(unsigned n) {
 }
 
 // golden_sqmul_r2l, for n + `n_offset` (a negative test's wrong exponent).
-specular_checker::golden_fn sqmul_r2l_golden(uint64_t n_offset = 0) {
-    return [n_offset](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+specular_checker::golden_fn sqmul_r2l_golden(uint64_t n_offset = 0, unsigned p_frac = sqmul::p_frac) {
+    return [n_offset, p_frac](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
         datapath_nets r{};
-        r.out = golden_sqmul_r2l(n + n_offset, c, k, sat).out;
+        r.out = golden_sqmul_r2l(n + n_offset, c, k, sat, p_frac).out;
+        return r;
+    };
+}
+
+// golden_sqmul at another P word.
+specular_checker::golden_fn sqmul_word_golden(unsigned p_frac) {
+    return [p_frac](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        datapath_nets r{};
+        r.out = golden_sqmul(n, c, k, sat, p_frac).out;
         return r;
     };
 }
@@ -181,4 +195,39 @@ TEST_F(RtlSquaredVariants, AnR2lRtlThatDiffersFromItsGoldenIsCaught) {
     report_log::get().expect(msg::mismatch);
     std::vector<surface> s{{20, {255, 255, 255}, {0x7000, 0x7800, 0x7C00}}};
     EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(s, 3, sqmul_timing(), sqmul_r2l_golden(1)), 3u);
+}
+
+// Both designs at Q1.16: every n (three codes) and every cos code at n = 1000, against their
+// golden models at 16 fraction bits; against the Q1.18 golden models the same RTL mismatches (the
+// negative tests), so these do read the other word.
+TEST_F(RtlSquaredVariants, SqmulAtQ116EveryN) {
+    const auto s = every_n({0x4000, 0x7800, spec::cos_one});
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_p16>(s, s.size() * 3, sqmul_timing(), sqmul_word_golden(16)), 0u);
+}
+TEST_F(RtlSquaredVariants, SqmulAtQ116EveryCosCodeAtN1000) {
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_p16>(every_cos_code(1000), 65536, sqmul_timing(), sqmul_word_golden(16)), 0u);
+}
+TEST_F(RtlSquaredVariants, SqmulR2lAtQ116EveryN) {
+    const auto s = every_n({0x4000, 0x7800, spec::cos_one});
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_p16>(s, s.size() * 3, sqmul_timing(), sqmul_r2l_golden(0, 16)), 0u);
+}
+TEST_F(RtlSquaredVariants, SqmulR2lAtQ116EveryCosCodeAtN1000) {
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_p16>(every_cos_code(1000), 65536, sqmul_timing(), sqmul_r2l_golden(0, 16)), 0u);
+}
+
+// n = 1000 and the 64 codes below 1.0 (cos^1000 from 0.14 up), where the Q1.16 and Q1.18 floors
+// reach the outputs: every one of the 64 pixels differs (worked out outside the model in exact
+// integer arithmetic, for both walks).
+std::vector<surface> near_one_at_n1000() {
+    std::vector<uint32_t> codes;
+    for (uint32_t c = spec::cos_one - 64; c < spec::cos_one; ++c) codes.push_back(c);
+    return {{1000, {255, 255, 255}, codes}};
+}
+TEST_F(RtlSquaredVariants, TheQ116RtlIsNotTheQ118One) {
+    report_log::get().expect(msg::mismatch);
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_p16>(near_one_at_n1000(), 64, sqmul_timing(), sqmul_golden()), 64u);
+}
+TEST_F(RtlSquaredVariants, TheR2lQ116RtlIsNotTheQ118One) {
+    report_log::get().expect(msg::mismatch);
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_p16>(near_one_at_n1000(), 64, sqmul_timing(), sqmul_r2l_golden()), 64u);
 }
