@@ -42,7 +42,8 @@ struct squared_variant_names {
 
 // Fig. 3 for the square-and-multiply baseline: output 29 rises at most 20 clocks after strobe 17
 // fell (n = 1023: the taking edge, 9 squares, 9 multiplications, the done edge), so a pixel
-// period of 22 clocks (21 low, 1 high) never strobes before the previous result is valid.
+// period of 22 clocks (21 low, 1 high) never strobes before the previous result is valid (nor
+// for the right-to-left design, at most 12).
 inline strobe_timing sqmul_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
     strobe_timing t = squared_timing(clk_period);
     t.t_low = 21 * clk_period;
@@ -71,6 +72,11 @@ inline unsigned squared_edges(unsigned n) { return golden_squared_a(n).k + 2; }
 inline unsigned sqmul_edges(unsigned n) {
     const auto g = golden_sqmul(n, 0, {0, 0, 0}, overflow_mode::saturate);
     return g.squares + g.multiplies + 2;
+}
+// The right-to-left square-and-multiply design: the taking edge, one per bit of n up to its
+// leading one (a square and, for a 1 bit, a multiplication in the same clock), the done edge.
+inline unsigned sqmul_r2l_edges(unsigned n) {
+    return golden_sqmul_r2l(n, 0, {0, 0, 0}, overflow_mode::saturate).steps + 2;
 }
 
 // The instant of the `edges`-th rising edge of a clock rising at 0, period, 2 period, ... after t
