@@ -127,6 +127,7 @@ int write_formats(const std::string& path) {
     define(os, "SQUARED_SEL_HOLD", squared::sq_hold);
     define(os, "SQUARED_SEL_LOAD", squared::sq_load);
     define(os, "SQUARED_SEL_SQUARE", squared::sq_square);
+    define(os, "SQUARED_SYNC_STAGES", squared::sync_stages);
 
     os << "\n// sqmul_formats.h: the square-and-multiply baseline (ours, for comparison)\n";
     define_fmt(os, "SQMUL_P", sqmul::p_fmt);
