@@ -113,14 +113,26 @@ DESCRIPTIONS = {
     "sqmul_saturate": "square-and-multiply baseline (one multiplier over the bits of n), saturating",
 }
 
-# Rising edges of clk from strobe 17's fall to output 29's rise (the taking edge, one per step,
-# the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v and rtl/sqmul/sqmul_ctrl.v
-# define them (checked against the golden models' counts by test_rtl_squared):
-# k + 2 = floor(log2 n) + 2, and floor(log2 n) + popcount(n) + 1. None for the combinational ones.
+# Rising edges of clk from strobe 17's fall to output 29's rise (the synchroniser sync17's two,
+# the taking edge, one per step, the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v
+# and rtl/sqmul/sqmul_ctrl.v define them (checked against the golden models' counts by
+# test_rtl_squared): k + 4 = floor(log2 n) + 4, and floor(log2 n) + popcount(n) + 3 (bit_length
+# is floor(log2 n) + 1). None for the combinational ones.
 CLOCKS = {
-    "squared_saturate": lambda n: n.bit_length() + 1,
-    "squared_wrap": lambda n: n.bit_length() + 1,
-    "sqmul_saturate": lambda n: n.bit_length() + bin(n).count("1"),
+    "squared_saturate": lambda n: n.bit_length() + 3,
+    "squared_wrap": lambda n: n.bit_length() + 3,
+    "sqmul_saturate": lambda n: n.bit_length() + bin(n).count("1") + 2,
+}
+
+# What bounds the clocked designs' period (50 % duty), in gate delays: each measured path divided
+# by the clocks it has. A loop through the iterated multiplier has a whole period (its register
+# latches at falling edges); a path that starts at a rising edge (the controller's selects) or
+# ends at one (done, where output 29 samples the outputs) half a period; RG2's path into the load
+# 2.5 periods at the least (the load latches at the falling edge after the taking edge, the third
+# rising edge after strobe 17 fell: the first may come just after the strobe), into the
+# baseline's first multiplication 4.5.
+PERIOD_SHARE = {
+    "loop": 1.0, "to_outputs": 0.5, "rg2_to_load": 2.5, "sel_to_multiply": 0.5, "rg2_to_multiply": 4.5,
 }
 
 # The designs of the squared-quadratic comparison, in the table's order, and what each path is.
@@ -128,11 +140,15 @@ COMPARISON = ("ua60553_saturate", "ua60553_patent", "ua22802", "squared_saturate
               "squared_series", "sqmul_saturate")
 PATHS = {
     "loop": "register to register, the clock period: RG_SQ / RG_P -> multiplier (-> MX_B) -> multiplexer -> itself",
-    "rg2_to_load": "strobe 17 to register: RG2 -> ... -> RG_SQ / RG_P at the load, half a clock after the strobe at worst",
+    "rg2_to_load": "strobe 17 to register: RG2 -> ... -> RG_SQ / RG_P at the load, 2.5 clocks after the strobe at the "
+                   "soonest (the synchroniser's two rising edges, the taking edge, the falling edge after it)",
     "rg1_to_load": "strobe 15 to register: RG1 -> generator -> MUL10 -> ADD11 -> RG_SQ at the load",
     "rg1_to_ctrl": "strobe 15 to register: RG1 -> LZC (-> BSH1) -> the controller, at the taking edge",
-    "rg2_to_multiply": "RG2 -> clamp -> MX_B -> MUL_P -> MX_P -> RG_P in a multiplication step (2.5 clocks after the strobe at the earliest)",
+    "rg2_to_multiply": "RG2 -> clamp -> MX_B -> MUL_P -> MX_P -> RG_P in a multiplication step (4.5 clocks after the "
+                       "strobe at the soonest: RG2 is held long before; the select into MX_B is sel_to_multiply)",
     "to_outputs": "result register -> colour multiplier -> output 25, within the done edge's half clock",
+    "sel_to_multiply": "the controller's MX_B select (switched at a rising edge) -> MX_B -> MUL_P -> MX_P -> RG_P "
+                       "(latched at the falling edge after it: half a clock)",
     "rg2_to_outputs": "strobe 17 to output: RG2 -> Fig. 1 at n' -> 9 squarers -> MUL12 -> output 25",
     "rg1_to_outputs": "strobe 15 to output: RG1 -> generator -> MUL10 -> ... -> 9 squarers -> output 25",
 }
@@ -173,6 +189,19 @@ def write_comparison(out, by):
                 r["description"], r["transistors"], r["transistors"] / ref, r["cells"], r["flip_flops"],
                 r["depth_gates"], clocks, p))
         f.write("\nPaths: %s.\n" % "; ".join("**%s** %s" % (k, v) for k, v in PATHS.items()))
+        f.write("\nClock bound (gate delays, 50 %% duty: each path over the clocks it has: %s) and time per "
+                "sample (the bound times the clocks per sample: worst / n = 20 / mean over n in [1, 1000]):\n\n"
+                "| design | clock bound | set by | time per sample |\n|---|---|---|---|\n" %
+                ", ".join("%s %g" % (k, v) for k, v in PERIOD_SHARE.items()))
+        for v in COMPARISON:
+            if v not in CLOCKS or not paths.get(v):
+                continue
+            need = {k: d / PERIOD_SHARE[k] for k, d in paths[v].items() if k in PERIOD_SHARE}
+            by_path = max(need, key=need.get)
+            bound = need[by_path]
+            c = [CLOCKS[v](n) for n in range(1, 1001)]
+            f.write("| %s | %.1f | %s (%d gates) | %.0f / %.0f / %.0f |\n" % (
+                v, bound, by_path, paths[v][by_path], bound * max(c), bound * CLOCKS[v](20), bound * sum(c) / len(c)))
 
 
 
