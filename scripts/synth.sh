@@ -170,7 +170,8 @@ EOF
   # The right-to-left square-and-multiply design: a squarer and a multiplier written in one clock
   # per bit of n. Its register-to-register paths (each a whole clock: RG_X -> MUL_X -> MX_X -> RG_X,
   # RG_P -> MUL_P -> MX_P -> RG_P, RG_X -> MUL_P -> RG_P), the load RG2 -> clamp -> MX_X -> RG_X
-  # (half a clock after the strobe at worst: no multiplier on it), RG1 -> controller, RG_P -> outputs.
+  # (2.5 clocks after the strobe at worst, through its own synchroniser sync17, as the baseline's;
+  # no multiplier on it), RG1 -> controller, RG_P -> outputs.
   r2l=sqmul_r2l_saturate
   variant $r2l sqmul_r2l_device "" "-chparam SATURATE 1" "$rtl_sources" \
     "$(path $r2l loop stage.rg_p.q stage.rg_p.q; path $r2l loop_x stage.rg_x.q stage.rg_x.q

@@ -118,17 +118,17 @@ for _f in range(15, 21):
     DESCRIPTIONS["sqmul_r2l_p%d" % _f] = "square-and-multiply, right to left, at a Q1.%d P word, saturating" % _f
 
 # Rising edges of clk from strobe 17's fall to output 29's rise (the synchroniser sync17's two,
-# the taking edge, one per step, the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v
-# and rtl/sqmul/sqmul_ctrl.v define them (checked against the golden models' counts by
-# test_rtl_squared): k + 4 = floor(log2 n) + 4, and floor(log2 n) + popcount(n) + 3 (bit_length
-# is floor(log2 n) + 1). None for the combinational ones.
+# the taking edge, one per step, the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v,
+# rtl/sqmul/sqmul_ctrl.v and rtl/sqmul/sqmul_r2l_ctrl.v define them (checked against the golden
+# models' counts by test_rtl_squared): k + 4 = floor(log2 n) + 4, floor(log2 n) + popcount(n) + 3
+# and floor(log2 n) + 5 (bit_length is floor(log2 n) + 1). None for the combinational ones.
 CLOCKS = {
     "squared_saturate": lambda n: n.bit_length() + 3,
     "squared_wrap": lambda n: n.bit_length() + 3,
     "sqmul_saturate": lambda n: n.bit_length() + bin(n).count("1") + 2,
-    # rtl/sqmul/sqmul_r2l_ctrl.v, strobe 17 taken directly: the taking edge, one per bit of n, the
-    # done edge = floor(log2 n) + 3.
-    "sqmul_r2l_saturate": lambda n: n.bit_length() + 2,
+    # rtl/sqmul/sqmul_r2l_ctrl.v: sync17's two, the taking edge, one per bit of n, the done edge
+    # = floor(log2 n) + 5.
+    "sqmul_r2l_saturate": lambda n: n.bit_length() + 4,
 }
 
 # What bounds the clocked designs' period (50 % duty), in gate delays: each measured path divided
@@ -142,9 +142,6 @@ PERIOD_SHARE = {
     "loop": 1.0, "loop_x": 1.0, "x_to_p": 1.0, "to_outputs": 0.5, "rg2_to_load": 2.5, "sel_to_multiply": 0.5,
     "rg2_to_multiply": 4.5,
 }
-# A design that takes strobe 17 without the synchroniser (rtl/sqmul/sqmul_r2l_ctrl.v): its load
-# latches at the falling edge after the first rising edge, half a period after the strobe at worst.
-PERIOD_SHARE_OF = {"sqmul_r2l": dict(PERIOD_SHARE, rg2_to_load=0.5)}
 
 
 def clocks_of(variant):
@@ -153,12 +150,10 @@ def clocks_of(variant):
     return CLOCKS.get(m.group(1) + "_saturate" if m else variant)
 
 
-def clock_bound(variant, p):
+def clock_bound(p):
     """The clock period in gate delays (50 % duty, strobe 17 asynchronous to clk; rtl/README.md) and the
     path that sets it: the longest of the measured paths `p`, each over the clocks it has (PERIOD_SHARE)."""
-    m = re.match(r"(sqmul(?:_r2l)?)_(?:p\d+|saturate)$", variant)
-    share = PERIOD_SHARE_OF.get(m.group(1) if m else variant, PERIOD_SHARE)
-    need = {k: d / share[k] for k, d in p.items() if k in share and d is not None}
+    need = {k: d / PERIOD_SHARE[k] for k, d in p.items() if k in PERIOD_SHARE and d is not None}
     if not need:
         return None, None
     by_path = max(need, key=need.get)
@@ -234,7 +229,7 @@ def write_comparison(out, by, paths):
         for v in COMPARISON:
             if v not in CLOCKS or not paths.get(v):
                 continue
-            bound, by_path = clock_bound(v, paths[v])
+            bound, by_path = clock_bound(paths[v])
             c = [CLOCKS[v](n) for n in range(1, 1001)]
             f.write("| %s | %.1f | %s (%d gates) | %.0f / %.0f / %.0f |\n" % (
                 v, bound, by_path, paths[v][by_path], bound * max(c), bound * CLOCKS[v](20), bound * sum(c) / len(c)))
@@ -263,7 +258,7 @@ def write_sqmul_designs(out, by, paths):
                     " / ".join("n = %d" % n for n in ns), " / ".join("n = %d" % n for n in ns)))
         for v in rows:
             r, p, rule = by[v], paths.get(v, {}), clocks_of(v)
-            bound, by_path = clock_bound(v, p)
+            bound, by_path = clock_bound(p)
             c = [rule(n) for n in ns]
             mean = sum(rule(n) for n in range(1, 1001)) / 1000
             times = " / ".join("%.0f" % (bound * k) for k in c) + " / %.0f" % (bound * mean) if bound else "—"

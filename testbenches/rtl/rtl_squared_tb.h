@@ -45,7 +45,7 @@ struct squared_variant_names {
 // Fig. 3 for the square-and-multiply baseline: output 29 rises at most 22 clocks after strobe 17
 // fell (n = 1023: the synchroniser's two rising edges, the taking edge, 9 squares,
 // 9 multiplications, the done edge), so a pixel period of 24 clocks (23 low, 1 high) never strobes
-// before the previous result is valid (nor for the right-to-left design, at most 12).
+// before the previous result is valid (nor for the right-to-left design, at most 14).
 inline strobe_timing sqmul_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
     strobe_timing t = squared_timing(clk_period);
     t.t_low = 23 * clk_period;
@@ -77,11 +77,11 @@ inline unsigned sqmul_edges(unsigned n) {
     const auto g = golden_sqmul(n, 0, {0, 0, 0}, overflow_mode::saturate);
     return 3 + g.squares + g.multiplies + 1;
 }
-// The right-to-left square-and-multiply design (rtl/sqmul/sqmul_r2l_ctrl.v, strobe 17 taken
-// directly): the taking edge, one per bit of n up to its leading one (a square and, for a 1 bit, a
+// The right-to-left square-and-multiply design (rtl/sqmul/sqmul_r2l_ctrl.v, the same handshake):
+// those three, one per bit of n up to its leading one (a square and, for a 1 bit, a
 // multiplication in the same clock), the done edge.
 inline unsigned sqmul_r2l_edges(unsigned n) {
-    return golden_sqmul_r2l(n, 0, {0, 0, 0}, overflow_mode::saturate).steps + 2;
+    return 3 + golden_sqmul_r2l(n, 0, {0, 0, 0}, overflow_mode::saturate).steps + 1;
 }
 
 }  // namespace shading::tb

@@ -185,7 +185,7 @@ TEST_F(RtlSquaredVariants, AnRtlThatDiffersFromItsGoldenIsCaught) {
     EXPECT_EQ(run_rtl<Vrtl_sqmul_saturate>(s, 3, sqmul_timing(), series_golden()), 3u);
 }
 
-// The right-to-left design: the baseline's pixel period (its longest result takes 12 clocks).
+// The right-to-left design: the baseline's pixel period (its longest result takes 14 clocks).
 TEST_F(RtlSquaredVariants, SqmulR2lRandom) {
     EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(random_surfaces(250000, 13), 250000, sqmul_timing(), sqmul_r2l_golden()),
               0u);
@@ -195,15 +195,30 @@ TEST_F(RtlSquaredVariants, SqmulR2lEveryCosCodeAtN1000) {
 }
 
 TEST_F(RtlSquaredVariants, SqmulR2lEveryNAndItsClocksPerSample) {
-    // Output 29 at the (steps + 2)-th rising edge: the taking edge, one per bit of n up to its
-    // leading one, the done edge (steps from golden_sqmul_r2l).
-    expect_every_n_and_clocks<Vrtl_sqmul_r2l_saturate>(sqmul_r2l_golden(), sqmul_r2l_edges, 26);  // n = 1023: 12
-    // Hand-worked: n = 1000 = 0b1111101000 has 10 bits: 12 edges; n = 20 = 0b10100: 7; n = 5: 5;
-    // n = 0: no bit, 2 (P = 1.0).
-    EXPECT_EQ(sqmul_r2l_edges(1000), 12u);
-    EXPECT_EQ(sqmul_r2l_edges(20), 7u);
-    EXPECT_EQ(sqmul_r2l_edges(5), 5u);
-    EXPECT_EQ(sqmul_r2l_edges(0), 2u);
+    // Output 29 at the (steps + 4)-th rising edge: the synchroniser's two edges, the taking edge,
+    // one per bit of n up to its leading one, the done edge (steps from golden_sqmul_r2l).
+    expect_every_n_and_clocks<Vrtl_sqmul_r2l_saturate>(sqmul_r2l_golden(), sqmul_r2l_edges, 30);  // n = 1023: 14
+    // Hand-worked: n = 1000 = 0b1111101000 has 10 bits: 2 + 1 + 10 + 1 = 14 edges; n = 20 =
+    // 0b10100, 5 bits: 9; n = 5 = 0b101, 3 bits: 7; n = 0: no bit, 2 + 1 + 0 + 1 = 4 (P = 1.0).
+    EXPECT_EQ(sqmul_r2l_edges(1000), 14u);
+    EXPECT_EQ(sqmul_r2l_edges(20), 9u);
+    EXPECT_EQ(sqmul_r2l_edges(5), 7u);
+    EXPECT_EQ(sqmul_r2l_edges(0), 4u);
+}
+
+TEST_F(RtlSquaredVariants, SqmulR2lStrobeSeventeenAtEveryPhaseOfTheClock) {
+    // As the baseline's: strobe 17 at every phase of a 20 ns clock in 0.5 ns steps (41 pixels per
+    // n, a pixel period of 30 clocks + 0.5 ns, the longest result 14 edges), n = 1, 20, 1000, 1023:
+    // every pixel bit-exact against golden_sqmul_r2l, validated once, at the (steps + 4)-th rising
+    // edge after its strobe, never twice.
+    const std::vector<unsigned> n{1, 20, 1000, 1023};
+    const auto s = phase_sweep_surfaces(n, 41);
+    const auto ns = pixel_ns(s);
+    const strobe_timing t = phase_sweep_timing(30, sc_time(500, sc_core::SC_PS), sc_time(20, sc_core::SC_NS));
+    latency_probe probe("probe");
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(s, ns.size(), t, sqmul_r2l_golden(), &probe), 0u);
+    EXPECT_EQ(phases_missed(probe.falls, t.clk_period, sc_time(500, sc_core::SC_PS)), 0u);
+    EXPECT_EQ(phase_sweep_wrong(probe, ns, t.clk_period, sc_core::SC_ZERO_TIME, sqmul_r2l_edges), 0u);
 }
 
 TEST_F(RtlSquaredVariants, AnR2lRtlThatDiffersFromItsGoldenIsCaught) {
