@@ -1,7 +1,7 @@
 // The specular unit a shading pipeline drives, named by its generator of `a`: a_gen_linear,
 // a_gen_tuned or a_gen_rom give UA 60553's Fig. 1 device (specular_device<AGen>: output 29 is
 // strobe 17, one clock per sample); squared_device names itself (ours: a clocked squaring stage,
-// output 29 rises k + 2 clocks after the strobe, so the sample controller waits for it).
+// output 29 rises k + 4 clocks after the strobe, so the sample controller waits for it).
 #pragma once
 
 #include "specular/specular_device.h"

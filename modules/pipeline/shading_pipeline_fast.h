@@ -8,7 +8,8 @@
 //     horner_pixel_ctrl.h with horner_ctrl.h, fd_pixel_ctrl.h with fd_ctrl.h / fd_ctrl_var.h),
 //     stepped here at each edge, every read seeing the value before the edge as a signal would. With
 //     the squared-quadratic device the sample controller waits for output 29, which that device
-//     raises k + 2 clocks after its strobe (k = its squarings for the frame's n): counted here.
+//     raises k + 4 clocks after its strobe (k = its squarings for the frame's n; two clocks for
+//     its synchroniser): counted here.
 //   - The datapath is one function call per interval: interval_pixels() (src/floor/arith/
 //     pipeline_arith.h, what the golden pipeline's golden_interval() computes: the device's specular
 //     term, the diffuse and ambient adders, the coefficient units and the Horner unit or forward
@@ -102,8 +103,9 @@ private:
         bool start() const { return u.start.read(); }
         bool load_frame() const { return u.load_frame.read(); }
         bool ld_e() const { return u.ld_e_; }
-        // The squared-quadratic device's output 29, high from the (k + 2)-th falling edge after its
-        // strobe fell (its done rises at the (k + 2)-th rising edge, the taking edge counted).
+        // The squared-quadratic device's output 29, high from the (k + 4)-th falling edge after its
+        // strobe fell (its done rises at the (k + 4)-th rising edge: sync17's two, the taking edge,
+        // k squares, the done edge).
         bool dev_valid() const { return u.edges_ - u.strobe_edge_ >= u.dev_clocks_; }
         unsigned check_job() const { return u.check_job(); }
         void ready(bool v) { u.ready.write(v); }
@@ -149,7 +151,8 @@ private:
         k_.ksi = {in_ksi_r.read().to_uint64(), in_ksi_g.read().to_uint64(), in_ksi_b.read().to_uint64()};
         k_.kdi = {in_kdi_r.read().to_uint64(), in_kdi_g.read().to_uint64(), in_kdi_b.read().to_uint64()};
         k_.ambient = {in_amb_r.read().to_uint64(), in_amb_g.read().to_uint64(), in_amb_b.read().to_uint64()};
-        dev_clocks_ = squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k_.n).z)) + 2;
+        dev_clocks_ =
+            squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k_.n).z)) + squared::sync_stages + 2;
     }
 
     // The job registers latch the pins.
@@ -292,7 +295,7 @@ private:
     pipeline::sample_fsm fsm_;
     bool samples_ready_ = false;
     uint64_t edges_ = 0, strobe_edge_ = 0;  // falling edges so far; the last one strobe 17 fell at
-    uint64_t dev_clocks_ = 2;               // the squared-quadratic device's k + 2 for the frame's n
+    uint64_t dev_clocks_ = 4;               // the squared-quadratic device's k + 4 for the frame's n
     interval job_, d_;  // the job registers (with the samples' pixels) and the descriptor registers
     std::array<pipeline::sample_geometry, 4> job_s_{};
     pipeline::sample_geometry last_s_{};  // the last sample's codes

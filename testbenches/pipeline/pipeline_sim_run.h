@@ -29,11 +29,11 @@ inline double cpu_seconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-// A watchdog far beyond any plan: 12 clocks per job and per sample (the squared-quadratic device's
-// k + 3 <= 12 clocks per sample), 6 per pixel, and the frame load.
+// A watchdog far beyond any plan: 14 clocks per job and per sample (the squared-quadratic device's
+// k + 5 <= 14 clocks per sample), 6 per pixel, and the frame load.
 inline sc_core::sc_time time_limit(const plan& p) {
     uint64_t clocks = 100;
-    for (const auto& j : p.jobs) clocks += 12 + 12 * 4 + 6ull * std::min(j.len, 64u);
+    for (const auto& j : p.jobs) clocks += 14 + 14 * 4 + 6ull * std::min(j.len, 64u);
     return pipeline_period() * static_cast<double>(clocks);
 }
 
