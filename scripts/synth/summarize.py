@@ -233,6 +233,26 @@ def write_comparison(out, by, paths):
             c = [CLOCKS[v](n) for n in range(1, 1001)]
             f.write("| %s | %.1f | %s (%d gates) | %.0f / %.0f / %.0f |\n" % (
                 v, bound, by_path, paths[v][by_path], bound * max(c), bound * CLOCKS[v](20), bound * sum(c) / len(c)))
+    write_clock_bounds(out, paths)
+
+
+def write_clock_bounds(out, paths):
+    """clock_bounds.csv: every clocked variant of this run with measured paths, its clock bound and the
+    path that sets it, clocks and time per sample (worst / n = 20 / mean over n in [1, 1000]); the
+    device table (studies/scripts/device_table.py) reads it."""
+    with open(os.path.join(out, "clock_bounds.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["variant", "clock_bound", "set_by", "set_by_gates", "clocks_worst", "clocks_n20", "clocks_mean",
+                    "time_worst", "time_n20", "time_mean"])
+        for v in sorted(paths):
+            rule = clocks_of(v)
+            bound, by_path = clock_bound(paths[v])
+            if rule is None or bound is None:
+                continue
+            c = [rule(n) for n in range(1, 1001)]
+            mean = sum(c) / len(c)
+            w.writerow([v, "%.0f" % bound, by_path, paths[v][by_path], max(c), rule(20), "%.2f" % mean,
+                        "%.0f" % (bound * max(c)), "%.0f" % (bound * rule(20)), "%.0f" % (bound * mean)])
 
 
 SQMUL_ORDER = ("sqmul_p15", "sqmul_p16", "sqmul_p17", "sqmul_saturate", "sqmul_p20", "sqmul_r2l_p16", "sqmul_r2l_saturate")
