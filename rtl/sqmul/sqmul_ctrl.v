@@ -1,4 +1,4 @@
-// Controller of the square-and-multiply baseline (ours, for comparison; no SystemC block): walks
+// Controller of the square-and-multiply device (ours; SystemC twin modules/sqmul/sqmul_ctrl.h): walks
 // the bits of n below its leading one, most significant first, one step per rising edge of clk:
 //     taking edge   LOAD (RG_P <- cos at the falling edge that follows); left = k = 9 - z,
 //                   bits = f, the 9 wires of n << z below its leading one
@@ -6,18 +6,18 @@
 //     done edge     HOLD; done = 1
 // So done rises squares + multiplies + 2 rising edges after strobe 17 fell (the taking edge
 // counted), with floor(log2 n) squares and popcount(n) - 1 multiplications: the baseline's clocks
-// per sample are floor(log2 n) + popcount(n) + 1 (n = 0 is read as n = 1: 2).
+// per sample are floor(log2 n) + popcount(n) + 1 (n = 0 is read as n = 1: 2). The select codes
+// are the floor's sqmul::p_select and b_select (sqmul_formats.h), generated into shading_formats.vh.
 // The strobe handshake (pending = req XOR ack across the two domains), done = !pending && !busy,
 // a strobe before done abandoning the result, the start-up state: as sq_ctrl.v.
 `include "shading_formats.vh"
-`include "sqmul_codes.vh"
 module sqmul_ctrl (
     input  wire                       clk,
     input  wire                       ctl17,
     input  wire [`SQUARED_Z_W-1:0]    z,  // the LZC of RG1
     input  wire [`SQUARED_F_W-1:0]    f,  // n's bits below its leading one, most significant first
     output reg  [`SQMUL_MX_P_SEL_W-1:0] mx_p_sel = `SQMUL_MX_P_HOLD,
-    output reg                        mx_b_sel = `SQMUL_MX_B_P,
+    output reg  [`SQMUL_MX_B_SEL_W-1:0] mx_b_sel = `SQMUL_MX_B_P,
     output wire                       done
 );
     localparam [`SQUARED_Z_W-1:0] Z_FULL = `SQUARED_Z_FULL;

@@ -10,19 +10,10 @@
 #include <vector>
 
 #include "arith/squared_arith.h"
-#include "golden/sqmul_golden.h"
+#include "arith/sqmul_arith.h"
 #include "testbenches/specular/specular_tb.h"
 
 namespace shading::tb {
-
-// Fig. 3 for the square-and-multiply baseline: output 29 rises at most 20 clocks after strobe 17
-// fell (n = 1023: the taking edge, 9 squares, 9 multiplications, the done edge), so a pixel
-// period of 22 clocks (21 low, 1 high) never strobes before the previous result is valid.
-inline strobe_timing sqmul_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
-    strobe_timing t = squared_timing(clk_period);
-    t.t_low = 21 * clk_period;
-    return t;
-}
 
 // A timing that shows the clocks per sample: strobe 17 low for 5 ns only, so output 29 = strobe
 // 17 AND done rises when done does; high for the rest of a period of `clocks` clocks. The

@@ -1,8 +1,9 @@
-// The two designs the squared-quadratic device is compared with, verilated and checked bit-exact
-// against their golden models on the device pins (no SystemC model of either): the series variant
+// The two designs the squared-quadratic device is compared with, verilated alone and checked
+// bit-exact against their golden models on the device pins: the series variant
 // (rtl/squared/squared_series_device.v: 9 squarers with bypass multiplexers, combinational, Fig. 3
-// timing with no clock; golden_squared) and the square-and-multiply baseline
-// (rtl/sqmul/sqmul_device.v: one multiplier over the bits of n; golden_sqmul), both saturating
+// timing with no clock, no SystemC model; golden_squared) and the square-and-multiply device
+// (rtl/sqmul/sqmul_device.v: one multiplier over the bits of n; golden_sqmul; co-simulated with its
+// SystemC model in test_rtl_sqmul.cpp), both saturating
 // (the synthesis table's variants; no range checker: n = 0, n > 1000 and cos > 1.0 are simply
 // compared). Random pixels, every n 0..1023, every cos code at n = 1000, the baseline's clocks
 // per sample for every n, and a negative test.
@@ -15,7 +16,7 @@
 #include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "formats/squared_formats.h"
-#include "golden/sqmul_golden.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "rtl_squared_tb.h"
 #include "testbenches/specular/specular_tb.h"

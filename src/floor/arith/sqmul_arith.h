@@ -1,5 +1,7 @@
-// Bit-accurate golden model of the square-and-multiply baseline (formats/sqmul_formats.h), plain
-// C++: cos^n exact up to the floors of its Q1.18 products.
+// The bit-exact function of the square-and-multiply device (ours; formats/sqmul_formats.h), plain
+// C++ written from the format table, not from the blocks: cos^n exact up to the floors of its Q1.18
+// products. The golden model the device is checked against, and what its fast model, the TLM
+// wrapper and the pipeline's fast model call (the floor, docs/layers.md).
 #pragma once
 
 #include <array>
