@@ -28,6 +28,8 @@ trap 'rm -rf "$work"' EXIT
   printf 'ua22802\tua22802_tb --mode MODE\n'
   printf 'squared\tsquared_tb --mode MODE\n'
   printf 'squared_fast\tsquared_tb --abstraction fast --mode MODE\n'
+  printf 'sqmul\tsqmul_tb --mode MODE\n'
+  printf 'sqmul_fast\tsqmul_tb --abstraction fast --mode MODE\n'
   printf 'interp_fd_m6\tinterp_fd_tb --m 6\n'
   printf 'interp_line\tinterp_line_tb --case CASE --div3 DIV\n'  # chunks: both sample sets x both /3
   printf 'interp_horner\tinterp_horner_tb\n'
