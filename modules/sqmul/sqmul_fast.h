@@ -55,7 +55,7 @@ public:
 
     SC_HAS_PROCESS(sqmul_fast);
     explicit sqmul_fast(const sc_core::sc_module_name& name, overflow_mode mode = overflow_mode::saturate,
-                          const block_delays& t = {})
+                        const block_delays& t = {})
         : sc_module(name), mode_(mode), gate_(t.gate) {
         // The block model's derived paths, summed from the same delays (the tests compare them).
         const sc_core::sc_time sat = mode == overflow_mode::saturate ? t.adder : sc_core::SC_ZERO_TIME;
