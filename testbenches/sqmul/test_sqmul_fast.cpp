@@ -175,7 +175,7 @@ class SqmulFastTiming : public ::testing::TestWithParam<int> {};
 
 TEST_P(SqmulFastTiming, ViolationsAreReportedInTheSameNumbers) {
     // An 8 ns clock: a LOAD 4 ns after its taking edge is too soon for RG2 (4.8 ns) whenever the
-    // strobe falls in the last 0.8 ns before a rising edge (a pixel period of 178.2 ns drifts the
+    // strobe falls in the last 0.8 ns before a rising edge (a pixel period of 177.1 ns drifts the
     // strobes against the clock); a 7.2 ns clock (LOAD 3.6 ns after: the last 1.2 ns) also has a
     // high phase (3.6 ns) not longer than the controller's select through MUL_P. The block model
     // then samples what its network really shows (mismatches against golden, reported); the fast
