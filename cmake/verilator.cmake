@@ -3,11 +3,11 @@
 # scripts/setup.sh installs it) there are no RTL targets, and the RTL tests are registered as skipped
 # with the reason (testbenches/rtl).
 #
-# Sets SHADING_RTL (ON/OFF: Verilator found), SHADING_RTL_SKIP_REASON (why not, when OFF),
+# Sets SHADING_RTL (ON/OFF: Verilator found and SHADING_VERILATE on), SHADING_RTL_SKIP_REASON (why not, when OFF),
 # SHADING_RTL_TRACE (ON/OFF: Verilator's SystemC trace file, which the co-simulations of the specular
 # devices record their RTL waveform with, builds against the chosen SystemC) and
 # SHADING_RTL_TRACE_SKIP_REASON, SHADING_RTL_DIR (rtl/ in the source tree), SHADING_RTL_GENERATED (the
-# generated Verilog in the build tree: shading_formats.vh, ua22802_a_rom.v, rom_sweep/) and
+# generated Verilog in the build tree: shading_formats.vh, ua22802_a_rom.v, rom_sweep/, sqmul_word/) and
 # SHADING_RTL_INCLUDE_DIRS (every folder the specular devices' modules are found in),
 # SHADING_RTL_SQUARED_DIRS (the same for the squared-quadratic device and its comparison designs),
 # and defines shading_verilate_rtl, shading_verilate_specular and shading_verilate_squared (below).
@@ -22,6 +22,15 @@ set(SHADING_RTL_SQUARED_DIRS ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_DIR}/square
 set(SHADING_RTL OFF)
 set(SHADING_RTL_TRACE OFF)
 if(NOT SHADING_TOP_LEVEL)
+  return()
+endif()
+# scripts/test.sh --sanitize turns this off: Verilator's generated models are not ours (compiled
+# uninstrumented even there) and the normal run co-simulates every one, so the instrumented build
+# spends its time on the project's own code; the RTL tests are then registered as skipped.
+option(SHADING_VERILATE "Verilate the RTL twin and co-simulate it with the model (needs verilator)" ON)
+if(NOT SHADING_VERILATE)
+  set(SHADING_RTL_SKIP_REASON "the RTL is not verilated in this build (SHADING_VERILATE=OFF: scripts/test.sh --sanitize leaves the co-simulation to the normal run)")
+  message(STATUS "${SHADING_RTL_SKIP_REASON}")
   return()
 endif()
 find_package(verilator QUIET HINTS $ENV{VERILATOR_ROOT})
@@ -171,6 +180,12 @@ _shading_gen_rtl(ua22802_a_rom.v rom)  # the device's ROM: ua22802::a_fmt
 foreach(_f RANGE 2 10)
   _shading_gen_rtl(rom_sweep/ua22802_a_rom_f${_f}.v rom ${_f} ua22802_a_rom_f${_f})
 endforeach()
+# The formats with the square-and-multiply designs' P word at the word-length study's sizes
+# (studies/accuracy, sqmul_study: Q1.15 .. Q1.20), sqmul_word/p<F>/shading_formats.vh, for the
+# synthesis flow (its folder first on the include path).
+foreach(_f RANGE 15 20)
+  _shading_gen_rtl(sqmul_word/p${_f}/shading_formats.vh formats ${_f})
+endforeach()
 
 # The same generator as a build target, for scripts that want other fraction-bit counts.
 add_executable(gen_rtl ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp)
@@ -231,15 +246,21 @@ function(shading_verilate_specular target prefix)
                        DIRS ${SHADING_RTL_INCLUDE_DIRS} ARGS -GAGEN=${ARG_AGEN} -GSATURATE=${ARG_SATURATE})
 endfunction()
 
-# shading_verilate_squared(<target> <prefix> TOP <squared_device|squared_series_device|sqmul_device> SATURATE <0|1>)
-#   The squared-quadratic device (rtl/squared), its series variant or the square-and-multiply
-#   baseline (rtl/sqmul), in that overflow mode.
+# shading_verilate_squared(<target> <prefix> TOP <squared_device|squared_series_device|sqmul_device|sqmul_r2l_device>
+#                          SATURATE <0|1> [WORD <F>])
+#   The squared-quadratic device (rtl/squared), its series variant or a square-and-multiply design
+#   (rtl/sqmul: the left-to-right baseline, the right-to-left one), in that overflow mode; WORD: a
+#   square-and-multiply design at the P word Q1.F (the formats of sqmul_word/p<F>/ found first).
 function(shading_verilate_squared target prefix)
-  cmake_parse_arguments(ARG "" "TOP;SATURATE" "" ${ARGN})
+  cmake_parse_arguments(ARG "" "TOP;SATURATE;WORD" "" ${ARGN})
   set(_dir squared)
   if(ARG_TOP MATCHES "^sqmul")
     set(_dir sqmul)
   endif()
+  set(_dirs ${SHADING_RTL_SQUARED_DIRS})
+  if(ARG_WORD)
+    set(_dirs ${SHADING_RTL_GENERATED}/sqmul_word/p${ARG_WORD} ${_dirs})
+  endif()
   shading_verilate_rtl(${target} ${prefix} TOP ${ARG_TOP} SOURCE ${SHADING_RTL_DIR}/${_dir}/${ARG_TOP}.v
-                       DIRS ${SHADING_RTL_SQUARED_DIRS} ARGS -GSATURATE=${ARG_SATURATE})
+                       DIRS ${_dirs} ARGS -GSATURATE=${ARG_SATURATE})
 endfunction()

@@ -3,13 +3,17 @@
 # scripts/build.sh: the model, its tests and the programs (SHADING_BUILD_STUDIES=OFF).
 # scripts/build.sh --studies: the studies too (studies/, SHADING_BUILD_STUDIES=ON), what scripts/run.sh
 # runs. Either sets the option on an existing build/ as well, re-configuring only when it changes.
+# scripts/build.sh [--studies] TARGET...: only those targets (and what they need), as scripts/run.sh
+# builds the programs its steps run and not the test suites.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 studies=OFF
+targets=()
 for arg in "$@"; do
   case "$arg" in
     --studies) studies=ON ;;
-    *) echo "usage: scripts/build.sh [--studies]" >&2; exit 2 ;;
+    -*) echo "usage: scripts/build.sh [--studies] [TARGET...]" >&2; exit 2 ;;
+    *) targets+=(--target "$arg") ;;
   esac
 done
 scripts/setup.sh
@@ -20,4 +24,4 @@ if [ ! -f build/CMakeCache.txt ]; then
 elif ! grep -qx "SHADING_BUILD_STUDIES:BOOL=$studies" build/CMakeCache.txt; then
   cmake -S . -B build -DSHADING_BUILD_STUDIES="$studies"
 fi
-cmake --build build -j "$(nproc)"
+cmake --build build -j "$(nproc)" "${targets[@]}"

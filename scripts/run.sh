@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The main job: install what is missing (as root), configure, build in Release with the studies
-# (scripts/build.sh --studies: run.d/30 and 40 run study programs), run every testbench and study,
-# then print one summary table. Each step is a script in scripts/run.d/,
+# The main job: install what is missing (as root), configure, build in Release the programs the steps
+# run (scripts/build.sh --studies with their targets: run.d/30 and 40 run study programs; the test
+# suites are scripts/test.sh's), run every testbench and study, then print one summary table and
+# how long each phase took. Each step is a script in scripts/run.d/,
 # run in name order; each appends rows to out/summary.tsv:
 #   bench <TAB> case <TAB> samples <TAB> mismatches <TAB> max_error <TAB> cycles_per_pixel <TAB> note
 # VCDs go to traces/, CSV and PNG results to out/. Every testbench program takes the same options
@@ -12,19 +13,30 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
+start=$SECONDS
+took() { echo "run.sh: $1 took $(( (SECONDS - $2) / 60 )) min $(( (SECONDS - $2) % 60 )) s"; }
 scripts/setup.sh plots  # matplotlib for the figures of run.d/30, 40 and 70
-scripts/build.sh --studies
+took setup "$start"
+# The programs the steps run, not the test suites (scripts/test.sh builds and runs those).
+t=$SECONDS
+scripts/build.sh --studies ua60553_tb ua22802_tb squared_tb interp_coef_tb interp_fd_tb interp_horner_tb \
+                           interp_line_tb render_reference render_pipeline accuracy_study generator_search \
+                           head_study interp_study
+took build "$t"
 mkdir -p out traces
 export SHADING_BIN="$PWD/build/bin" SHADING_OUT="$PWD/out" SHADING_SUMMARY="$PWD/out/summary.tsv"
 printf 'bench\tcase\tsamples\tmismatches\tmax_error\tcycles_per_pixel\tnote\n' > "$SHADING_SUMMARY"
 status=0
 for step in scripts/run.d/*.sh; do
   echo "== ${step}"
+  t=$SECONDS
   if ! bash "$step"; then
     echo "run: ${step} FAILED" >&2
     status=1
   fi
+  took "$(basename "$step")" "$t"
 done
+took "setup, build and steps" "$start"
 echo
 echo "Summary (out/summary.tsv):"
 column -t -s $'\t' "$SHADING_SUMMARY"

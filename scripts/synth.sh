@@ -8,11 +8,13 @@
 # which has no transistor count for them, counts every cell. The clocked designs' paths of each
 # kind (register to register, strobe to register, register to outputs) are measured apart (paths.csv). UA 22802's ROM is synthesized as logic and, separately, counted
 # as memory bits (the case table read as a memory by yosys's proc_rom), also at every size of the
-# accuracy study's fraction-bit sweep. Writes, in the output folder:
+# accuracy study's fraction-bit sweep; the square-and-multiply designs also at other P words (the
+# generated formats of sqmul_word/p<F>/ first on the include path). Writes, in the output folder:
 #   synth.csv, synth.md   one row per variant, beside our hand count (out/hw_cost.csv when
 #                         scripts/run.sh's accuracy step wrote it) - scripts/synth/summarize.py;
-#                         synth.md ends with the squared-quadratic device's comparison table
-#   paths.csv             the depth of each measured path of the squared-quadratic designs
+#                         synth.md ends with the squared-quadratic device's comparison table and
+#                         the square-and-multiply designs' table
+#   paths.csv             the depth of each measured path of the clocked designs
 #   ys/<variant>.ys       the yosys script of each variant (rerun one: yosys -s ys/<variant>.ys)
 #   logs/<variant>.log    yosys's log
 # Usage: scripts/synth.sh [--build DIR] [--out DIR] [--jobs N] [--only REGEX] [--extra]
@@ -42,7 +44,7 @@ if ! command -v yosys > /dev/null; then
   exit 3
 fi
 gen=$(cd "$build" 2> /dev/null && pwd)/generated/rtl
-for f in shading_formats.vh interp_terms.vh ua22802_a_rom.v rom_sweep/ua22802_a_rom_f6.v; do
+for f in shading_formats.vh interp_terms.vh ua22802_a_rom.v rom_sweep/ua22802_a_rom_f6.v sqmul_word/p16/shading_formats.vh; do
   if [ ! -f "$gen/$f" ]; then
     echo "synth: $gen/$f is missing: configure $build with Verilator installed (cmake/verilator.cmake generates it)" >&2
     exit 2
@@ -162,6 +164,29 @@ EOF
        resynth_keep sqmul_device "-chparam SATURATE 1" "sqmul_stage/w:mx_b_operand sqmul_stage/w:mul_p_product"
        cut_block stage.mx_b_operand stage.mul_p_product
        path sqmul_saturate rg2_to_load rg2.q stage.rg_p.q)"
+  # The right-to-left square-and-multiply design: a squarer and a multiplier written in one clock
+  # per bit of n. Its register-to-register paths (each a whole clock: RG_X -> MUL_X -> MX_X -> RG_X,
+  # RG_P -> MUL_P -> MX_P -> RG_P, RG_X -> MUL_P -> RG_P), the load RG2 -> clamp -> MX_X -> RG_X
+  # (half a clock after the strobe at worst: no multiplier on it), RG1 -> controller, RG_P -> outputs.
+  r2l=sqmul_r2l_saturate
+  variant $r2l sqmul_r2l_device "" "-chparam SATURATE 1" "$rtl_sources" \
+    "$(path $r2l loop stage.rg_p.q stage.rg_p.q; path $r2l loop_x stage.rg_x.q stage.rg_x.q
+       path $r2l x_to_p stage.rg_x.q stage.rg_p.q; path $r2l rg2_to_load rg2.q stage.rg_x.q
+       path $r2l rg1_to_ctrl rg1.q stage.ctl.bits; path $r2l to_outputs stage.rg_p.q pin:out25_r)"
+  # Both square-and-multiply designs at other P words (the word-length study, studies/accuracy):
+  # the formats of sqmul_word/p<F>/ found first on the include path, the same RTL.
+  for f in 15 16 17 20; do
+    includes="-I$gen/sqmul_word/p$f -I$gen -I$root/rtl/squared -I$root/rtl/sqmul" \
+      variant "sqmul_p$f" sqmul_device "" "-chparam SATURATE 1" "$rtl_sources" \
+      "$(path sqmul_p$f loop stage.rg_p.q stage.rg_p.q; path sqmul_p$f rg2_to_multiply rg2.q stage.rg_p.q
+         path sqmul_p$f to_outputs stage.rg_p.q pin:out25_r)"
+  done
+  for f in 16; do
+    includes="-I$gen/sqmul_word/p$f -I$gen -I$root/rtl/squared -I$root/rtl/sqmul" \
+      variant "sqmul_r2l_p$f" sqmul_r2l_device "" "-chparam SATURATE 1" "$rtl_sources" \
+      "$(path sqmul_r2l_p$f loop stage.rg_p.q stage.rg_p.q; path sqmul_r2l_p$f loop_x stage.rg_x.q stage.rg_x.q
+         path sqmul_r2l_p$f x_to_p stage.rg_x.q stage.rg_p.q; path sqmul_r2l_p$f to_outputs stage.rg_p.q pin:out25_r)"
+  done
   # The ROM alone at the fraction-bit sweep's sizes (F = 2..10; the device's is F = 6).
   for rom in $(ls "$gen"/rom_sweep/ua22802_a_rom_f*.v | sort -V); do
     f=$(basename "$rom" .v | sed 's/.*_f//')

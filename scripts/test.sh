@@ -4,7 +4,9 @@
 # Extra arguments go to ctest, e.g. scripts/test.sh -R UA60553Device
 # scripts/test.sh [--sanitize] [--studies] [ctest args]:
 #   --sanitize  the same suite (bench short runs included) built in build-asan/ with AddressSanitizer
-#               (leak checking on) and UndefinedBehaviorSanitizer; any finding fails its test;
+#               (leak checking on) and UndefinedBehaviorSanitizer; any finding fails its test; the RTL
+#               is not verilated there (SHADING_VERILATE=OFF: Verilator's models are not our code, the
+#               normal run co-simulates them), its tests report skipped;
 #   --studies   the studies (studies/, SHADING_BUILD_STUDIES=ON) built and tested too; without it the
 #               build is the model, its tests and the programs (the option is set either way, so an
 #               existing build follows it).
@@ -41,9 +43,10 @@ if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cc
 # (docs/tests.md) while the suite, dominated by process start-up, runs as fast; asserts stay on.
 if [ ! -f build-asan/CMakeCache.txt ]; then
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" \
-        -DSHADING_SANITIZE=ON -DSHADING_BUILD_STUDIES="$studies" "${launcher[@]}"
-elif ! grep -qx "SHADING_BUILD_STUDIES:BOOL=$studies" build-asan/CMakeCache.txt; then
-  cmake -S . -B build-asan -DSHADING_BUILD_STUDIES="$studies"
+        -DSHADING_SANITIZE=ON -DSHADING_VERILATE=OFF -DSHADING_BUILD_STUDIES="$studies" "${launcher[@]}"
+elif ! grep -qx "SHADING_BUILD_STUDIES:BOOL=$studies" build-asan/CMakeCache.txt ||
+     ! grep -qx "SHADING_VERILATE:BOOL=OFF" build-asan/CMakeCache.txt; then
+  cmake -S . -B build-asan -DSHADING_VERILATE=OFF -DSHADING_BUILD_STUDIES="$studies"
 fi
 cmake --build build-asan -j "$(nproc)"
 took "sanitizer build" "$start"

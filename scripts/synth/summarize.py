@@ -111,7 +111,11 @@ DESCRIPTIONS = {
     "squared_wrap": "squared-quadratic device (ours), iterative stage, wrapping ADD11",
     "squared_series": "squared-quadratic device (ours), series stage (9 squarers), saturating",
     "sqmul_saturate": "square-and-multiply baseline (one multiplier over the bits of n), saturating",
+    "sqmul_r2l_saturate": "square-and-multiply, right to left (a squarer and a multiplier per bit of n), saturating",
 }
+for _f in range(15, 21):
+    DESCRIPTIONS["sqmul_p%d" % _f] = "square-and-multiply baseline at a Q1.%d P word, saturating" % _f
+    DESCRIPTIONS["sqmul_r2l_p%d" % _f] = "square-and-multiply, right to left, at a Q1.%d P word, saturating" % _f
 
 # Rising edges of clk from strobe 17's fall to output 29's rise (the taking edge, one per step,
 # the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v and rtl/sqmul/sqmul_ctrl.v
@@ -121,7 +125,15 @@ CLOCKS = {
     "squared_saturate": lambda n: n.bit_length() + 1,
     "squared_wrap": lambda n: n.bit_length() + 1,
     "sqmul_saturate": lambda n: n.bit_length() + bin(n).count("1"),
+    # rtl/sqmul/sqmul_r2l_ctrl.v: the taking edge, one per bit of n, the done edge = floor(log2 n) + 3.
+    "sqmul_r2l_saturate": lambda n: n.bit_length() + 2,
 }
+
+
+def clocks_of(variant):
+    """The clocks-per-sample rule of a variant (a word-length row: its design's)."""
+    m = re.match(r"(sqmul(?:_r2l)?)_p\d+$", variant)
+    return CLOCKS.get(m.group(1) + "_saturate" if m else variant)
 
 # The designs of the squared-quadratic comparison, in the table's order, and what each path is.
 COMPARISON = ("ua60553_saturate", "ua60553_patent", "ua22802", "squared_saturate", "squared_wrap",
@@ -130,29 +142,38 @@ PATHS = {
     "loop": "register to register, the clock period: RG_SQ / RG_P -> multiplier (-> MX_B) -> multiplexer -> itself",
     "rg2_to_load": "strobe 17 to register: RG2 -> ... -> RG_SQ / RG_P at the load, half a clock after the strobe at worst",
     "rg1_to_load": "strobe 15 to register: RG1 -> generator -> MUL10 -> ADD11 -> RG_SQ at the load",
-    "rg1_to_ctrl": "strobe 15 to register: RG1 -> LZC (-> BSH1) -> the controller, at the taking edge",
+    "rg1_to_ctrl": "strobe 15 to register: RG1 -> LZC (-> BSH1) -> the controller, at the taking edge (right to "
+                   "left: RG1 -> the controller's bits register, no LZC)",
     "rg2_to_multiply": "RG2 -> clamp -> MX_B -> MUL_P -> MX_P -> RG_P in a multiplication step (2.5 clocks after the strobe at the earliest)",
     "to_outputs": "result register -> colour multiplier -> output 25, within the done edge's half clock",
     "rg2_to_outputs": "strobe 17 to output: RG2 -> Fig. 1 at n' -> 9 squarers -> MUL12 -> output 25",
+    "loop_x": "register to register (right to left): RG_X -> MUL_X -> MX_X -> RG_X",
+    "x_to_p": "register to register (right to left): RG_X -> MUL_P -> MX_P -> RG_P",
     "rg1_to_outputs": "strobe 15 to output: RG1 -> generator -> MUL10 -> ... -> 9 squarers -> output 25",
 }
 
 
-def write_comparison(out, by):
+def read_paths(out, names):
+    """The measured paths of every variant of this run ({variant: {label: depth}}), also as paths.csv."""
+    paths = {}
+    for f in sorted(glob.glob(os.path.join(out, "logs", "*.path.*.ltp"))):
+        variant, label = os.path.basename(f)[:-len(".ltp")].split(".path.")
+        if variant in names:
+            paths.setdefault(variant, {})[label] = parse_ltp(f)
+    with open(os.path.join(out, "paths.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["variant", "path", "depth_gates", "what"])
+        for v in names:
+            for label, depth in paths.get(v, {}).items():
+                w.writerow([v, label, depth, PATHS.get(label, "")])
+    return paths
+
+
+def write_comparison(out, by, paths):
     """The squared-quadratic device beside UA 60553, UA 22802 and its two comparison designs:
     transistors, depth, clocks per sample (n in [1, 1000]: worst, at n = 20, mean) and paths."""
     if not all(k in by for k in COMPARISON):
         return
-    paths = {}
-    for f in sorted(glob.glob(os.path.join(out, "logs", "*.path.*.ltp"))):
-        variant, label = os.path.basename(f)[:-len(".ltp")].split(".path.")
-        paths.setdefault(variant, {})[label] = parse_ltp(f)
-    with open(os.path.join(out, "paths.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["variant", "path", "depth_gates", "what"])
-        for v in COMPARISON:
-            for label, depth in paths.get(v, {}).items():
-                w.writerow([v, label, depth, PATHS.get(label, "")])
     ref = by["ua60553_saturate"]["transistors"]
     with open(os.path.join(out, "synth.md"), "a") as f:
         f.write("\n## The squared-quadratic device and the designs it is compared with\n\n")
@@ -173,6 +194,49 @@ def write_comparison(out, by):
                 r["description"], r["transistors"], r["transistors"] / ref, r["cells"], r["flip_flops"],
                 r["depth_gates"], clocks, p))
         f.write("\nPaths: %s.\n" % "; ".join("**%s** %s" % (k, v) for k, v in PATHS.items()))
+
+
+SQMUL_ORDER = ("sqmul_p15", "sqmul_p16", "sqmul_p17", "sqmul_saturate", "sqmul_p20", "sqmul_r2l_p16", "sqmul_r2l_saturate")
+REG_TO_REG = ("loop", "loop_x", "x_to_p", "rg2_to_multiply")
+
+
+def clock_bound(p):
+    """The clock period in gate delays (50 % duty, strobe 17 asynchronous to clk; rtl/README.md): every
+    register-to-register path in a whole clock, the result-to-outputs path in the half clock before the
+    done edge, the load in the half clock after the strobe at worst (both doubled)."""
+    whole = [p[k] for k in REG_TO_REG if p.get(k) is not None]
+    half = [p[k] for k in ("to_outputs", "rg2_to_load") if p.get(k) is not None]
+    return max(whole + [2 * d for d in half]) if whole or half else None
+
+
+def write_sqmul_designs(out, by, paths):
+    """The square-and-multiply designs of this run, left to right and right to left, at each P word:
+    transistors, flip-flops, paths, the clock bound and the time per sample in gate delays."""
+    rows = [v for v in SQMUL_ORDER if v in by]
+    if not rows:
+        return
+    ref = by.get("ua60553_saturate", {}).get("transistors")
+    ns = (5, 20, 100, 1000)
+    with open(os.path.join(out, "synth.md"), "a") as f:
+        f.write("\n## The square-and-multiply designs\n\n")
+        f.write("Clock bound in gate delays: max(register-to-register paths, 2 x result-to-outputs, 2 x load) "
+                "(strobe 17 asynchronous to clk, 50 %% duty). Clocks per sample at n = %s and the mean over n in "
+                "[1, 1000]; time per sample = clock bound x clocks.%s\n\n" % (
+                    ", ".join(str(n) for n in ns),
+                    " Transistors against UA 60553 saturating (%d, this run)." % ref if ref else ""))
+        f.write("| design | transistors | x UA 60553 sat. | cells (flip-flops) | paths (gates) | clock bound | "
+                "clocks: %s / mean | time per sample: %s / mean |\n|---|---|---|---|---|---|---|---|\n" % (
+                    " / ".join("n = %d" % n for n in ns), " / ".join("n = %d" % n for n in ns)))
+        for v in rows:
+            r, p, rule = by[v], paths.get(v, {}), clocks_of(v)
+            bound = clock_bound(p)
+            c = [rule(n) for n in ns]
+            mean = sum(rule(n) for n in range(1, 1001)) / 1000
+            times = " / ".join(str(bound * k) for k in c) + " / %.0f" % (bound * mean) if bound else "—"
+            f.write("| %s | %d | %s | %d (%d) | %s | %s | %s / %.2f | %s |\n" % (
+                r["description"], r["transistors"], "%.2f" % (r["transistors"] / ref) if ref else "—", r["cells"],
+                r["flip_flops"], "; ".join("%s %s" % (k, d) for k, d in p.items()) or "—", bound or "—",
+                " / ".join(str(k) for k in c), mean, times))
 
 
 
@@ -289,7 +353,9 @@ def main():
                         (mem["transistors"] + mem["memory_bits"]) / free["transistors"],
                         free["depth_gates"], rom["depth_gates"]))
     write_differences(args.out, by, fmt)
-    write_comparison(args.out, by)
+    paths = read_paths(args.out, names)
+    write_comparison(args.out, by, paths)
+    write_sqmul_designs(args.out, by, paths)
 
     # Every ROM read as a memory must hold exactly words x word bits of the format tables
     # (ua22802_formats.h via shading_formats.vh): the device's ROM (F = 6) is UA22802_ROM_BITS.

@@ -284,6 +284,17 @@ std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o
     return std::nullopt;
 }
 
+std::optional<int> parse_sqmul_study(int argc, char** argv, sqmul_study_options& o) {
+    CLI::App app{"the square-and-multiply designs, left to right and right to left, at P words Q1.15..Q1.20"};
+    app.add_option("--out", o.out, "output directory");
+    app.add_option("--size", o.size, "the head's image size")->check(CLI::Range(16u, 4096u));
+    app.add_option("--n", o.ns, "exponents to render (comma-separated, 1..1000)")->delimiter(',')->check(CLI::Range(1u, 1000u));
+    app.add_option("--n-max", o.n_max, "relative errors over n in [1, n-max]")->check(CLI::Range(1u, 1000u));
+    app.add_option("--data-dir", o.data_dir, "repository root holding data/head/");
+    SHADING_CLI_PARSE(app, argc, argv);
+    return std::nullopt;
+}
+
 std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o) {
     CLI::App app{"the shading components interpolated apart (as the interpolation paper does) against their sum"};
     add_study_scene(app, o.scene, o.size, o.data_dir, o.device);

@@ -1,6 +1,6 @@
 // The command lines of the studies and tools that are not testbenches (interp_study, soak_pipeline,
 // render_reference, bench_specular_tlm, accuracy_study, generator_search, head_study,
-// components_study) as plain
+// sqmul_study, components_study) as plain
 // structs, and one parse function per program, as in bench_options.h: the struct filled, an exit
 // status returned when the program must stop (0 after --help, 2 for bad usage), nothing when it
 // runs. No side effect beyond printing help or the usage error (program_options.cpp, CLI11).
@@ -71,6 +71,13 @@ struct head_study_options {
     unsigned size = 512;       // 16..4096
     std::vector<unsigned> ns{2, 5, 10, 20, 50, 100, 200, 500, 1000};  // each 1..1000
     unsigned scan_max = 1000;  // 0..1000
+};
+
+struct sqmul_study_options {
+    std::string out = "out", data_dir = default_data_dir();
+    unsigned size = 512;                                                  // 16..4096
+    std::vector<unsigned> ns{2, 5, 10, 20, 50, 100, 200, 500, 1000};  // each 1..1000: the head renders
+    unsigned n_max = 1000;                                                // 1..1000: the relative errors
 };
 
 // components_study: the built-in scene (head, sphere, torus), the tolerances tried per design (8-bit
@@ -150,6 +157,7 @@ std::optional<int> parse_bench_line_tlm(int argc, char** argv, bench_line_tlm_op
 std::optional<int> parse_accuracy_study(int argc, char** argv, accuracy_study_options& o);
 std::optional<int> parse_generator_search(int argc, char** argv, generator_search_options& o);
 std::optional<int> parse_head_study(int argc, char** argv, head_study_options& o);
+std::optional<int> parse_sqmul_study(int argc, char** argv, sqmul_study_options& o);
 std::optional<int> parse_components_study(int argc, char** argv, components_study_options& o);
 std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o);
 std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_options& o);

@@ -29,12 +29,14 @@ if(TARGET shading_pipeline)
   set(rp_tests)
   # End to end on a small head through both pipelines: exit 0 (the SystemC frame equal to the golden
   # one bit for bit), then the report must hold the measured pairs, the operation counts and the files.
+  # The renders name their device (UA 60553 with the patent's constants), not the program's default,
+  # so that each test keeps testing the same pipeline.
   set(rp_sim --sim)
   if(NOT TARGET shading_pipeline_sim)
     set(rp_sim --no-sim)
   endif()
   add_test(NAME pipeline.render.head48
-           COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 48 $2 --out \"$1\""
+           COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 48 --device patent $2 --out \"$1\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/head48 ${rp_sim})
   add_test(NAME pipeline.render.head48.report
            COMMAND sh -c "for f in phong hardware per_pixel error_interp error_total degree_map interval_map zone_map sheet; do test -s \"$0/$f.png\" || exit 1; done; for k in '\"interpolation\"' '\"total\"' '\"brdf\"' '\"nmse\"' '\"phong_long_over_hardware_long\"' '\"scanline_phong_long_over_hardware_long\"' '\"displayed_8bit\"' '\"phong_scanline\"' '\"clocks_per_pixel\"' '\"forehead\"' '\"pixels_over\"'; do grep -q \"$k\" \"$0/report.json\" || { echo missing $k; exit 1; }; done; test -s \"$0/report.md\""
@@ -44,18 +46,18 @@ if(TARGET shading_pipeline)
   # The lit guard from the command line, on a head lit from the side: the SystemC frame equal to the
   # golden one (exit 0) and the option in the report's configuration.
   add_test(NAME pipeline.render.lit_guard
-           COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 96 --light=-40,25 --n 5 --length adaptive --degree cubic --split-at-check --carry-samples --lit-guard --eval fd --no-images $2 --out \"$1\" && grep -q '\"lit_guard\": true' \"$1/report.json\""
+           COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene head --size 96 --device patent --light=-40,25 --n 5 --length adaptive --degree cubic --split-at-check --carry-samples --lit-guard --eval fd --no-images $2 --out \"$1\" && grep -q '\"lit_guard\": true' \"$1/report.json\""
                    $<TARGET_FILE:render_pipeline> ${rp_out}/lit_guard ${rp_sim})
   list(APPEND rp_tests pipeline.render.lit_guard)
   if(TARGET shading_pipeline_sim)
     # The bit-exact check can fail: one golden pixel corrupted (hidden --inject-mismatch) must give
     # exit 1 and no report.
     add_test(NAME pipeline.render.inject_mismatch
-             COMMAND sh -c "rm -rf \"$1\"; \"$0\" --scene head --size 32 --sim --inject-mismatch --out \"$1\"; test $? -eq 1 && test ! -e \"$1/report.json\""
+             COMMAND sh -c "rm -rf \"$1\"; \"$0\" --scene head --size 32 --device patent --sim --inject-mismatch --out \"$1\"; test $? -eq 1 && test ! -e \"$1/report.json\""
                      $<TARGET_FILE:render_pipeline> ${rp_out}/inject)
     # --vcd writes the SystemC pipeline's trace.
     add_test(NAME pipeline.render.vcd
-             COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene sphere --size 16 --sim --no-images --vcd \"$1/pipeline.vcd\" --out \"$1\" && test -s \"$1/pipeline.vcd\""
+             COMMAND sh -c "rm -rf \"$1\" && \"$0\" --scene sphere --size 16 --device patent --sim --no-images --vcd \"$1/pipeline.vcd\" --out \"$1\" && test -s \"$1/pipeline.vcd\""
                      $<TARGET_FILE:render_pipeline> ${rp_out}/vcd)
     list(APPEND rp_tests pipeline.render.inject_mismatch pipeline.render.vcd)
   endif()

@@ -21,7 +21,8 @@ if(TARGET shading_pipeline_sim)
   target_link_libraries(render_cells PRIVATE shading_pipeline_sim shading_pipeline shading_options
                         shading_tb_common)
   set_target_properties(render_cells PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
-  add_test(NAME pipeline.render_cells COMMAND render_cells --size 96 --tol 1 WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  add_test(NAME pipeline.render_cells COMMAND render_cells --size 96 --device squared --tol 1
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
   set_tests_properties(pipeline.render_cells PROPERTIES TIMEOUT 300 LABELS render_cells
                        PASS_REGULAR_EXPRESSION "the frame is the golden model's")
   shading_add_usage_test(render_cells ARGS --size 8)

@@ -9,6 +9,9 @@
 // Rtl is any module with the device's pins: a Verilated class built with --pins-sc-uint (pins of
 // 2..64 wires are sc_uint<W>, as ours), or a user's own RTL the same way (README). A device with a
 // clk pin (the squared-quadratic device) gets an sc_clock of the timing's period, shared by both.
+// Stimulus is the specular stimulus or any module with its pins and a (name, items, strobe_timing)
+// constructor (its `items` type, if it names one: the squared device's restart stimulus);
+// ModelMonitor samples the model's pins (the specular monitor, or a faulty one for negative tests).
 #pragma once
 
 #include <deque>
@@ -16,6 +19,7 @@
 #include <sstream>
 #include <string>
 #include <systemc>
+#include <type_traits>
 #include <utility>
 
 #include "core/report_ids.h"
@@ -25,10 +29,22 @@
 
 namespace shading::tb {
 
-template <typename Device, typename Rtl>
+// The stream a stimulus takes: its own `items` type, or the specular stimulus's surfaces.
+template <typename S, typename = void>
+struct stimulus_items {
+    using type = item_source<surface>;
+};
+template <typename S>
+struct stimulus_items<S, std::void_t<typename S::items>> {
+    using type = typename S::items;
+};
+
+template <typename Device, typename Rtl, typename Stimulus = specular_stimulus,
+          typename ModelMonitor = specular_monitor>
 // The Fig. 1 bundle (specular/fig1_pins.h): the inputs both devices read, the SystemC model's outputs.
 class rtl_cosim_bench : public sc_core::sc_module, public fig1_signals {
 public:
+    using items = typename stimulus_items<Stimulus>::type;
     // The RTL's outputs.
     sc_core::sc_signal<out_t> rtl_out25_r{"rtl_out25_r"}, rtl_out26_g{"rtl_out26_g"}, rtl_out27_b{"rtl_out27_b"};
     sc_core::sc_signal<bool> rtl_out29_valid{"rtl_out29_valid"};
@@ -37,13 +53,14 @@ public:
     std::unique_ptr<sc_core::sc_clock> clk;  // devices with a clk pin only
     Device dut;
     Rtl rtl;
-    specular_stimulus stim;
-    specular_monitor mon, rtl_mon;
+    Stimulus stim;
+    ModelMonitor mon;
+    specular_monitor rtl_mon;
 
     // `golden` checks both devices; `rtl_golden` (for the negative tests) replaces it for the RTL.
     // Fig. 3's default strobe timing.
     template <typename... DeviceArgs>
-    rtl_cosim_bench(const sc_core::sc_module_name& name, item_source<surface> surfaces,
+    rtl_cosim_bench(const sc_core::sc_module_name& name, items surfaces,
                     specular_checker::golden_fn golden, specular_checker::golden_fn rtl_golden,
                     DeviceArgs&&... device_args)
         : rtl_cosim_bench(name, std::move(surfaces), strobe_timing{}, std::move(golden), std::move(rtl_golden),
@@ -51,7 +68,7 @@ public:
 
     // The same with a strobe timing (and its clock period, for a device with a clk pin).
     template <typename... DeviceArgs>
-    rtl_cosim_bench(const sc_core::sc_module_name& name, item_source<surface> surfaces, const strobe_timing& t,
+    rtl_cosim_bench(const sc_core::sc_module_name& name, items surfaces, const strobe_timing& t,
                     specular_checker::golden_fn golden, specular_checker::golden_fn rtl_golden,
                     DeviceArgs&&... device_args)
         : sc_module(name),

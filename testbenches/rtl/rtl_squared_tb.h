@@ -1,11 +1,13 @@
 // Testbench parts shared by the co-simulation of the squared-quadratic device's RTL
-// (test_rtl_squared.cpp) and the checks of the two designs it is compared with
-// (test_rtl_squared_variants.cpp): the strobe timings, a probe that logs when output 29 rises
-// after each latch, and the clocks per sample each design must take, from the golden models.
+// (test_rtl_squared.cpp, test_rtl_squared_cover.cpp) and the checks of the two designs it is
+// compared with (test_rtl_squared_variants.cpp): the strobe timings, a probe that logs when output
+// 29 rises after each latch, the clocks per sample each design must take, from the golden models,
+// and the checker's golden function and the typed suites' variants (an RTL and its overflow mode).
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <systemc>
 #include <vector>
 
@@ -14,6 +16,29 @@
 #include "testbenches/specular/specular_tb.h"
 
 namespace shading::tb {
+
+// The checker's golden function: golden_squared in mode m (of n + n_offset: for negative tests).
+inline specular_checker::golden_fn squared_golden(overflow_mode m, unsigned n_offset = 0) {
+    return [m, n_offset](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        datapath_nets r{};
+        r.out = golden_squared(n + n_offset, c, k, m).out;
+        return r;
+    };
+}
+
+// A verilated squared device and the overflow mode it was built with, for typed test suites.
+template <typename Rtl, overflow_mode Mode>
+struct squared_variant {
+    using rtl = Rtl;
+    static constexpr overflow_mode mode = Mode;
+};
+
+struct squared_variant_names {
+    template <typename T>
+    static std::string GetName(int) {
+        return T::mode == overflow_mode::saturate ? "Saturate" : "Wrap";
+    }
+};
 
 // A timing that shows the clocks per sample: strobe 17 low for 5 ns only, so output 29 = strobe
 // 17 AND done rises when done does; high for the rest of a period of `clocks` clocks. The
@@ -37,6 +62,11 @@ inline unsigned squared_edges(unsigned n) { return golden_squared_a(n).k + 2; }
 inline unsigned sqmul_edges(unsigned n) {
     const auto g = golden_sqmul(n, 0, {0, 0, 0}, overflow_mode::saturate);
     return g.squares + g.multiplies + 2;
+}
+// The right-to-left square-and-multiply design: the taking edge, one per bit of n up to its
+// leading one (a square and, for a 1 bit, a multiplication in the same clock), the done edge.
+inline unsigned sqmul_r2l_edges(unsigned n) {
+    return golden_sqmul_r2l(n, 0, {0, 0, 0}, overflow_mode::saturate).steps + 2;
 }
 
 // The instant of the `edges`-th rising edge of a clock rising at 0, period, 2 period, ... after t

@@ -1,10 +1,11 @@
 // The squared-quadratic device's RTL twin (rtl/squared, verilated with --sc) co-simulated with the
 // SystemC model (rtl_cosim_tb.h) on the same pins and clock, in both overflow modes: each RTL
 // sample bit-exact against golden_squared and against the model's sample (inputs, instant,
-// outputs) over every 16-bit cos code at n = 1, 3, 20, 1000, every n 0..1023, and 10^6 random
-// pixels (four runs of 250 000, one ctest entry each, so each stays within seconds); the clocks
-// per sample (output 29 rises k + 2 rising edges after the strobe) against the golden model's k;
-// negative tests show that both comparisons can fail.
+// outputs) over every 16-bit cos code at n = 1, 3, 20, 1000, every n 0..1023 (cos codes near
+// cos^n = 0.5, 0.1, 0.01), and 10^6 random pixels (four runs of 250 000, one ctest entry each, so
+// each stays within seconds); the clocks per sample (output 29 rises k + 2 rising edges after the
+// strobe) against the golden model's k; negative tests show that both comparisons can fail.
+// Dropped and restarted samples and bad inputs: test_rtl_squared_cover.cpp.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -17,6 +18,7 @@
 #include "arith/squared_arith.h"
 #include "rtl_cosim_tb.h"
 #include "rtl_squared_tb.h"
+#include "testbenches/squared/squared_cover.h"
 #include "squared/squared_device.h"
 #include "verilated.h"
 
@@ -30,20 +32,6 @@ using sc_core::SC_MS;
 using sc_core::sc_time;
 
 namespace {
-
-template <typename Rtl, overflow_mode Mode>
-struct variant {
-    using rtl = Rtl;
-    static constexpr overflow_mode mode = Mode;
-};
-
-specular_checker::golden_fn squared_golden(overflow_mode m, unsigned n_offset = 0) {
-    return [m, n_offset](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
-        datapath_nets r{};
-        r.out = golden_squared(n + n_offset, c, k, m).out;
-        return r;
-    };
-}
 
 template <typename T>
 class RtlSquared : public ::testing::Test {
@@ -91,19 +79,12 @@ protected:
     }
 };
 
-struct names {
-    template <typename T>
-    static std::string GetName(int) {
-        return T::mode == overflow_mode::saturate ? "Saturate" : "Wrap";
-    }
-};
-
-using variants = ::testing::Types<variant<Vrtl_squared_saturate, overflow_mode::saturate>,
-                                  variant<Vrtl_squared_wrap, overflow_mode::wrap>>;
+using variants = ::testing::Types<squared_variant<Vrtl_squared_saturate, overflow_mode::saturate>,
+                                  squared_variant<Vrtl_squared_wrap, overflow_mode::wrap>>;
 
 }  // namespace
 
-TYPED_TEST_SUITE(RtlSquared, variants, names);
+TYPED_TEST_SUITE(RtlSquared, variants, squared_variant_names);
 
 // Every cos code at n = 1 (no squaring), 3, 20 and 1000 (k = 1, 4, 9): up to 1.0, then above it
 // (reported by the model's range checker; ADD11 saturates to k_s*I or passes the wrapped bits on,
@@ -116,12 +97,24 @@ TYPED_TEST(RtlSquared, EveryCosCodeAboveOne) {
 
 TYPED_TEST(RtlSquared, EveryNIncludingOutOfRange) {
     // Every n the generator sees (0..1023: n = 0 and 1001..1023 reported by the model's range
-    // checker), four cos codes each.
+    // checker, once per load), each with the cos codes whose cos^n lies near 0.5, 0.1 and 0.01 and
+    // two neighbours either side (squared_cover.h), and 0.5, 0.75, 0.9375, 1.0.
     report_log::get().expect(msg::input);
-    std::vector<surface> s;
-    for (unsigned n = 0; n < (1u << squared::n_fmt.width); ++n)
-        s.push_back({n, {255, 17, 96}, {0x4000, 0x6000, 0x7800, spec::cos_one}});
-    this->run(s, s.size() * 4);
+    const auto s = level_surfaces(0, (1u << squared::n_fmt.width) - 1);
+    this->run(s, pixel_ns(s).size());
+    EXPECT_EQ(report_log::get().count(msg::input), input_reports(s));
+    // The codes reach the generator's whole range: at each n and level the nearest code's result is
+    // neither 0 nor full scale (golden_squared: 0 < out < the output at cos = 1.0).
+    unsigned flat = 0;
+    for (const auto& x : s)
+        for (double level : cos_pow_levels()) {
+            const uint32_t c = cos_codes_near_levels(x.n, {level}, 0).front();
+            const uint64_t out = golden_squared(x.n, c, {255, 0, 0}, TypeParam::mode).out[0];
+            const uint64_t full = golden_squared(x.n, spec::cos_one, {255, 0, 0}, TypeParam::mode).out[0];
+            if ((out == 0 || out >= full) && ++flat <= 10)
+                ADD_FAILURE() << "n = " << x.n << ", level " << level << ": cos 0x" << std::hex << c << " gives " << out;
+        }
+    EXPECT_EQ(flat, 0u);
 }
 
 TYPED_TEST(RtlSquared, OutputTwentyNineRisesKPlusTwoRisingEdgesAfterTheStrobe) {

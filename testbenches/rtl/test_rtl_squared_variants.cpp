@@ -1,12 +1,15 @@
-// The two designs the squared-quadratic device is compared with, verilated alone and checked
-// bit-exact against their golden models on the device pins: the series variant
+// The designs the squared-quadratic device is compared with, verilated and checked bit-exact
+// against their golden models on the device pins: the series variant
 // (rtl/squared/squared_series_device.v: 9 squarers with bypass multiplexers, combinational, Fig. 3
-// timing with no clock, no SystemC model; golden_squared) and the square-and-multiply device
-// (rtl/sqmul/sqmul_device.v: one multiplier over the bits of n; golden_sqmul; co-simulated with its
-// SystemC model in test_rtl_sqmul.cpp), both saturating
-// (the synthesis table's variants; no range checker: n = 0, n > 1000 and cos > 1.0 are simply
-// compared). Random pixels, every n 0..1023, every cos code at n = 1000, the baseline's clocks
-// per sample for every n, and a negative test.
+// timing with no clock, no SystemC model; golden_squared), the square-and-multiply baseline
+// (rtl/sqmul/sqmul_device.v: one multiplier over the bits of n, left to right; golden_sqmul;
+// co-simulated with its SystemC model in test_rtl_sqmul.cpp) and its right-to-left twin
+// (rtl/sqmul/sqmul_r2l_device.v: a squarer and a multiplier in one clock per bit; golden_sqmul_r2l;
+// no SystemC model), all saturating (the synthesis table's variants; no range checker: n = 0,
+// n > 1000 and cos > 1.0 are simply compared). Random pixels, every n 0..1023, every cos code at
+// n = 1000, the clocked designs' clocks per sample for every n, and negative tests; both
+// square-and-multiply designs also at the word-length study's Q1.16 P word (the same RTL read with
+// the formats of sqmul_word/p16/).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -15,6 +18,7 @@
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
+#include "formats/sqmul_formats.h"
 #include "formats/squared_formats.h"
 #include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
@@ -22,6 +26,9 @@
 #include "testbenches/specular/specular_tb.h"
 #include "verilated.h"
 
+#include "Vrtl_sqmul_p16.h"
+#include "Vrtl_sqmul_r2l_p16.h"
+#include "Vrtl_sqmul_r2l_saturate.h"
 #include "Vrtl_sqmul_saturate.h"
 #include "Vrtl_squared_series_saturate.h"
 
@@ -77,6 +84,45 @@ std::vector<surface> every_cos_code(unsigned n) {
     return {{n, {255, 170, 3}, codes}};
 }
 
+// golden_sqmul_r2l, for n + `n_offset` (a negative test's wrong exponent).
+specular_checker::golden_fn sqmul_r2l_golden(uint64_t n_offset = 0, unsigned p_frac = sqmul::p_frac) {
+    return [n_offset, p_frac](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        datapath_nets r{};
+        r.out = golden_sqmul_r2l(n + n_offset, c, k, sat, p_frac).out;
+        return r;
+    };
+}
+
+// golden_sqmul at another P word.
+specular_checker::golden_fn sqmul_word_golden(unsigned p_frac) {
+    return [p_frac](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        datapath_nets r{};
+        r.out = golden_sqmul(n, c, k, sat, p_frac).out;
+        return r;
+    };
+}
+
+// Every n 0..1023 (three codes) with strobe 17 low for 5 ns: output 29 must rise with done, at the
+// edges(n)-th rising edge after the strobe fell; the words checked against `golden` too.
+template <typename Rtl>
+void expect_every_n_and_clocks(specular_checker::golden_fn golden, unsigned (*edges)(unsigned), unsigned period) {
+    const auto s = every_n({0x4000, 0x7800, spec::cos_one});
+    const strobe_timing t = done_timing(period);
+    latency_probe probe("probe");
+    EXPECT_EQ(run_rtl<Rtl>(s, s.size() * 3, t, std::move(golden), &probe), 0u);
+    const auto ns = pixel_ns(s);
+    ASSERT_EQ(probe.falls.size(), ns.size());
+    ASSERT_EQ(probe.rises.size(), ns.size());
+    unsigned wrong = 0;
+    for (std::size_t i = 0; i < ns.size(); ++i) {
+        const sc_time want = rising_edge_after(probe.falls[i], t.clk_period, edges(ns[i]));
+        if (probe.rises[i] != want && ++wrong <= 10)
+            ADD_FAILURE() << "n = " << ns[i] << ": strobe fell at " << probe.falls[i] << ", output 29 rose at "
+                          << probe.rises[i] << ", want " << want << " (" << edges(ns[i]) << " rising edges)";
+    }
+    EXPECT_EQ(wrong, 0u);
+}
+
 class RtlSquaredVariants : public ::testing::Test {
 protected:
     void SetUp() override { Verilated::traceEverOn(true); }
@@ -109,21 +155,7 @@ TEST_F(RtlSquaredVariants, SqmulEveryNAndItsClocksPerSample) {
     // Every n 0..1023, bit-exact, with strobe 17 low for 5 ns: output 29 rises with done, at the
     // (squares + multiplies + 2)-th rising edge after the strobe fell (counts from golden_sqmul:
     // the taking edge, one per square and per multiplication, the done edge).
-    const auto s = every_n({0x4000, 0x7800, spec::cos_one});
-    const strobe_timing t = done_timing(42);  // n = 1023: 20 edges
-    latency_probe probe("probe");
-    EXPECT_EQ(run_rtl<Vrtl_sqmul_saturate>(s, s.size() * 3, t, sqmul_golden(), &probe), 0u);
-    const auto ns = pixel_ns(s);
-    ASSERT_EQ(probe.falls.size(), ns.size());
-    ASSERT_EQ(probe.rises.size(), ns.size());
-    unsigned wrong = 0;
-    for (std::size_t i = 0; i < ns.size(); ++i) {
-        const sc_time want = rising_edge_after(probe.falls[i], t.clk_period, sqmul_edges(ns[i]));
-        if (probe.rises[i] != want && ++wrong <= 10)
-            ADD_FAILURE() << "n = " << ns[i] << ": strobe fell at " << probe.falls[i] << ", output 29 rose at "
-                          << probe.rises[i] << ", want " << want << " (" << sqmul_edges(ns[i]) << " rising edges)";
-    }
-    EXPECT_EQ(wrong, 0u);
+    expect_every_n_and_clocks<Vrtl_sqmul_saturate>(sqmul_golden(), sqmul_edges, 42);  // n = 1023: 20 edges
     // Hand-worked: n = 1000 = 0b1111101000: 9 squares and 5 multiplications, 16 edges; n = 20: 7.
     EXPECT_EQ(sqmul_edges(1000), 16u);
     EXPECT_EQ(sqmul_edges(20), 7u);
@@ -135,4 +167,68 @@ TEST_F(RtlSquaredVariants, AnRtlThatDiffersFromItsGoldenIsCaught) {
     report_log::get().expect(msg::mismatch);
     std::vector<surface> s{{20, {255, 255, 255}, {0x7000, 0x7800, 0x7C00}}};
     EXPECT_EQ(run_rtl<Vrtl_sqmul_saturate>(s, 3, sqmul_timing(), series_golden()), 3u);
+}
+
+// The right-to-left design: the baseline's pixel period (its longest result takes 12 clocks).
+TEST_F(RtlSquaredVariants, SqmulR2lRandom) {
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(random_surfaces(250000, 13), 250000, sqmul_timing(), sqmul_r2l_golden()),
+              0u);
+}
+TEST_F(RtlSquaredVariants, SqmulR2lEveryCosCodeAtN1000) {
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(every_cos_code(1000), 65536, sqmul_timing(), sqmul_r2l_golden()), 0u);
+}
+
+TEST_F(RtlSquaredVariants, SqmulR2lEveryNAndItsClocksPerSample) {
+    // Output 29 at the (steps + 2)-th rising edge: the taking edge, one per bit of n up to its
+    // leading one, the done edge (steps from golden_sqmul_r2l).
+    expect_every_n_and_clocks<Vrtl_sqmul_r2l_saturate>(sqmul_r2l_golden(), sqmul_r2l_edges, 26);  // n = 1023: 12
+    // Hand-worked: n = 1000 = 0b1111101000 has 10 bits: 12 edges; n = 20 = 0b10100: 7; n = 5: 5;
+    // n = 0: no bit, 2 (P = 1.0).
+    EXPECT_EQ(sqmul_r2l_edges(1000), 12u);
+    EXPECT_EQ(sqmul_r2l_edges(20), 7u);
+    EXPECT_EQ(sqmul_r2l_edges(5), 5u);
+    EXPECT_EQ(sqmul_r2l_edges(0), 2u);
+}
+
+TEST_F(RtlSquaredVariants, AnR2lRtlThatDiffersFromItsGoldenIsCaught) {
+    // Negative test: the right-to-left RTL checked against its golden model of n + 1 (cos^21 for
+    // cos^20, at cos < 1) fails on every pixel.
+    report_log::get().expect(msg::mismatch);
+    std::vector<surface> s{{20, {255, 255, 255}, {0x7000, 0x7800, 0x7C00}}};
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(s, 3, sqmul_timing(), sqmul_r2l_golden(1)), 3u);
+}
+
+// Both designs at Q1.16: every n (three codes) and every cos code at n = 1000, against their
+// golden models at 16 fraction bits; against the Q1.18 golden models the same RTL mismatches (the
+// negative tests), so these do read the other word.
+TEST_F(RtlSquaredVariants, SqmulAtQ116EveryN) {
+    const auto s = every_n({0x4000, 0x7800, spec::cos_one});
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_p16>(s, s.size() * 3, sqmul_timing(), sqmul_word_golden(16)), 0u);
+}
+TEST_F(RtlSquaredVariants, SqmulAtQ116EveryCosCodeAtN1000) {
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_p16>(every_cos_code(1000), 65536, sqmul_timing(), sqmul_word_golden(16)), 0u);
+}
+TEST_F(RtlSquaredVariants, SqmulR2lAtQ116EveryN) {
+    const auto s = every_n({0x4000, 0x7800, spec::cos_one});
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_p16>(s, s.size() * 3, sqmul_timing(), sqmul_r2l_golden(0, 16)), 0u);
+}
+TEST_F(RtlSquaredVariants, SqmulR2lAtQ116EveryCosCodeAtN1000) {
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_p16>(every_cos_code(1000), 65536, sqmul_timing(), sqmul_r2l_golden(0, 16)), 0u);
+}
+
+// n = 1000 and the 64 codes below 1.0 (cos^1000 from 0.14 up), where the Q1.16 and Q1.18 floors
+// reach the outputs: every one of the 64 pixels differs (worked out outside the model in exact
+// integer arithmetic, for both walks).
+std::vector<surface> near_one_at_n1000() {
+    std::vector<uint32_t> codes;
+    for (uint32_t c = spec::cos_one - 64; c < spec::cos_one; ++c) codes.push_back(c);
+    return {{1000, {255, 255, 255}, codes}};
+}
+TEST_F(RtlSquaredVariants, TheQ116RtlIsNotTheQ118One) {
+    report_log::get().expect(msg::mismatch);
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_p16>(near_one_at_n1000(), 64, sqmul_timing(), sqmul_golden()), 64u);
+}
+TEST_F(RtlSquaredVariants, TheR2lQ116RtlIsNotTheQ118One) {
+    report_log::get().expect(msg::mismatch);
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_p16>(near_one_at_n1000(), 64, sqmul_timing(), sqmul_r2l_golden()), 64u);
 }

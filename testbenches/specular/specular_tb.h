@@ -95,7 +95,8 @@ inline strobe_timing squared_timing(const sc_core::sc_time& clk_period = sc_core
 
 // Fig. 3 for the square-and-multiply device: output 29 rises at most 20 clocks after strobe 17
 // fell (n = 1023: the taking edge, 9 squares, 9 multiplications, the done edge), so a pixel period
-// of 22 clocks (21 low, 1 high) never strobes before the previous result is valid.
+// of 22 clocks (21 low, 1 high) never strobes before the previous result is valid (nor for the
+// right-to-left design, at most 12).
 inline strobe_timing sqmul_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
     strobe_timing t = squared_timing(clk_period);
     t.t_low = 21 * clk_period;

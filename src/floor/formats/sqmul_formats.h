@@ -1,9 +1,11 @@
-// Number formats of the square-and-multiply baseline (ours, for comparison): the design any
+// Number formats of the square-and-multiply designs (ours, for comparison): the design any
 // engineer would try first for cos^n, one multiplier iterated over the bits of n, left to right:
 //     P <- cos;  for each bit of n below its leading one:  P <- P^2;  if the bit is 1: P <- P * cos
-// (floor(log2 n) squares and popcount(n) - 1 multiplications, one per clock). P is the
-// squared-quadratic device's Q1.18 word, so the two are compared at the same precision and cost
-// per multiplier; the colour multipliers are UA 60553's, on P's 16 high wires.
+// (floor(log2 n) squares and popcount(n) - 1 multiplications, one per clock); and its right-to-left
+// twin with two multipliers, both in one clock per bit of n, least significant first:
+//     X <- cos, P <- 1.0;  for each bit of n:  if the bit is 1: P <- P * X;  X <- X^2
+// P (and X) is the squared-quadratic device's Q1.18 word, so the designs are compared at the same
+// precision and cost per multiplier; the colour multipliers are UA 60553's, on P's 16 high wires.
 #pragma once
 
 #include "formats/squared_formats.h"
@@ -36,5 +38,22 @@ enum p_select : unsigned { p_hold = 0, p_load = 1, p_product = 2 };
 inline constexpr unsigned p_inputs = 3;
 enum b_select : unsigned { b_p = 0, b_cos = 1 };
 inline constexpr unsigned b_inputs = 2;
+
+// The P word at `frac` fraction bits, Q1.frac, for the word-length study (studies/accuracy,
+// sqmul_study) and its synthesis rows; the devices' word is p_word(p_frac). cos (Q1.15) is aligned
+// onto it by frac - 15 wires (so frac >= 15), P's 16 high wires feed the colour multipliers.
+struct p_word_fmt {
+    qfmt fmt;
+    unsigned frac;
+    uint64_t one;
+    unsigned cos_align;
+};
+inline constexpr unsigned p_frac_min = spec::cos_fmt.frac;  // 15: cos loaded as it is
+inline constexpr unsigned p_frac_max = 24;                  // products of two words stay within 64 bits
+constexpr p_word_fmt p_word(unsigned frac) {
+    return {qfmt{frac + 1, false, static_cast<int>(frac)}, frac, 1ull << frac, frac - spec::cos_fmt.frac};
+}
+static_assert(p_word(p_frac).fmt.width == p_fmt.width && p_word(p_frac).one == p_one &&
+              p_word(p_frac).cos_align == cos_align, "the devices' word is p_word(p_frac)");
 
 }  // namespace shading::sqmul
