@@ -145,8 +145,10 @@ EOF
   # The squared-quadratic device (ours) in both modes, and the two designs it is compared with
   # (saturating): the series squaring stage and the square-and-multiply baseline. Their paths:
   # the loop through the iterated multiplier (one clock), the strobe-to-register paths into it
-  # (RG1, RG2 -> RG_SQ / RG_P: at worst half a clock after strobe 17 fell, as the load latches at
-  # the falling edge after the taking rising edge), the result register to the outputs.
+  # (RG1, RG2 -> RG_SQ / RG_P: at worst 2.5 clocks after strobe 17 fell, as the request crosses the
+  # synchroniser's two flip-flops and the load latches at the falling edge after the taking rising
+  # edge), the result register to the outputs, and the baseline's select of MX_B into RG_P (half a
+  # clock: it switches at a rising edge, RG_P latches at the falling edge).
   for m in saturate wrap; do
     sat=1; [ $m = wrap ] && sat=0
     variant "squared_$m" squared_device "" "-chparam SATURATE $sat" "$rtl_sources" \
@@ -159,6 +161,7 @@ EOF
   variant sqmul_saturate sqmul_device "" "-chparam SATURATE 1" "$rtl_sources" \
     "$(path sqmul_saturate loop stage.rg_p.q stage.rg_p.q; path sqmul_saturate rg2_to_multiply rg2.q stage.rg_p.q
        path sqmul_saturate rg1_to_ctrl rg1.q stage.ctl.bits; path sqmul_saturate to_outputs stage.rg_p.q pin:out25_r
+       path sqmul_saturate sel_to_multiply stage.mx_b_sel stage.rg_p.q
        # The load path alone (RG2 -> clamp -> MX_P -> RG_P, around the multiplier): synthesized
        # again with the multiplier's input and output kept as nets, so that its cells can be left out.
        resynth_keep sqmul_device "-chparam SATURATE 1" "sqmul_stage/w:mx_b_operand sqmul_stage/w:mul_p_product"
@@ -167,7 +170,8 @@ EOF
   # The right-to-left square-and-multiply design: a squarer and a multiplier written in one clock
   # per bit of n. Its register-to-register paths (each a whole clock: RG_X -> MUL_X -> MX_X -> RG_X,
   # RG_P -> MUL_P -> MX_P -> RG_P, RG_X -> MUL_P -> RG_P), the load RG2 -> clamp -> MX_X -> RG_X
-  # (half a clock after the strobe at worst: no multiplier on it), RG1 -> controller, RG_P -> outputs.
+  # (2.5 clocks after the strobe at worst, through its own synchroniser sync17, as the baseline's;
+  # no multiplier on it), RG1 -> controller, RG_P -> outputs.
   r2l=sqmul_r2l_saturate
   variant $r2l sqmul_r2l_device "" "-chparam SATURATE 1" "$rtl_sources" \
     "$(path $r2l loop stage.rg_p.q stage.rg_p.q; path $r2l loop_x stage.rg_x.q stage.rg_x.q
@@ -179,7 +183,7 @@ EOF
     includes="-I$gen/sqmul_word/p$f -I$gen -I$root/rtl/squared -I$root/rtl/sqmul" \
       variant "sqmul_p$f" sqmul_device "" "-chparam SATURATE 1" "$rtl_sources" \
       "$(path sqmul_p$f loop stage.rg_p.q stage.rg_p.q; path sqmul_p$f rg2_to_multiply rg2.q stage.rg_p.q
-         path sqmul_p$f to_outputs stage.rg_p.q pin:out25_r)"
+         path sqmul_p$f sel_to_multiply stage.mx_b_sel stage.rg_p.q; path sqmul_p$f to_outputs stage.rg_p.q pin:out25_r)"
   done
   for f in 16; do
     includes="-I$gen/sqmul_word/p$f -I$gen -I$root/rtl/squared -I$root/rtl/sqmul" \

@@ -1,8 +1,8 @@
 // The specular unit a shading pipeline drives, named by its generator of `a`: a_gen_linear,
 // a_gen_tuned or a_gen_rom give UA 60553's Fig. 1 device (specular_device<AGen>: output 29 is
 // strobe 17, one clock per sample); squared_device names itself (ours: a clocked squaring stage,
-// output 29 rises k + 2 clocks after the strobe, so the sample controller waits for it), and so does
-// sqmul_device (ours: one multiplier walking n's bits, floor(log2 n) + popcount(n) + 1 clocks).
+// output 29 rises k + 4 clocks after the strobe, so the sample controller waits for it), and so does
+// sqmul_device (ours: one multiplier walking n's bits, floor(log2 n) + popcount(n) + 3 clocks).
 #pragma once
 
 #include "specular/specular_device.h"

@@ -8,8 +8,9 @@
 //     horner_pixel_ctrl.h with horner_ctrl.h, fd_pixel_ctrl.h with fd_ctrl.h / fd_ctrl_var.h),
 //     stepped here at each edge, every read seeing the value before the edge as a signal would. With
 //     the squared-quadratic device the sample controller waits for output 29, which that device
-//     raises k + 2 clocks after its strobe (k = its squarings for the frame's n), the
-//     square-and-multiply device floor(log2 n) + popcount(n) + 1 clocks after it: counted here.
+//     raises k + 4 clocks after its strobe (k = its squarings for the frame's n; two clocks for
+//     its synchroniser), the square-and-multiply device floor(log2 n) + popcount(n) + 3 clocks
+//     after it (the same synchroniser): counted here.
 //   - The datapath is one function call per interval: interval_pixels() (src/floor/arith/
 //     pipeline_arith.h, what the golden pipeline's golden_interval() computes: the device's specular
 //     term, the diffuse and ambient adders, the coefficient units and the Horner unit or forward
@@ -105,7 +106,8 @@ private:
         bool load_frame() const { return u.load_frame.read(); }
         bool ld_e() const { return u.ld_e_; }
         // A clocked device's output 29, high from the dev_clocks_-th falling edge after its strobe
-        // fell (its done rises at that rising edge, the taking edge counted).
+        // fell (its done rises at that rising edge: sync17's two, the taking edge and the done edge
+        // counted).
         bool dev_valid() const { return u.edges_ - u.strobe_edge_ >= u.dev_clocks_; }
         unsigned check_job() const { return u.check_job(); }
         void ready(bool v) { u.ready.write(v); }
@@ -145,15 +147,16 @@ private:
         }
     }
 
-    // Rising edges from strobe 17's fall to done (the taking edge counted): the squared-quadratic
-    // device's taking edge, k squares, done (sq_count.h); the square-and-multiply device's taking
-    // edge, one per square and per multiplication, done (sqmul_count.h).
+    // Rising edges from strobe 17's fall to done (sync17's and the taking edge counted): the
+    // squared-quadratic device's sync17 stages, taking edge, k squares, done (sq_count.h); the
+    // square-and-multiply device's sync17 stages, taking edge, one per square and per
+    // multiplication, done (sqmul_count.h).
     uint64_t device_clocks(unsigned n) const {
         if (dev_.device == scene::specular_device::sqmul) {
             const auto g = golden_sqmul(n, 0, {0, 0, 0}, dev_.mode);
-            return g.squares + g.multiplies + 2;
+            return g.squares + g.multiplies + sqmul::sync_stages + 2;
         }
-        return squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(n).z)) + 2;
+        return squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(n).z)) + squared::sync_stages + 2;
     }
 
     // RG1, RG3-5, k_d*I and ambient: the device's frame strobes fall.
@@ -305,7 +308,7 @@ private:
     pipeline::sample_fsm fsm_;
     bool samples_ready_ = false;
     uint64_t edges_ = 0, strobe_edge_ = 0;  // falling edges so far; the last one strobe 17 fell at
-    uint64_t dev_clocks_ = 2;               // a clocked device's clocks per sample for the frame's n
+    uint64_t dev_clocks_ = 4;               // a clocked device's clocks per sample for the frame's n
     interval job_, d_;  // the job registers (with the samples' pixels) and the descriptor registers
     std::array<pipeline::sample_geometry, 4> job_s_{};
     pipeline::sample_geometry last_s_{};  // the last sample's codes

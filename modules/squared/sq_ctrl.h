@@ -1,10 +1,11 @@
 // Controller of the squared-quadratic device's squaring stage (ours): sq_count.h stepped at the
 // rising edges of clk and at the falling edges of strobe 17, in one process, so an edge of both in
-// the same instant is ordered: the clock first (a strobe at a rising edge is taken at the next one).
+// the same instant is ordered: the clock first. Strobe 17's edge drives `req` (strobe 17's
+// domain) into the synchroniser sync17; each rising edge reads only sync17's output `req_s`.
 // Drives MX_SQ's select (at rising edges; RG_SQ latches at the falling edge half a clock later) and
 // `done`, output 29's gate (cleared by the strobe itself, set at a rising edge).
 // Bad input (shading/timing): a strobe before the previous result is valid is reported; that
-// result is dropped, the new cos is taken at the next rising edge.
+// result is dropped, the new cos is taken once its request has crossed.
 #pragma once
 
 #include <sstream>
@@ -26,9 +27,11 @@ public:
 
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> ctl17{"ctl17"};
-    sc_core::sc_in<z_t> z{"z"};  // the LZC of RG1: 9 - z squarings
+    sc_core::sc_in<bool> req_s{"req_s"};  // req through sync17: the only strobe input clk reads
+    sc_core::sc_in<z_t> z{"z"};           // the LZC of RG1: 9 - z squarings
     sc_core::sc_out<select_t> sel{"sel"};
     sc_core::sc_out<bool> done{"done"};
+    sc_core::sc_out<bool> req{"req"};     // strobe 17's request flip-flop, into sync17
 
     SC_HAS_PROCESS(sq_ctrl);
     explicit sq_ctrl(const sc_core::sc_module_name& name) : sc_module(name) {
@@ -47,13 +50,14 @@ public:
 private:
     void on_edge() {
         if (clk.posedge()) {
-            const auto s = st_.rising(z.read().to_uint());
+            const auto s = st_.rising(req_s.read(), z.read().to_uint());
             sel.write(select_t(s));
             done.write(st_.done());
         }
         if (ctl17.negedge()) {
             const bool was_busy = st_.busy();
             if (st_.strobe()) report(was_busy);
+            req.write(st_.req());
             done.write(false);
         }
     }

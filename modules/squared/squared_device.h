@@ -5,13 +5,15 @@
 //   RG1..RG5     UA 60553's registers, written on the falling edges of strobes 15, 17, 20, 22, 24
 //   a_gen        n -> a, z (a_gen_squared.h): LZC, barrel shifts, a 9 x 9 multiplier, an adder
 //   MUL7, INV8, node 28, ADD9, MUL10, node 30, ADD11   Fig. 1 at n' (MUL10: Q0.12 a; ADD11: Q1.18)
-//   sq           the squaring stage (squaring_stage.h): MX_SQ, RG_SQ, MUL_SQ and its controller
+//   sq           the squaring stage (squaring_stage.h): MX_SQ, RG_SQ, MUL_SQ, its controller and
+//                sync17, the synchroniser that brings strobe 17's request into clk's domain
 //   MUL12..14    Fig. 1's colour multipliers on RG_SQ's 16 high wires
 //   out29        strobe 17 AND the stage's done: output 29 rises when the result is valid
 // Pins: UA 60553's, plus `clk`, the squaring stage's clock. The timing (Fig. 3 with a clock): the
-// strobe's falling edge latches cos; the stage takes it at the next rising edge of clk and output
-// 29 rises k + 2 rising edges later at the earliest (at strobe 17's rise if that comes later); a
-// platform that waits for output 29's rising edge, as Fig. 3 says, needs no other change.
+// strobe's falling edge latches cos and closes output 29's gate; its request crosses sync17 (two
+// rising edges), the third rising edge takes it, and output 29 rises k + 4 rising edges after the
+// strobe at the earliest (at strobe 17's rise if that comes later); a platform that waits for
+// output 29's rising edge, as Fig. 3 says, needs no other change.
 // This class only instantiates and wires; widths from the format table, paths from the elaborated
 // design (core/timing_graph.h), read by the monitors.
 #pragma once
@@ -128,7 +130,7 @@ public:
                        mode == overflow_mode::saturate
                            ? "cos > 1.0: ADD11 saturates the quadratic to 1.0 (outputs = k_s*I)"
                            : "cos > 1.0: wrap mode passes ADD11's and the squarer's low wires on unchanged"),
-          chk_timing("chk_timing", 3, {&rg1, &rg2, &sq.rg_sq, &sq.ctl_sq}),
+          chk_timing("chk_timing", 3, {&rg1, &rg2, &sq.rg_sq, &sq.ctl_sq, &sq.sync17}),
           chk_load("chk_load", 2, sq.rg_sq, squared::sq_count::load),
           chk_clk("chk_clk") {
         if (t.reg + t.multiplier + t.mux == sc_core::SC_ZERO_TIME)

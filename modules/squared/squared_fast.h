@@ -2,12 +2,13 @@
 // their timing, none of its blocks. One process at the pins' edges: at a rising edge of clk the
 // controller's plain state (sq_count.h, the block model's own FSM) steps; at a falling edge the
 // squaring register takes the golden model's quadratic at n' (a LOAD) or its own square (a SQUARE);
-// registers 1-5 are words latched at their strobes' falling edges. Outputs 25-27 change once per
-// latch that changes them, at the derived path delay (RG_SQ or RG3-5 -> MUL12-14), where the block
-// model's multipliers settle; output 29 is strobe 17 AND done after the gate's delay. The block
-// model's checks are made at the same edges with the same message ids: the input ranges, a strobe
-// before the result is valid, each LOAD against RG1's and RG2's paths, strobes 20/22/24 against
-// output 29's rise, and every clock phase.
+// registers 1-5 are words latched at their strobes' falling edges; strobe 17's request crosses
+// the block model's synchroniser sync17 as its plain chain (blocks/synchroniser.h). Outputs 25-27
+// change once per latch that changes them, at the derived path delay (RG_SQ or RG3-5 ->
+// MUL12-14), where the block model's multipliers settle; output 29 is strobe 17 AND done after the
+// gate's delay. The block model's checks are made at the same edges with the same message ids:
+// the input ranges, a strobe before the result is valid, each LOAD against RG1's and RG2's paths,
+// strobes 20/22/24 against output 29's rise, and every clock phase.
 //
 // Not modelled: the register setup check of blocks/reg.h, values still settling (a LOAD taken too
 // soon takes the golden value of the registers' new words, where the block model takes whatever
@@ -24,6 +25,7 @@
 #include <systemc>
 
 #include "arith/squared_arith.h"
+#include "blocks/synchroniser.h"
 #include "core/abstraction.h"
 #include "core/report_ids.h"
 #include "formats/specular_formats.h"
@@ -150,7 +152,11 @@ private:
         last_rise_ = now;
         rise_seen_ = true;
         const bool was_done = st_.done();
-        sel_ = st_.rising(static_cast<unsigned>(golden_squared_a(rg_[0]).z));
+        // sync17's flip-flops and the controller's take their inputs at the same edge: the
+        // controller reads the synchroniser's output from before it.
+        const bool req_s = sync_.q() != 0;
+        sync_.rising(st_.req());
+        sel_ = st_.rising(req_s, static_cast<unsigned>(golden_squared_a(rg_[0]).z));
         if (st_.done() != was_done) drive_valid();
     }
 
@@ -317,6 +323,7 @@ private:
     std::array<uint64_t, 5> rg_{};
     std::array<sc_core::sc_time, 5> fall_;
     std::array<bool, 5> fallen_{};
+    synchroniser_chain<1, squared::sync_stages> sync_;  // sync17
     squared::sq_count st_;
     squared::sq_count::select sel_ = squared::sq_count::hold;
     uint64_t sq_ = 0, q15_ = 0;

@@ -56,12 +56,15 @@
 //   UA 60553 family  t_high + t_low (20 ns), as Fig. 3;
 //   squared device   until output 29 rises: cos is set up t_high / 2, strobe 17 falls at the next
 //                    falling edge of the device clock (`clk`, clk_period, rising at 0, P, 2P, ...),
-//                    the squaring stage takes it at the next rising edge and output 29 rises
-//                    k + 1 clocks later (k = 9 - leading zeros of n) plus the AND gate's delay; so
-//                    it depends on n and, for a burst's first pixel, on the clock's phase at the
-//                    access's local time (back-to-back pixels take (k + 2) clocks each);
-//   sqmul device     the same with floor(log2 n) + popcount(n) clocks in place of k + 1 (its walk
-//                    over n's bits; back-to-back pixels take floor(log2 n) + popcount(n) + 1 clocks);
+//                    the synchroniser sync17 samples its request at the next rising edge and
+//                    output 29 rises k + 3 clocks later (two more edges through sync17 and the
+//                    taking edge, k squares, the done edge; k = 9 - leading zeros of n) plus the
+//                    AND gate's delay; so it depends on n and, for a burst's first pixel, on the
+//                    clock's phase at the access's local time (back-to-back pixels take (k + 4)
+//                    clocks each);
+//   sqmul device     the same with floor(log2 n) + popcount(n) + 2 clocks in place of k + 3 (its
+//                    walk over n's bits; back-to-back pixels take floor(log2 n) + popcount(n) + 3
+//                    clocks each);
 // everything else 0. In pin-accurate mode an access that drives strobes first waits the incoming
 // delay (and returns it as 0); the others return at once with the delay untouched.
 // Debug transport: reads of any byte range within one region (registers 0x000-0x027, COS_BLOCK,
@@ -134,8 +137,9 @@ struct tlm_strobe_timing {
 //   law(n, config)                    what the golden path keeps per n (a(n), or n itself)
 //   outputs(law, cos, ksi, mode)      outputs 25..27 from the golden model
 //   clocked                           false: Fig. 3's fixed strobe; true: a `clk` pin, and
-//   latency(n)                        the clocks from the rising edge that takes strobe 17 to the
-//                                     one that makes the result valid
+//   latency(n)                        the clocks from the first rising edge after strobe 17 fell
+//                                     (where the synchroniser samples it) to the one that makes
+//                                     the result valid
 template <class V>
 struct tlm_variant;
 
@@ -169,8 +173,9 @@ template <>
 struct tlm_variant<a_gen_tuned> : tlm_fig1_variant<a_gen_tuned> {
     static constexpr uint32_t code = 2;
 };
-// The squared-quadratic device (ours): a from n alone, so nothing to configure; the squaring
-// stage's latency is k + 1 clocks (sq_count.h: LOAD at the taking edge, k SQUAREs, done).
+// The squared-quadratic device (ours): a from n alone, so nothing to configure; its latency from
+// the first rising edge after the strobe is k + 3 clocks (sq_count.h: sync17's second stage, the
+// taking edge with the LOAD, k SQUAREs, done).
 template <>
 struct tlm_variant<squared_device> {
     using device = squared_device;
@@ -183,15 +188,15 @@ struct tlm_variant<squared_device> {
         return std::make_unique<device>(name, m, d);
     }
     static uint64_t law(uint64_t n, const config&) { return n & n_fmt.mask(); }
-    static unsigned latency(uint64_t n) { return golden_squared_a(n).k + 1; }
+    static unsigned latency(uint64_t n) { return golden_squared_a(n).k + squared::sync_stages + 1; }
     static std::array<uint64_t, 3> outputs(uint64_t n, uint64_t cos, const std::array<uint64_t, 3>& ksi,
                                            overflow_mode m) {
         return golden_squared(n, cos, ksi, m).out;
     }
 };
-// The square-and-multiply device (ours): nothing to configure; the stage's latency is
-// floor(log2 n) + popcount(n) clocks (sqmul_count.h: LOAD at the taking edge, one step per square
-// and per multiplication, done).
+// The square-and-multiply device (ours): nothing to configure; its latency from the first rising
+// edge after the strobe is floor(log2 n) + popcount(n) + 2 clocks (sqmul_count.h: sync17's second
+// stage, the taking edge with the LOAD, one step per square and per multiplication, done).
 template <>
 struct tlm_variant<sqmul_device> {
     using device = sqmul_device;
@@ -206,7 +211,7 @@ struct tlm_variant<sqmul_device> {
     static uint64_t law(uint64_t n, const config&) { return n & n_fmt.mask(); }
     static unsigned latency(uint64_t n) {
         const auto g = golden_sqmul(n, 0, {0, 0, 0}, overflow_mode::saturate);
-        return g.squares + g.multiplies + 1;
+        return g.squares + g.multiplies + sqmul::sync_stages + 1;
     }
     static std::array<uint64_t, 3> outputs(uint64_t n, uint64_t cos, const std::array<uint64_t, 3>& ksi,
                                            overflow_mode m) {
@@ -460,7 +465,7 @@ private:
 
     // Loosely timed: when a pixel started at local time `start` ends in pin-accurate mode.
     // UA 60553 family: Fig. 3's strobe period. Clocked: pixel_pins() worked out: strobe 17 falls
-    // at the first falling edge >= start + t_high / 2, the next rising edge takes it, done rises
+    // at the first falling edge >= start + t_high / 2, the next rising edge samples it, done rises
     // latency(n) clocks later, output 29 a gate delay after the later of done and strobe 17's rise.
     sc_core::sc_time pixel_end(const sc_core::sc_time& start) const {
         if constexpr (variant::clocked) {

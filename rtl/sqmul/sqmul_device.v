@@ -8,9 +8,9 @@
 //   stage        MX_B, MUL_P, MX_P, RG_P and the controller (sqmul_stage.v, sqmul_ctrl.v)
 //   MUL12..14    UA 60553's colour multipliers on RG_P's 16 high wires
 //   out29        strobe 17 AND the stage's done
-// Clocks per sample: floor(log2 n) + popcount(n) + 1 rising edges from strobe 17's fall to done
-// (the taking edge, one per square and per multiplication, the done edge): 2..19 for n in 1..1000
-// (19 at n = 767, 895, 959, 991; 7 at n = 20; 13.9 on average).
+// Clocks per sample: floor(log2 n) + popcount(n) + 3 rising edges from strobe 17's fall to done
+// (two for the synchroniser sync17, the taking edge, one per square and per multiplication, the
+// done edge): 4..21 for n in 1..1000 (21 at n = 767, 895, 959, 991; 9 at n = 20).
 // Only instantiates and wires; every width from shading_formats.vh.
 `include "shading_formats.vh"
 module sqmul_device #(

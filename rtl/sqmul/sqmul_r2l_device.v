@@ -8,8 +8,9 @@
 //                sqmul_r2l_ctrl.v), which walks RG1's bits itself (no leading-zero count)
 //   MUL12..14    UA 60553's colour multipliers on RG_P's 16 high wires
 //   out29        strobe 17 AND the stage's done
-// Clocks per sample: floor(log2 n) + 3 rising edges from strobe 17's fall to done (the taking
-// edge, one per bit of n up to its leading one, the done edge): 3..12 for n in 1..1000.
+// Clocks per sample: floor(log2 n) + 5 rising edges from strobe 17's fall to done (two for the
+// synchroniser sync17, the taking edge, one per bit of n up to its leading one, the done edge):
+// 5..14 for n in 1..1000.
 // Only instantiates and wires; every width from shading_formats.vh.
 `include "shading_formats.vh"
 module sqmul_r2l_device #(

@@ -4,6 +4,7 @@
 //   MUL_P   RG_P x MX_B: Q1.18^2 = Q2.36, 18 low wires open (floor), the 19 above kept
 //   MX_P    hold (RG_P), load (cos), product (MUL_P)              <- ctl.mx_p_sel
 //   RG_P    Q1.18, latches MX_P at every falling edge of clk
+//   sync17  strobe 17's request into clk's domain (synchroniser.v, `SQUARED_SYNC_STAGES flip-flops)
 //   ctl     sqmul_ctrl.v: the walk over n's bits
 `include "shading_formats.vh"
 module sqmul_stage (
@@ -17,6 +18,8 @@ module sqmul_stage (
 );
     localparam WP = `SQMUL_P_W;
 
+    wire ctl_req;      // strobe 17's request (its domain)
+    wire sync17_req;   // the same, synchronised to clk
     wire [`SQMUL_MX_P_SEL_W-1:0] mx_p_sel;
     wire [`SQMUL_MX_B_SEL_W-1:0] mx_b_sel;
     wire [WP-1:0] mx_b_operand, mul_p_product, mx_p_next;
@@ -28,8 +31,9 @@ module sqmul_stage (
     assign mx_p_in[`SQMUL_MX_P_LOAD*WP +: WP] = c;
     assign mx_p_in[`SQMUL_MX_P_PRODUCT*WP +: WP] = mul_p_product;
 
-    sqmul_ctrl ctl (.clk(clk), .ctl17(ctl17), .z(z), .f(f), .mx_p_sel(mx_p_sel), .mx_b_sel(mx_b_sel),
-                    .done(done));
+    synchroniser #(.W(1), .STAGES(`SQUARED_SYNC_STAGES)) sync17 (.clk(clk), .d(ctl_req), .q(sync17_req));
+    sqmul_ctrl ctl (.clk(clk), .ctl17(ctl17), .req_s(sync17_req), .z(z), .f(f), .mx_p_sel(mx_p_sel),
+                    .mx_b_sel(mx_b_sel), .req(ctl_req), .done(done));
     mux #(.W(WP), .N(`SQMUL_MX_B_INPUTS), .SW(`SQMUL_MX_B_SEL_W)) mx_b (.in(mx_b_in), .sel(mx_b_sel), .y(mx_b_operand));
     // Q1.18 x Q1.18 -> Q2.36, floor to Q1.18
     mul #(.WA(WP), .WB(WP), .WP(WP), .DROP(`SQMUL_P_FRAC)) mul_p (

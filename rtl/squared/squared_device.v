@@ -5,11 +5,13 @@
 //   RG1..RG5     UA 60553's registers, written on the falling edges of strobes 15, 17, 20, 22, 24
 //   a_gen        n -> a, z (a_gen_squared.v): LZC, barrel shifts, a 9 x 9 multiplier, an adder
 //   MUL7, INV8, node 28, ADD9, MUL10, node 30, ADD11   Fig. 1 at n' (squared_fig1.vh)
-//   sq           the squaring stage (squaring_stage.v): MX_SQ, RG_SQ, MUL_SQ and its controller
+//   sq           the squaring stage (squaring_stage.v): MX_SQ, RG_SQ, MUL_SQ, its controller and
+//                sync17, strobe 17's request synchronised to clk
 //   MUL12..14    Fig. 1's colour multipliers on RG_SQ's 16 high wires
 //   out29        strobe 17 AND the stage's done: output 29 rises when the result is valid
-// Pins: UA 60553's, plus clk, the squaring stage's clock. Output 29 rises k + 2 rising edges of
-// clk after strobe 17 fell (the taking edge counted), or at strobe 17's rise if that comes later.
+// Pins: UA 60553's, plus clk, the squaring stage's clock. Output 29 rises k + 4 rising edges of
+// clk after strobe 17 fell (two for the synchroniser sync17, the taking edge, k squares, the done
+// edge), or at strobe 17's rise if that comes later.
 // SATURATE = 1 (the SystemC default, overflow_mode::saturate) clamps ADD11 to [0, 1.0]; 0 wraps.
 // Only instantiates and wires; every width from shading_formats.vh.
 `include "shading_formats.vh"

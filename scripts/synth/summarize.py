@@ -117,16 +117,30 @@ for _f in range(15, 21):
     DESCRIPTIONS["sqmul_p%d" % _f] = "square-and-multiply baseline at a Q1.%d P word, saturating" % _f
     DESCRIPTIONS["sqmul_r2l_p%d" % _f] = "square-and-multiply, right to left, at a Q1.%d P word, saturating" % _f
 
-# Rising edges of clk from strobe 17's fall to output 29's rise (the taking edge, one per step,
-# the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v and rtl/sqmul/sqmul_ctrl.v
-# define them (checked against the golden models' counts by test_rtl_squared):
-# k + 2 = floor(log2 n) + 2, and floor(log2 n) + popcount(n) + 1. None for the combinational ones.
+# Rising edges of clk from strobe 17's fall to output 29's rise (the synchroniser sync17's two,
+# the taking edge, one per step, the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v,
+# rtl/sqmul/sqmul_ctrl.v and rtl/sqmul/sqmul_r2l_ctrl.v define them (checked against the golden
+# models' counts by test_rtl_squared): k + 4 = floor(log2 n) + 4, floor(log2 n) + popcount(n) + 3
+# and floor(log2 n) + 5 (bit_length is floor(log2 n) + 1). None for the combinational ones.
 CLOCKS = {
-    "squared_saturate": lambda n: n.bit_length() + 1,
-    "squared_wrap": lambda n: n.bit_length() + 1,
-    "sqmul_saturate": lambda n: n.bit_length() + bin(n).count("1"),
-    # rtl/sqmul/sqmul_r2l_ctrl.v: the taking edge, one per bit of n, the done edge = floor(log2 n) + 3.
-    "sqmul_r2l_saturate": lambda n: n.bit_length() + 2,
+    "squared_saturate": lambda n: n.bit_length() + 3,
+    "squared_wrap": lambda n: n.bit_length() + 3,
+    "sqmul_saturate": lambda n: n.bit_length() + bin(n).count("1") + 2,
+    # rtl/sqmul/sqmul_r2l_ctrl.v: sync17's two, the taking edge, one per bit of n, the done edge
+    # = floor(log2 n) + 5.
+    "sqmul_r2l_saturate": lambda n: n.bit_length() + 4,
+}
+
+# What bounds the clocked designs' period (50 % duty), in gate delays: each measured path divided
+# by the clocks it has. A loop through the iterated multiplier has a whole period (its register
+# latches at falling edges), as have the right-to-left design's other register-to-register paths;
+# a path that starts at a rising edge (the controller's selects) or ends at one (done, where output
+# 29 samples the outputs) half a period; RG2's path into the load 2.5 periods at the least (the
+# load latches at the falling edge after the taking edge, the third rising edge after strobe 17
+# fell: the first may come just after the strobe), into the baseline's first multiplication 4.5.
+PERIOD_SHARE = {
+    "loop": 1.0, "loop_x": 1.0, "x_to_p": 1.0, "to_outputs": 0.5, "rg2_to_load": 2.5, "sel_to_multiply": 0.5,
+    "rg2_to_multiply": 4.5,
 }
 
 
@@ -135,17 +149,31 @@ def clocks_of(variant):
     m = re.match(r"(sqmul(?:_r2l)?)_p\d+$", variant)
     return CLOCKS.get(m.group(1) + "_saturate" if m else variant)
 
+
+def clock_bound(p):
+    """The clock period in gate delays (50 % duty, strobe 17 asynchronous to clk; rtl/README.md) and the
+    path that sets it: the longest of the measured paths `p`, each over the clocks it has (PERIOD_SHARE)."""
+    need = {k: d / PERIOD_SHARE[k] for k, d in p.items() if k in PERIOD_SHARE and d is not None}
+    if not need:
+        return None, None
+    by_path = max(need, key=need.get)
+    return need[by_path], by_path
+
 # The designs of the squared-quadratic comparison, in the table's order, and what each path is.
 COMPARISON = ("ua60553_saturate", "ua60553_patent", "ua22802", "squared_saturate", "squared_wrap",
               "squared_series", "sqmul_saturate")
 PATHS = {
     "loop": "register to register, the clock period: RG_SQ / RG_P -> multiplier (-> MX_B) -> multiplexer -> itself",
-    "rg2_to_load": "strobe 17 to register: RG2 -> ... -> RG_SQ / RG_P at the load, half a clock after the strobe at worst",
+    "rg2_to_load": "strobe 17 to register: RG2 -> ... -> RG_SQ / RG_P at the load, 2.5 clocks after the strobe at the "
+                   "soonest (the synchroniser's two rising edges, the taking edge, the falling edge after it)",
     "rg1_to_load": "strobe 15 to register: RG1 -> generator -> MUL10 -> ADD11 -> RG_SQ at the load",
     "rg1_to_ctrl": "strobe 15 to register: RG1 -> LZC (-> BSH1) -> the controller, at the taking edge (right to "
                    "left: RG1 -> the controller's bits register, no LZC)",
-    "rg2_to_multiply": "RG2 -> clamp -> MX_B -> MUL_P -> MX_P -> RG_P in a multiplication step (2.5 clocks after the strobe at the earliest)",
+    "rg2_to_multiply": "RG2 -> clamp -> MX_B -> MUL_P -> MX_P -> RG_P in a multiplication step (4.5 clocks after the "
+                       "strobe at the soonest: RG2 is held long before; the select into MX_B is sel_to_multiply)",
     "to_outputs": "result register -> colour multiplier -> output 25, within the done edge's half clock",
+    "sel_to_multiply": "the controller's MX_B select (switched at a rising edge) -> MX_B -> MUL_P -> MX_P -> RG_P "
+                       "(latched at the falling edge after it: half a clock)",
     "rg2_to_outputs": "strobe 17 to output: RG2 -> Fig. 1 at n' -> 9 squarers -> MUL12 -> output 25",
     "loop_x": "register to register (right to left): RG_X -> MUL_X -> MX_X -> RG_X",
     "x_to_p": "register to register (right to left): RG_X -> MUL_P -> MX_P -> RG_P",
@@ -194,19 +222,20 @@ def write_comparison(out, by, paths):
                 r["description"], r["transistors"], r["transistors"] / ref, r["cells"], r["flip_flops"],
                 r["depth_gates"], clocks, p))
         f.write("\nPaths: %s.\n" % "; ".join("**%s** %s" % (k, v) for k, v in PATHS.items()))
+        f.write("\nClock bound (gate delays, 50 %% duty: each path over the clocks it has: %s) and time per "
+                "sample (the bound times the clocks per sample: worst / n = 20 / mean over n in [1, 1000]):\n\n"
+                "| design | clock bound | set by | time per sample |\n|---|---|---|---|\n" %
+                ", ".join("%s %g" % (k, v) for k, v in PERIOD_SHARE.items()))
+        for v in COMPARISON:
+            if v not in CLOCKS or not paths.get(v):
+                continue
+            bound, by_path = clock_bound(paths[v])
+            c = [CLOCKS[v](n) for n in range(1, 1001)]
+            f.write("| %s | %.1f | %s (%d gates) | %.0f / %.0f / %.0f |\n" % (
+                v, bound, by_path, paths[v][by_path], bound * max(c), bound * CLOCKS[v](20), bound * sum(c) / len(c)))
 
 
 SQMUL_ORDER = ("sqmul_p15", "sqmul_p16", "sqmul_p17", "sqmul_saturate", "sqmul_p20", "sqmul_r2l_p16", "sqmul_r2l_saturate")
-REG_TO_REG = ("loop", "loop_x", "x_to_p", "rg2_to_multiply")
-
-
-def clock_bound(p):
-    """The clock period in gate delays (50 % duty, strobe 17 asynchronous to clk; rtl/README.md): every
-    register-to-register path in a whole clock, the result-to-outputs path in the half clock before the
-    done edge, the load in the half clock after the strobe at worst (both doubled)."""
-    whole = [p[k] for k in REG_TO_REG if p.get(k) is not None]
-    half = [p[k] for k in ("to_outputs", "rg2_to_load") if p.get(k) is not None]
-    return max(whole + [2 * d for d in half]) if whole or half else None
 
 
 def write_sqmul_designs(out, by, paths):
@@ -219,8 +248,8 @@ def write_sqmul_designs(out, by, paths):
     ns = (5, 20, 100, 1000)
     with open(os.path.join(out, "synth.md"), "a") as f:
         f.write("\n## The square-and-multiply designs\n\n")
-        f.write("Clock bound in gate delays: max(register-to-register paths, 2 x result-to-outputs, 2 x load) "
-                "(strobe 17 asynchronous to clk, 50 %% duty). Clocks per sample at n = %s and the mean over n in "
+        f.write("Clock bound in gate delays: the longest measured path over the clocks it has, as in the table "
+                "above (strobe 17 asynchronous to clk, 50 %% duty). Clocks per sample at n = %s and the mean over n in "
                 "[1, 1000]; time per sample = clock bound x clocks.%s\n\n" % (
                     ", ".join(str(n) for n in ns),
                     " Transistors against UA 60553 saturating (%d, this run)." % ref if ref else ""))
@@ -229,13 +258,14 @@ def write_sqmul_designs(out, by, paths):
                     " / ".join("n = %d" % n for n in ns), " / ".join("n = %d" % n for n in ns)))
         for v in rows:
             r, p, rule = by[v], paths.get(v, {}), clocks_of(v)
-            bound = clock_bound(p)
+            bound, by_path = clock_bound(p)
             c = [rule(n) for n in ns]
             mean = sum(rule(n) for n in range(1, 1001)) / 1000
-            times = " / ".join(str(bound * k) for k in c) + " / %.0f" % (bound * mean) if bound else "—"
+            times = " / ".join("%.0f" % (bound * k) for k in c) + " / %.0f" % (bound * mean) if bound else "—"
             f.write("| %s | %d | %s | %d (%d) | %s | %s | %s / %.2f | %s |\n" % (
                 r["description"], r["transistors"], "%.2f" % (r["transistors"] / ref) if ref else "—", r["cells"],
-                r["flip_flops"], "; ".join("%s %s" % (k, d) for k, d in p.items()) or "—", bound or "—",
+                r["flip_flops"], "; ".join("%s %s" % (k, d) for k, d in p.items()) or "—",
+                "%.1f (%s)" % (bound, by_path) if bound else "—",
                 " / ".join(str(k) for k in c), mean, times))
 
 

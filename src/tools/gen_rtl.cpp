@@ -133,6 +133,7 @@ int write_formats(const std::string& path, unsigned sqmul_frac) {
     define(os, "SQUARED_SEL_HOLD", squared::sq_hold);
     define(os, "SQUARED_SEL_LOAD", squared::sq_load);
     define(os, "SQUARED_SEL_SQUARE", squared::sq_square);
+    define(os, "SQUARED_SYNC_STAGES", squared::sync_stages);
 
     os << "\n// sqmul_formats.h: the square-and-multiply designs (ours, for comparison)\n";
     const sqmul::p_word_fmt p_word = sqmul::p_word(sqmul_frac);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "formats/specular_formats.h"
+#include "formats/squared_formats.h"
 #include "arith/sqmul_arith.h"
 #include "reference/brdf_reference.h"
 
@@ -52,13 +53,13 @@ std::array<uint64_t, 3> sqmul_design_out(const sqmul_design& d, unsigned n, uint
 
 unsigned sqmul_clocks(sqmul_walk w, unsigned n) {
     const sqmul_design d{"", "", w, sqmul::p_frac};
-    return nets(d, n, 0, {0, 0, 0}).steps + 2;
+    return squared::sync_stages + 1 + nets(d, n, 0, {0, 0, 0}).steps + 1;
 }
 
 unsigned sqmul_clocks_formula(sqmul_walk w, unsigned n) {
     unsigned log2n = 0;
     while ((n >> (log2n + 1)) != 0) ++log2n;
-    return w == sqmul_walk::left_to_right ? log2n + static_cast<unsigned>(std::bitset<32>(n).count()) + 1 : log2n + 3;
+    return w == sqmul_walk::left_to_right ? log2n + static_cast<unsigned>(std::bitset<32>(n).count()) + 3 : log2n + 5;
 }
 
 rel_error worst_rel_error(const std::function<double(unsigned n, uint64_t code)>& f, double threshold,

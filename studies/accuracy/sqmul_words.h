@@ -31,11 +31,13 @@ double sqmul_design_value(const sqmul_design& d, unsigned n, uint64_t cos_code);
 std::array<uint64_t, 3> sqmul_design_out(const sqmul_design& d, unsigned n, uint64_t cos_code,
                                          const std::array<uint64_t, 3>& ksi);
 
-// Rising edges of clk from strobe 17's fall to output 29's rise: the taking edge, the golden
+// Rising edges of clk from strobe 17's fall to output 29's rise (rtl/sqmul/sqmul_ctrl.v,
+// sqmul_r2l_ctrl.v): the synchroniser sync17's squared::sync_stages, the taking edge, the golden
 // model's steps, the done edge.
 unsigned sqmul_clocks(sqmul_walk w, unsigned n);
-// The same by hand, for n >= 1: floor(log2 n) + popcount(n) + 1 left to right (one clock per
-// square and per multiplication), floor(log2 n) + 3 right to left (one clock per bit of n).
+// The same by hand, for n >= 1 and the synchroniser's two: floor(log2 n) + popcount(n) + 3 left
+// to right (one clock per square and per multiplication), floor(log2 n) + 5 right to left (one
+// clock per bit of n).
 unsigned sqmul_clocks_formula(sqmul_walk w, unsigned n);
 
 // The largest |f(n, code) - cos^n| / cos^n over n in [1, n_max] and the Q1.15 codes where

@@ -69,19 +69,20 @@ TEST(SqmulWords, ColourOutputsOnTheSixteenHighWires) {
 }
 
 TEST(SqmulWords, ClocksPerSampleFollowTheFormula) {
-    // The golden models' steps + 2 against floor(log2 n) + popcount(n) + 1 and floor(log2 n) + 3.
+    // The golden models' steps + 4 against floor(log2 n) + popcount(n) + 3 and floor(log2 n) + 5.
     for (unsigned n = 1; n < 1024; ++n) {
         ASSERT_EQ(sqmul_clocks(sqmul_walk::left_to_right, n), sqmul_clocks_formula(sqmul_walk::left_to_right, n)) << n;
         ASSERT_EQ(sqmul_clocks(sqmul_walk::right_to_left, n), sqmul_clocks_formula(sqmul_walk::right_to_left, n)) << n;
     }
-    // By hand: n = 1000 = 0b1111101000: 9 squares + 5 multiplications + 2 = 16; 10 bits + 2 = 12.
-    // n = 5 = 0b101: 2 + 1 + 2 = 5 and 3 + 2 = 5; n = 100 = 0b1100100: 6 + 2 + 2 = 10 and 7 + 2 = 9.
-    EXPECT_EQ(sqmul_clocks(sqmul_walk::left_to_right, 1000), 16u);
-    EXPECT_EQ(sqmul_clocks(sqmul_walk::right_to_left, 1000), 12u);
-    EXPECT_EQ(sqmul_clocks(sqmul_walk::left_to_right, 5), 5u);
-    EXPECT_EQ(sqmul_clocks(sqmul_walk::right_to_left, 5), 5u);
-    EXPECT_EQ(sqmul_clocks(sqmul_walk::left_to_right, 100), 10u);
-    EXPECT_EQ(sqmul_clocks(sqmul_walk::right_to_left, 100), 9u);
+    // By hand, the synchroniser's two edges, the taking edge and the done edge being 4:
+    // n = 1000 = 0b1111101000: 9 squares + 5 multiplications + 4 = 18; 10 bits + 4 = 14.
+    // n = 5 = 0b101: 2 + 1 + 4 = 7 and 3 + 4 = 7; n = 100 = 0b1100100: 6 + 2 + 4 = 12 and 7 + 4 = 11.
+    EXPECT_EQ(sqmul_clocks(sqmul_walk::left_to_right, 1000), 18u);
+    EXPECT_EQ(sqmul_clocks(sqmul_walk::right_to_left, 1000), 14u);
+    EXPECT_EQ(sqmul_clocks(sqmul_walk::left_to_right, 5), 7u);
+    EXPECT_EQ(sqmul_clocks(sqmul_walk::right_to_left, 5), 7u);
+    EXPECT_EQ(sqmul_clocks(sqmul_walk::left_to_right, 100), 12u);
+    EXPECT_EQ(sqmul_clocks(sqmul_walk::right_to_left, 100), 11u);
 }
 
 TEST(SqmulWords, TheRelativeErrorMeasureFindsAKnownError) {

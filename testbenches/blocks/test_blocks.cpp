@@ -12,6 +12,7 @@
 #include "blocks/mul.h"
 #include "blocks/reg.h"
 #include "blocks/saturator.h"
+#include "blocks/synchroniser.h"
 #include "core/report_ids.h"
 
 using namespace shading;
@@ -209,4 +210,41 @@ TEST(Saturator, ClampsAboveHiAfterItsDelayInSaturateModeAndIsWiresInWrapMode) {
     sc_start(2, SC_NS);
     EXPECT_EQ(ys.read(), 0x3FFFFu);
     EXPECT_EQ(yw.read(), 0x3FFFFu);
+}
+
+TEST(Synchroniser, AChangeReachesQAtTheStagesThRisingEdge) {
+    // Two stages, one wire, a 10 ns clock rising at 0, 10, 20 ns, ...: d rises at 3 ns; the first
+    // flip-flop takes it at 10 ns, the second (q) at 20 ns. d falls at 43 ns: q falls at 60 ns.
+    sc_core::sc_clock clk("clk", sc_time(10, SC_NS));
+    sc_core::sc_signal<bool> d("d"), q("q");
+    synchroniser<1, 2> sync("sync");
+    sync.clk(clk); sync.d(d); sync.q(q);
+    sc_start(3, SC_NS);
+    d.write(true);
+    sc_start(sc_time(16999, SC_PS));  // 19.999 ns
+    EXPECT_FALSE(q.read()) << "one rising edge after the change";
+    EXPECT_TRUE(sync.chain().stage(0) != 0) << "the first flip-flop took it at 10 ns";
+    sc_start(2, SC_PS);  // 20.001 ns
+    EXPECT_TRUE(q.read()) << "the second rising edge after the change";
+    sc_start(sc_time(22999, SC_PS));  // 43 ns
+    d.write(false);
+    sc_start(sc_time(16999, SC_PS));  // 59.999 ns
+    EXPECT_TRUE(q.read());
+    EXPECT_FALSE(sync.chain().stage(0) != 0) << "taken at 50 ns";
+    sc_start(2, SC_PS);  // 60.001 ns
+    EXPECT_FALSE(q.read());
+}
+
+TEST(Synchroniser, ThreeStagesOfAFourWireWord) {
+    // Three stages, four wires: 0xA at 1 ns reaches q at the third rising edge after it (30 ns).
+    sc_core::sc_clock clk("clk", sc_time(10, SC_NS));
+    bus<4> d("d"), q("q");
+    synchroniser<4, 3> sync("sync");
+    sync.clk(clk); sync.d(d); sync.q(q);
+    sc_start(1, SC_NS);
+    d.write(0xA);
+    sc_start(sc_time(28999, SC_PS));  // 29.999 ns
+    EXPECT_EQ(q.read(), 0u);
+    sc_start(sc_time(2, SC_PS));  // 30.001 ns
+    EXPECT_EQ(q.read(), 0xAu);
 }

@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 #include <systemc>
+#include <vector>
 
 namespace shading::tb {
 
@@ -29,6 +30,11 @@ public:
         auto it = counts_.find(id);
         return it == counts_.end() ? 0u : it->second;
     }
+    // The texts of the first 64 reports of an id, for tests that check what a report says.
+    std::vector<std::string> messages(const std::string& id) const {
+        auto it = messages_.find(id);
+        return it == messages_.end() ? std::vector<std::string>{} : it->second;
+    }
     unsigned unexpected() const { return unexpected_; }
     void set_verbose(bool v) { verbose_ = v; }
 
@@ -41,6 +47,8 @@ private:
         }
         const std::string id = r.get_msg_type();
         ++self.counts_[id];
+        auto& texts = self.messages_[id];
+        if (texts.size() < 64) texts.push_back(r.get_msg());
         const bool announced = self.expected_.count(id) > 0;
         if (!announced) ++self.unexpected_;
         if (!announced || self.verbose_)
@@ -53,6 +61,7 @@ private:
 
     std::set<std::string> expected_;
     std::map<std::string, unsigned> counts_;
+    std::map<std::string, std::vector<std::string>> messages_;
     unsigned unexpected_ = 0;
     bool verbose_ = false;
     void (*fail_)(const sc_core::sc_report&) = nullptr;

@@ -31,7 +31,7 @@ inline double cpu_seconds() {
 }
 
 // A watchdog far beyond any plan: 24 clocks per job and per sample (the square-and-multiply device's
-// floor(log2 n) + popcount(n) + 2 <= 21 clocks per sample), 6 per pixel, and the frame load.
+// floor(log2 n) + popcount(n) + 4 <= 23 clocks per sample), 6 per pixel, and the frame load.
 inline sc_core::sc_time time_limit(const plan& p) {
     uint64_t clocks = 100;
     for (const auto& j : p.jobs) clocks += 24 + 24 * 4 + 6ull * std::min(j.len, 64u);

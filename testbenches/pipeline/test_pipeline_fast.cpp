@@ -242,7 +242,7 @@ void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_
                           : c.set == interp::sample_set::case1 ? interp::sample_set::case2 : interp::sample_set::case1;
     auto bench = std::make_unique<pair_bench<AGen, EVAL>>("tb", p, k, dev, c, gen, fast_set);
     uint64_t clocks = 100;  // a watchdog far beyond the plan (pipeline_sim_run.h's, doubled)
-    for (const auto& j : p.jobs) clocks += 2 * (12 + 12 * 4 + 6ull * std::min(j.len, 64u));
+    for (const auto& j : p.jobs) clocks += 2 * (14 + 14 * 4 + 6ull * std::min(j.len, 64u));
     sc_core::sc_start(pipeline_period() * static_cast<double>(clocks));
     ASSERT_TRUE(bench->finished());
     bench->chk_b.finish();
@@ -358,14 +358,15 @@ TEST_P(PipelineFastRender, BitExactAgainstTheGoldenFrame) {
     expect_golden_frame(s, p, k, dev, c);
     const hardware_counts hw = hardware_ops(p, c);
     EXPECT_GE(s.clocks, s.frame_load_clocks + hw.clocks);
-    // The squared-quadratic device adds k + 1 clocks to each of a job's samples (sample_fsm.h), the
-    // square-and-multiply device floor(log2 n) + popcount(n) (its squares and multiplications + 1).
+    // The squared-quadratic device adds k + 3 clocks to each of a job's samples (sample_fsm.h;
+    // k + 4 rising edges from its strobe to output 29: its synchroniser's two, taking, k, done), the
+    // square-and-multiply device its squares and multiplications + 3 (the same edges around its walk).
     uint64_t per_sample = 0;
     if (dev.device == scene::specular_device::squared)
-        per_sample = squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k.n).z)) + 1;
+        per_sample = squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k.n).z)) + 3;
     if (dev.device == scene::specular_device::sqmul) {
         const auto g = golden_sqmul(k.n, 0, {0, 0, 0}, overflow_mode::saturate);
-        per_sample = g.squares + g.multiplies + 1;
+        per_sample = g.squares + g.multiplies + 3;
     }
     const uint64_t per_job = 10 + 4 * per_sample;
     EXPECT_LE(s.clocks, s.frame_load_clocks + 20 + hw.clocks + per_job * p.jobs.size());

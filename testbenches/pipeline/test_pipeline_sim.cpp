@@ -343,14 +343,15 @@ TEST(PipelineSimClocks, FdOnePixelPerClock) {
     EXPECT_EQ(r.clocks, r.frame_load_clocks + fill_clocks + hw.clocks) << "frame loaded at clock " << r.frame_load_clocks;
 }
 
-// The squared-quadratic device takes k + 2 clocks from its strobe to output 29 (k = 9 - z, its
-// squarings for the frame's n) where a Fig. 1 device takes one: the sample controller raises strobe
-// 17 after its clock low as before and latches at the first falling edge with output 29 high, so
-// each sample costs k + 1 clocks more (sample_fsm.h). One cubic job of 16 pixels: the fill latency
-// of a Fig. 1 device (12 clocks, above) plus 4 (k + 1), then the Horner units' 16 x 6 clocks.
+// The squared-quadratic device takes k + 4 clocks from its strobe to output 29 (its synchroniser's
+// two rising edges, the taking edge, k = 9 - z squarings for the frame's n, the done edge) where a
+// Fig. 1 device takes one: the sample controller raises strobe 17 after its clock low as before and
+// latches at the first falling edge with output 29 high, so each sample costs k + 3 clocks more
+// (sample_fsm.h). One cubic job of 16 pixels: the fill latency of a Fig. 1 device (12 clocks,
+// above) plus 4 (k + 3), then the Horner units' 16 x 6 clocks.
 class PipelineSimSquaredClocks : public ::testing::TestWithParam<std::pair<unsigned, unsigned>> {};
 
-TEST_P(PipelineSimSquaredClocks, EachSampleWaitsKPlusOneClocksMore) {
+TEST_P(PipelineSimSquaredClocks, EachSampleWaitsKPlusThreeClocksMore) {
     const auto [n, k_squarings] = GetParam();
     auto k = hand_constants();
     k.n = n;
@@ -359,7 +360,7 @@ TEST_P(PipelineSimSquaredClocks, EachSampleWaitsKPlusOneClocksMore) {
     const sim_result sq = simulate_frame(p, k, squared, c, traced());
     EXPECT_EQ(sq.mismatches, 0u);
     expect_golden_frame(sq, p, k, squared, c);
-    EXPECT_EQ(sq.clocks, sq.frame_load_clocks + fill_clocks + 4 * (k_squarings + 1) + 16 * 6)
+    EXPECT_EQ(sq.clocks, sq.frame_load_clocks + fill_clocks + 4 * (k_squarings + 3) + 16 * 6)
         << "frame loaded at clock " << sq.frame_load_clocks;
 }
 INSTANTIATE_TEST_SUITE_P(N, PipelineSimSquaredClocks,

@@ -74,8 +74,9 @@ public:
         : sc_module(name),
           checker(std::move(golden)),
           rtl_checker(std::move(rtl_golden)),
-          clk(has_clk<Device>::value || has_clk<Rtl>::value ? std::make_unique<sc_core::sc_clock>("clk", t.clk_period)
-                                                            : nullptr),
+          clk(has_clk<Device>::value || has_clk<Rtl>::value
+                  ? std::make_unique<sc_core::sc_clock>("clk", t.clk_period, t.clk_duty)
+                  : nullptr),
           dut("dut", std::forward<DeviceArgs>(device_args)...),
           rtl("rtl"),
           stim("stim", std::move(surfaces), t),

@@ -1,8 +1,9 @@
 // Testbench parts shared by the co-simulation of the squared-quadratic device's RTL
 // (test_rtl_squared.cpp, test_rtl_squared_cover.cpp) and the checks of the two designs it is
-// compared with (test_rtl_squared_variants.cpp): the strobe timings, a probe that logs when output
-// 29 rises after each latch, the clocks per sample each design must take, from the golden models,
-// and the checker's golden function and the typed suites' variants (an RTL and its overflow mode).
+// compared with (test_rtl_squared_variants.cpp): the strobe timings, the clocks per sample each
+// design must take, from the golden models, and the checker's golden function and the typed
+// suites' variants (an RTL and its overflow mode); the latency probe is
+// testbenches/squared/squared_phase_sweep.h's.
 #pragma once
 
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "arith/squared_arith.h"
 #include "arith/sqmul_arith.h"
 #include "testbenches/specular/specular_tb.h"
+#include "testbenches/squared/squared_phase_sweep.h"
 
 namespace shading::tb {
 
@@ -55,62 +57,21 @@ inline strobe_timing done_timing(unsigned clocks, const sc_core::sc_time& clk_pe
     return t;
 }
 
-// Rising edges of clk from strobe 17's fall to done's rise, the taking edge counted as the first.
-// The squared-quadratic device: the taking edge, k squares, the done edge.
-inline unsigned squared_edges(unsigned n) { return golden_squared_a(n).k + 2; }
-// The square-and-multiply baseline: the taking edge, one per square and per multiplication, done.
+// Rising edges of clk from strobe 17's fall to done's rise, counted by hand from the handshake
+// (rtl/squared/sq_ctrl.v): the first edge after the fall clocks the request into the
+// synchroniser's first flip-flop, the second into its second, the third takes it (LOAD).
+// The squared-quadratic device: those three, k squares, the done edge.
+inline unsigned squared_edges(unsigned n) { return 3 + golden_squared_a(n).k + 1; }
+// The square-and-multiply baseline: those three, one per square and per multiplication, done.
 inline unsigned sqmul_edges(unsigned n) {
     const auto g = golden_sqmul(n, 0, {0, 0, 0}, overflow_mode::saturate);
-    return g.squares + g.multiplies + 2;
+    return 3 + g.squares + g.multiplies + 1;
 }
-// The right-to-left square-and-multiply design: the taking edge, one per bit of n up to its
-// leading one (a square and, for a 1 bit, a multiplication in the same clock), the done edge.
+// The right-to-left square-and-multiply design (rtl/sqmul/sqmul_r2l_ctrl.v, the same handshake):
+// those three, one per bit of n up to its leading one (a square and, for a 1 bit, a
+// multiplication in the same clock), the done edge.
 inline unsigned sqmul_r2l_edges(unsigned n) {
-    return golden_sqmul_r2l(n, 0, {0, 0, 0}, overflow_mode::saturate).steps + 2;
-}
-
-// The instant of the `edges`-th rising edge of a clock rising at 0, period, 2 period, ... after t
-// (t never on an edge here).
-inline sc_core::sc_time rising_edge_after(const sc_core::sc_time& t, const sc_core::sc_time& period, unsigned edges) {
-    const double first = std::floor(t / period) + 1;
-    return period * (first + edges - 1);
-}
-
-// Logs strobe 17's falling edges and, for each, output 29's first rising edge after it.
-class latency_probe : public sc_core::sc_module {
-public:
-    sc_core::sc_in<bool> ctl17{"ctl17"};
-    sc_core::sc_in<bool> out29_valid{"out29_valid"};
-    std::vector<sc_core::sc_time> falls, rises;
-
-    SC_HAS_PROCESS(latency_probe);
-    explicit latency_probe(const sc_core::sc_module_name& name) : sc_module(name) {
-        SC_METHOD(on_fall);
-        sensitive << ctl17.neg();
-        dont_initialize();
-        SC_METHOD(on_rise);
-        sensitive << out29_valid.pos();
-        dont_initialize();
-    }
-
-private:
-    void on_fall() {
-        falls.push_back(sc_core::sc_time_stamp());
-        armed_ = true;
-    }
-    void on_rise() {
-        if (!armed_) return;  // power-up: output 29 follows the idle-high strobe
-        rises.push_back(sc_core::sc_time_stamp());
-        armed_ = false;
-    }
-    bool armed_ = false;
-};
-
-// The n of every pixel of a list of surfaces that each load n, in streaming order.
-inline std::vector<unsigned> pixel_ns(const std::vector<surface>& s) {
-    std::vector<unsigned> ns;
-    for (const auto& x : s) ns.insert(ns.end(), x.cos_codes.size(), x.n);
-    return ns;
+    return 3 + golden_sqmul_r2l(n, 0, {0, 0, 0}, overflow_mode::saturate).steps + 1;
 }
 
 }  // namespace shading::tb

@@ -3,8 +3,9 @@
 // sample bit-exact against golden_squared and against the model's sample (inputs, instant,
 // outputs) over every 16-bit cos code at n = 1, 3, 20, 1000, every n 0..1023 (cos codes near
 // cos^n = 0.5, 0.1, 0.01), and 10^6 random pixels (four runs of 250 000, one ctest entry each, so
-// each stays within seconds); the clocks per sample (output 29 rises k + 2 rising edges after the
-// strobe) against the golden model's k; negative tests show that both comparisons can fail.
+// each stays within seconds); the clocks per sample (output 29 rises k + 4 rising edges after the
+// strobe) against the golden model's k; strobe 17 at every phase of the clock, each pixel
+// validated once with its own golden colour; negative tests show that both comparisons can fail.
 // Dropped and restarted samples and bad inputs: test_rtl_squared_cover.cpp.
 #include <gtest/gtest.h>
 
@@ -43,12 +44,17 @@ protected:
     // Runs the stream through both devices; every sample of each must match golden and the other.
     // With `falls` and `rises`: strobe 17's falls and the RTL's output-29 rise after each.
     void run(item_source<surface> surfaces, std::size_t expected_pixels, const strobe_timing& t = squared_timing(),
-             std::vector<sc_time>* falls = nullptr, std::vector<sc_time>* rises = nullptr) {
+             std::vector<sc_time>* falls = nullptr, std::vector<sc_time>* rises = nullptr,
+             latency_probe* model_probe = nullptr, unsigned* rtl_extra_rises = nullptr) {
         const auto golden = squared_golden(T::mode);
         bench_t bench("tb", std::move(surfaces), t, golden, golden, T::mode);
         latency_probe probe("probe");
         probe.ctl17(bench.ctl17);
         probe.out29_valid(bench.rtl_out29_valid);
+        if (model_probe != nullptr) {  // the SystemC model's output 29, beside the RTL's `probe`
+            model_probe->ctl17(bench.ctl17);
+            model_probe->out29_valid(bench.out29_valid);
+        }
         const char* dir = std::getenv("SHADING_TRACE");
         const std::string stem = dir && *dir ? std::string(dir) + "/" + current_test_name() : std::string();
         ASSERT_TRUE(run_cosim(bench, sc_time(10000, SC_MS), stem));
@@ -62,6 +68,26 @@ protected:
         EXPECT_EQ(bench.dut.stage().ctl_sq.dropped(), 0u) << "no strobe came before a result was valid";
         if (falls) *falls = probe.falls;
         if (rises) *rises = probe.rises;
+        if (rtl_extra_rises) *rtl_extra_rises = probe.extra_rises;
+    }
+
+    // Strobe 17 at every phase of the clock (phase_sweep_timing): n = 1, 3, 20, 1000, `pixels`
+    // each, every cos code its own. Both devices validate every pixel once, with its golden colour
+    // (the bench: samples, golden, RTL against model), at the (k + 4)-th rising edge after its
+    // strobe (squared_edges, counted by hand), never twice.
+    void phase_sweep(const strobe_timing& t, std::size_t pixels) {
+        const std::vector<unsigned> n{1, 3, 20, 1000};
+        const auto s = phase_sweep_surfaces(n, pixels);
+        const auto ns = pixel_ns(s);
+        std::vector<sc_time> falls, rises;
+        unsigned extra = 0;
+        latency_probe model("model_probe");
+        run(s, ns.size(), t, &falls, &rises, &model, &extra);
+        EXPECT_EQ(phases_missed(falls, t.clk_period, sc_time(500, sc_core::SC_PS)), 0u) << "every 0.5 ns, edges included";
+        EXPECT_EQ(phase_sweep_wrong(falls, rises, extra, ns, t.clk_period, sc_core::SC_ZERO_TIME, squared_edges), 0u)
+            << "RTL";
+        EXPECT_EQ(phase_sweep_wrong(model, ns, t.clk_period, sc_time(100, sc_core::SC_PS), squared_edges), 0u)
+            << "SystemC model (output 29 a gate's delay, 0.1 ns, after the RTL's)";
     }
 
     void sweep(uint32_t first, uint64_t last) {
@@ -117,14 +143,15 @@ TYPED_TEST(RtlSquared, EveryNIncludingOutOfRange) {
     EXPECT_EQ(flat, 0u);
 }
 
-TYPED_TEST(RtlSquared, OutputTwentyNineRisesKPlusTwoRisingEdgesAfterTheStrobe) {
-    // Strobe 17 low for 5 ns only: output 29 rises with done, at the (k + 2)-th rising edge of clk
-    // after the strobe fell (k from the golden model), for every n 0..1023; the model's instant is
-    // the RTL's plus the AND gate's delay (compared by the bench).
+TYPED_TEST(RtlSquared, OutputTwentyNineRisesKPlusFourRisingEdgesAfterTheStrobe) {
+    // Strobe 17 low for 5 ns only: output 29 rises with done, at the (k + 4)-th rising edge of clk
+    // after the strobe fell (k from the golden model; squared_edges counts the synchroniser's two),
+    // for every n 0..1023; the model's instant is the RTL's plus the AND gate's delay (compared by
+    // the bench).
     report_log::get().expect(msg::input);
     std::vector<surface> s;
     for (unsigned n = 0; n < (1u << squared::n_fmt.width); ++n) s.push_back({n, {255, 255, 255}, {0x7000, 0x7F00}});
-    const strobe_timing t = done_timing(24);  // k = 9: 11 edges
+    const strobe_timing t = done_timing(26);  // k = 9: 13 edges
     std::vector<sc_time> falls, rises;
     this->run(s, s.size() * 2, t, &falls, &rises);
     const auto ns = pixel_ns(s);
@@ -138,6 +165,21 @@ TYPED_TEST(RtlSquared, OutputTwentyNineRisesKPlusTwoRisingEdgesAfterTheStrobe) {
                           << ", want " << want << " (" << squared_edges(ns[i]) << " rising edges)";
     }
     EXPECT_EQ(wrong, 0u);
+}
+
+// Strobe 17 at every phase of a 20 ns clock, in 0.5 ns steps (41 pixels per n: one whole period
+// and its edges), each pixel period 28 clocks + 0.5 ns (twice the 13 edges of the longest result,
+// and more: the next surface's loads come half a pixel after the strobe).
+TYPED_TEST(RtlSquared, StrobeSeventeenAtEveryPhaseOfTheClock) {
+    this->phase_sweep(phase_sweep_timing(28, sc_time(500, sc_core::SC_PS), sc_time(20, sc_core::SC_NS)), 41);
+}
+// The same with a 25 % duty cycle (high 5 ns) and with a 7 ns clock (the shortest 0.5 ns grid
+// the phase rules allow: low 3.5 ns > 3.2 ns), saturating.
+TYPED_TEST(RtlSquared, StrobeSeventeenAtEveryPhaseOfAQuarterDutyClock) {
+    this->phase_sweep(phase_sweep_timing(28, sc_time(500, sc_core::SC_PS), sc_time(20, sc_core::SC_NS), 0.25), 41);
+}
+TYPED_TEST(RtlSquared, StrobeSeventeenAtEveryPhaseOfASevenNanosecondClock) {
+    this->phase_sweep(phase_sweep_timing(28, sc_time(500, sc_core::SC_PS), sc_time(7, sc_core::SC_NS)), 15);
 }
 
 // 10^6 random pixels per mode, in four runs (random_surfaces: n 1..1000, k_s*I 0..255 reloaded at

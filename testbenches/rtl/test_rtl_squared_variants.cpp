@@ -7,9 +7,9 @@
 // (rtl/sqmul/sqmul_r2l_device.v: a squarer and a multiplier in one clock per bit; golden_sqmul_r2l;
 // no SystemC model), all saturating (the synthesis table's variants; no range checker: n = 0,
 // n > 1000 and cos > 1.0 are simply compared). Random pixels, every n 0..1023, every cos code at
-// n = 1000, the clocked designs' clocks per sample for every n, and negative tests; both
-// square-and-multiply designs also at the word-length study's Q1.16 P word (the same RTL read with
-// the formats of sqmul_word/p16/).
+// n = 1000, the clocked designs' clocks per sample for every n, strobe 17 at every phase of their
+// clock, and negative tests; both square-and-multiply designs also at the word-length study's Q1.16
+// P word (the same RTL read with the formats of sqmul_word/p16/).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -143,7 +143,7 @@ TEST_F(RtlSquaredVariants, SeriesEveryCosCodeAtN1000) {
     EXPECT_EQ(run_rtl<Vrtl_squared_series_saturate>(every_cos_code(1000), 65536, strobe_timing{}, series_golden()), 0u);
 }
 
-// The square-and-multiply baseline: 22 clocks per pixel (its longest result takes 20).
+// The square-and-multiply baseline: 24 clocks per pixel (its longest result takes 22).
 TEST_F(RtlSquaredVariants, SqmulRandom) {
     EXPECT_EQ(run_rtl<Vrtl_sqmul_saturate>(random_surfaces(250000, 12), 250000, sqmul_timing(), sqmul_golden()), 0u);
 }
@@ -153,12 +153,29 @@ TEST_F(RtlSquaredVariants, SqmulEveryCosCodeAtN1000) {
 
 TEST_F(RtlSquaredVariants, SqmulEveryNAndItsClocksPerSample) {
     // Every n 0..1023, bit-exact, with strobe 17 low for 5 ns: output 29 rises with done, at the
-    // (squares + multiplies + 2)-th rising edge after the strobe fell (counts from golden_sqmul:
-    // the taking edge, one per square and per multiplication, the done edge).
-    expect_every_n_and_clocks<Vrtl_sqmul_saturate>(sqmul_golden(), sqmul_edges, 42);  // n = 1023: 20 edges
-    // Hand-worked: n = 1000 = 0b1111101000: 9 squares and 5 multiplications, 16 edges; n = 20: 7.
-    EXPECT_EQ(sqmul_edges(1000), 16u);
-    EXPECT_EQ(sqmul_edges(20), 7u);
+    // (squares + multiplies + 4)-th rising edge after the strobe fell (counts from golden_sqmul:
+    // the synchroniser's two edges, the taking edge, one per square and per multiplication, the
+    // done edge).
+    expect_every_n_and_clocks<Vrtl_sqmul_saturate>(sqmul_golden(), sqmul_edges, 44);  // n = 1023: 22 edges
+    // Hand-worked: n = 1000 = 0b1111101000: 9 squares and 5 multiplications, 2 + 1 + 14 + 1 = 18
+    // edges; n = 20 = 0b10100: 4 squares and 1 multiplication, 2 + 1 + 5 + 1 = 9.
+    EXPECT_EQ(sqmul_edges(1000), 18u);
+    EXPECT_EQ(sqmul_edges(20), 9u);
+}
+
+TEST_F(RtlSquaredVariants, SqmulStrobeSeventeenAtEveryPhaseOfTheClock) {
+    // Strobe 17 at every phase of a 20 ns clock in 0.5 ns steps (phase_sweep_timing: 41 pixels per
+    // n, a pixel period of 46 clocks + 0.5 ns, the longest result 22 edges), n = 1, 20, 1000, 1023:
+    // every pixel bit-exact against golden_sqmul, validated once, at the (squares + multiplies +
+    // 4)-th rising edge after its strobe, never twice.
+    const std::vector<unsigned> n{1, 20, 1000, 1023};
+    const auto s = phase_sweep_surfaces(n, 41);
+    const auto ns = pixel_ns(s);
+    const strobe_timing t = phase_sweep_timing(46, sc_time(500, sc_core::SC_PS), sc_time(20, sc_core::SC_NS));
+    latency_probe probe("probe");
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_saturate>(s, ns.size(), t, sqmul_golden(), &probe), 0u);
+    EXPECT_EQ(phases_missed(probe.falls, t.clk_period, sc_time(500, sc_core::SC_PS)), 0u);
+    EXPECT_EQ(phase_sweep_wrong(probe, ns, t.clk_period, sc_core::SC_ZERO_TIME, sqmul_edges), 0u);
 }
 
 TEST_F(RtlSquaredVariants, AnRtlThatDiffersFromItsGoldenIsCaught) {
@@ -169,7 +186,7 @@ TEST_F(RtlSquaredVariants, AnRtlThatDiffersFromItsGoldenIsCaught) {
     EXPECT_EQ(run_rtl<Vrtl_sqmul_saturate>(s, 3, sqmul_timing(), series_golden()), 3u);
 }
 
-// The right-to-left design: the baseline's pixel period (its longest result takes 12 clocks).
+// The right-to-left design: the baseline's pixel period (its longest result takes 14 clocks).
 TEST_F(RtlSquaredVariants, SqmulR2lRandom) {
     EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(random_surfaces(250000, 13), 250000, sqmul_timing(), sqmul_r2l_golden()),
               0u);
@@ -179,15 +196,30 @@ TEST_F(RtlSquaredVariants, SqmulR2lEveryCosCodeAtN1000) {
 }
 
 TEST_F(RtlSquaredVariants, SqmulR2lEveryNAndItsClocksPerSample) {
-    // Output 29 at the (steps + 2)-th rising edge: the taking edge, one per bit of n up to its
-    // leading one, the done edge (steps from golden_sqmul_r2l).
-    expect_every_n_and_clocks<Vrtl_sqmul_r2l_saturate>(sqmul_r2l_golden(), sqmul_r2l_edges, 26);  // n = 1023: 12
-    // Hand-worked: n = 1000 = 0b1111101000 has 10 bits: 12 edges; n = 20 = 0b10100: 7; n = 5: 5;
-    // n = 0: no bit, 2 (P = 1.0).
-    EXPECT_EQ(sqmul_r2l_edges(1000), 12u);
-    EXPECT_EQ(sqmul_r2l_edges(20), 7u);
-    EXPECT_EQ(sqmul_r2l_edges(5), 5u);
-    EXPECT_EQ(sqmul_r2l_edges(0), 2u);
+    // Output 29 at the (steps + 4)-th rising edge: the synchroniser's two edges, the taking edge,
+    // one per bit of n up to its leading one, the done edge (steps from golden_sqmul_r2l).
+    expect_every_n_and_clocks<Vrtl_sqmul_r2l_saturate>(sqmul_r2l_golden(), sqmul_r2l_edges, 30);  // n = 1023: 14
+    // Hand-worked: n = 1000 = 0b1111101000 has 10 bits: 2 + 1 + 10 + 1 = 14 edges; n = 20 =
+    // 0b10100, 5 bits: 9; n = 5 = 0b101, 3 bits: 7; n = 0: no bit, 2 + 1 + 0 + 1 = 4 (P = 1.0).
+    EXPECT_EQ(sqmul_r2l_edges(1000), 14u);
+    EXPECT_EQ(sqmul_r2l_edges(20), 9u);
+    EXPECT_EQ(sqmul_r2l_edges(5), 7u);
+    EXPECT_EQ(sqmul_r2l_edges(0), 4u);
+}
+
+TEST_F(RtlSquaredVariants, SqmulR2lStrobeSeventeenAtEveryPhaseOfTheClock) {
+    // As the baseline's: strobe 17 at every phase of a 20 ns clock in 0.5 ns steps (41 pixels per
+    // n, a pixel period of 30 clocks + 0.5 ns, the longest result 14 edges), n = 1, 20, 1000, 1023:
+    // every pixel bit-exact against golden_sqmul_r2l, validated once, at the (steps + 4)-th rising
+    // edge after its strobe, never twice.
+    const std::vector<unsigned> n{1, 20, 1000, 1023};
+    const auto s = phase_sweep_surfaces(n, 41);
+    const auto ns = pixel_ns(s);
+    const strobe_timing t = phase_sweep_timing(30, sc_time(500, sc_core::SC_PS), sc_time(20, sc_core::SC_NS));
+    latency_probe probe("probe");
+    EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_saturate>(s, ns.size(), t, sqmul_r2l_golden(), &probe), 0u);
+    EXPECT_EQ(phases_missed(probe.falls, t.clk_period, sc_time(500, sc_core::SC_PS)), 0u);
+    EXPECT_EQ(phase_sweep_wrong(probe, ns, t.clk_period, sc_core::SC_ZERO_TIME, sqmul_r2l_edges), 0u);
 }
 
 TEST_F(RtlSquaredVariants, AnR2lRtlThatDiffersFromItsGoldenIsCaught) {

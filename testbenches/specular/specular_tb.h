@@ -77,29 +77,50 @@ struct strobe_timing {
     // violation, for the tests of that bad input). Negative values are not allowed.
     sc_core::sc_time cos_lead = t_high / 2;
     // The clock of a device with a `clk` pin (the squared-quadratic device's squaring stage; the
-    // bench makes an sc_clock of this period, first rising edge at 0); others have none.
+    // bench makes an sc_clock of this period and duty cycle, first rising edge at 0); others have none.
     sc_core::sc_time clk_period{20, sc_core::SC_NS};
+    double clk_duty = 0.5;
 };
 
-// Fig. 3 for the squared-quadratic device: output 29 rises at most 11 clocks after strobe 17 fell
-// (k = 9: the taking edge, 9 squares, the done edge), so a pixel period of 13 clocks (12 low,
-// 1 high) never strobes before the previous result is valid.
+// Fig. 3 for the squared-quadratic device: output 29 rises at most 13 clocks after strobe 17 fell
+// (k = 9: the synchroniser's two rising edges, the taking edge, 9 squares, the done edge), so a
+// pixel period of 15 clocks (14 low, 1 high) never strobes before the previous result is valid.
 inline strobe_timing squared_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
     strobe_timing t;
     t.clk_period = clk_period;
-    t.t_low = 12 * clk_period;
+    t.t_low = 14 * clk_period;
     t.t_high = clk_period;
     t.cos_lead = t.t_high / 2;
     return t;
 }
 
-// Fig. 3 for the square-and-multiply device: output 29 rises at most 20 clocks after strobe 17
-// fell (n = 1023: the taking edge, 9 squares, 9 multiplications, the done edge), so a pixel period
-// of 22 clocks (21 low, 1 high) never strobes before the previous result is valid (nor for the
-// right-to-left design, at most 12).
+// Fig. 3 for the square-and-multiply device: output 29 rises at most 22 clocks after strobe 17
+// fell (n = 1023: the synchroniser's two rising edges, the taking edge, 9 squares,
+// 9 multiplications, the done edge), so a pixel period of 24 clocks (23 low, 1 high) never strobes
+// before the previous result is valid (nor for the right-to-left design, at most 14).
 inline strobe_timing sqmul_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
     strobe_timing t = squared_timing(clk_period);
-    t.t_low = 21 * clk_period;
+    t.t_low = 23 * clk_period;
+    return t;
+}
+
+// Strobe 17 at every phase of the squared-quadratic device's clock: a pixel period of `clocks`
+// clocks plus `step`, so each strobe falls `step` later in the clock's period than the one before
+// (surface loads shift it by 8 ns each), strobe 17 low for `low` only (output 29 then rises with
+// done). The stimulus loads the next surface (and ends the run) half the high phase after strobe
+// 17 rose, so `clocks` must be at least twice the longest result's rising edges: every result is
+// then valid before. With a clock of whole nanoseconds, a 0.5 ns step and the
+// default 5.5 ns low phase every fall lands on the 0.5 ns grid (it comes half a high phase,
+// (clocks x period - 5 ns) / 2, into each pixel), so the clock's edges are among the phases.
+inline strobe_timing phase_sweep_timing(unsigned clocks, const sc_core::sc_time& step,
+                                        const sc_core::sc_time& clk_period, double duty = 0.5,
+                                        const sc_core::sc_time& low = sc_core::sc_time(5500, sc_core::SC_PS)) {
+    strobe_timing t;
+    t.clk_period = clk_period;
+    t.clk_duty = duty;
+    t.t_low = low;
+    t.t_high = clk_period * static_cast<double>(clocks) + step - low;
+    t.cos_lead = t.t_high / 2;
     return t;
 }
 
@@ -364,7 +385,7 @@ public:
                    specular_checker::golden_fn golden, DeviceArgs&&... device_args)
         : sc_module(name),
           checker(std::move(golden)),
-          clk(has_clk<Device>::value ? std::make_unique<sc_core::sc_clock>("clk", t.clk_period) : nullptr),
+          clk(has_clk<Device>::value ? std::make_unique<sc_core::sc_clock>("clk", t.clk_period, t.clk_duty) : nullptr),
           dut("dut", std::forward<DeviceArgs>(device_args)...),
           stim("stim", std::move(surfaces), t),
           mon("mon", [this](const pixel_sample& s) { checker.check(s); }) {

@@ -31,10 +31,11 @@
 namespace shading::tb {
 
 // Where a restarting strobe 17 falls (P the clock period), counted from the previous strobe's
-// taking edge T (the first rising edge of clk after its fall) and its done edge D (the rising edge
-// at which output 29 rises for it, from the surface's reference pixel):
+// taking edge T (the (squared::sync_stages + 1)-th rising edge of clk after its fall: its request
+// crosses the synchroniser's flip-flops first) and its done edge D (the rising edge at which
+// output 29 rises for it, from the surface's reference pixel):
 enum class restart_at {
-    before_take,   // half a clock after the previous fall, still before T: not yet taken
+    before_take,   // half a clock after the previous fall, before its first rising edge: not yet taken
     load_clock,    // T + 3P/4: the clock after the taking edge, RG_SQ holding the loaded quadratic
     mid_squaring,  // halfway from T to D, 3P/4 into its clock
     last_clock,    // D - P/4: one clock before done
@@ -103,7 +104,8 @@ public:
 
     bool finished() const { return finished_; }
     unsigned timeouts() const { return timeouts_; }  // chains whose output 29 never rose
-    // Per surface: rising edges from the reference pixel's taking edge to its done edge, both counted.
+    // Per surface: rising edges from the reference pixel's taking edge to its done edge, both counted
+    // (the taking edge placed by squared::sync_stages; the done edge measured on the model).
     const std::vector<unsigned>& edges() const { return edges_; }
     // Chains whose last pixel took another number of edges than the surface's reference pixel.
     unsigned latency_changes() const { return latency_changes_; }
@@ -140,12 +142,12 @@ private:
     // its last pixel took, 0 when output 29 did not rise within 64 clocks.
     unsigned chain(const restart_chain& c, unsigned edges) {
         const sc_core::sc_time e = edge_after(sc_core::sc_time_stamp() + p_);
-        sc_core::sc_time fall = e + p_ / 4, take = e + p_;
+        sc_core::sc_time fall = e + p_ / 4, take = taking_edge(fall);
         strobe(c.cos[0], fall);
         for (std::size_t i = 1; i < c.cos.size(); ++i) {
             fall = place(c.at.at(i - 1), fall, take, edges);
             strobe(c.cos[i], fall);
-            take = edge_after(fall);
+            take = taking_edge(fall);
         }
         const sc_core::sc_time start = sc_core::sc_time_stamp(), limit = 64 * p_;
         wait(limit, out29_valid.posedge_event());
@@ -189,6 +191,11 @@ private:
     }
 
     sc_core::sc_time edge_after(const sc_core::sc_time& t) const { return p_ * (std::floor(t / p_) + 1); }
+    // The rising edge that takes a strobe falling at t (never on an edge): the synchroniser's
+    // squared::sync_stages edges, then the controller's.
+    sc_core::sc_time taking_edge(const sc_core::sc_time& t) const {
+        return edge_after(t) + p_ * static_cast<double>(squared::sync_stages);
+    }
 
     items plan_;
     sc_core::sc_time p_, load_pulse_;

@@ -69,7 +69,7 @@ int run_device(bench_runner& run, options& o) {
         std::printf("%6s %9s %11s %26s %18s\n", "n", "samples", "mismatches", "max rel err (cos^n>=0.56)",
                     "clocks per sample");
         for (const auto& [n, st] : bench.checker.stats()) {
-            const unsigned clocks = squared::sq_count::squarings(golden_squared_a(n).z) + 2;
+            const unsigned clocks = squared::sq_count::squarings(golden_squared_a(n).z) + squared::sync_stages + 2;
             std::printf("%6llu %9zu %11zu %25.3f%% %18u\n", static_cast<unsigned long long>(n), st.samples,
                         st.mismatches, 100.0 * st.max_rel_err_056, clocks);
             run.summary({run.bench(), std::string(o.sweep ? "sweep" : "scene") + "_n" + std::to_string(n) + "_" +

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -50,10 +51,12 @@ void expect_golden(const pixel_sample& s, overflow_mode mode = overflow_mode::sa
 
 }  // namespace
 
-TEST(SquaredTiming, OutputTwentyNineRisesKPlusTwoRisingEdgesAfterTheStrobe) {
+TEST(SquaredTiming, OutputTwentyNineRisesKPlusFourRisingEdgesAfterTheStrobe) {
     // Strobe 17 falls at 105 ns into each 400 ns slot and rises 10 ns later: output 29 waits for
-    // the stage's done, which rises at the (k + 2)-th rising edge after the fall (the taking edge
-    // counted), i.e. next_rise(fall) + (k + 1) clocks, plus the AND gate's delay.
+    // the stage's done. Counted by hand: the first rising edge after the fall clocks the request
+    // into sync17's first flip-flop, the second into its second, the third takes it (LOAD), k
+    // more square, the next raises done: the (k + 4)-th rising edge, i.e. next_rise(fall) +
+    // (k + 3) clocks, plus the AND gate's delay. n = 1000: 120 + 12 * 20 = 360 ns into the slot.
     const std::vector<std::pair<unsigned, unsigned>> nk{{1, 0}, {2, 1}, {3, 1}, {20, 4}, {512, 9}, {1000, 9}};
     bench_t bench("tb", clk20, [&](bench_t& b) {
         for (std::size_t j = 0; j < nk.size(); ++j) {
@@ -70,7 +73,7 @@ TEST(SquaredTiming, OutputTwentyNineRisesKPlusTwoRisingEdgesAfterTheStrobe) {
     ASSERT_EQ(bench.samples.size(), nk.size());
     for (std::size_t j = 0; j < nk.size(); ++j) {
         const sc_time fall(400.0 * j + 105, SC_NS);
-        const sc_time want = next_rise(fall, clk20) + clk20 * static_cast<double>(nk[j].second + 1) + gate;
+        const sc_time want = next_rise(fall, clk20) + clk20 * static_cast<double>(nk[j].second + 3) + gate;
         EXPECT_EQ(bench.valid_rises[j], want) << "n = " << nk[j].first;
         expect_golden(bench.samples[j]);
     }
@@ -78,15 +81,16 @@ TEST(SquaredTiming, OutputTwentyNineRisesKPlusTwoRisingEdgesAfterTheStrobe) {
 }
 
 TEST(SquaredTiming, OutputTwentyNineFollowsStrobeSeventeenOnceTheResultIsReady) {
-    // Strobe 17 held low for 250 ns, longer than any n needs: output 29 rises with it (Fig. 3).
+    // Strobe 17 held low for 270 ns, longer than any n needs (n = 1000: done at the 13th rising
+    // edge after 105 ns, 360 ns): output 29 rises with it (Fig. 3), at 375 ns.
     bench_t bench("tb", clk20, [](bench_t& b) {
         b.load(1000, 200);
-        b.strobe(sc_time(105, SC_NS), 0x7FF0, sc_time(250, SC_NS));
+        b.strobe(sc_time(105, SC_NS), 0x7FF0, sc_time(270, SC_NS));
         b.until(sc_time(500, SC_NS));
     });
     run(bench);
     ASSERT_EQ(bench.valid_rises.size(), 1u);
-    EXPECT_EQ(bench.valid_rises[0], sc_time(355, SC_NS) + gate);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(375, SC_NS) + gate);
     ASSERT_EQ(bench.samples.size(), 1u);
     expect_golden(bench.samples[0]);
 }
@@ -135,27 +139,32 @@ TEST(SquaredTiming, ClockLowPhaseNotLongerThanItsPathIsReported) {
 }
 
 TEST(SquaredTiming, LoadTooSoonAfterStrobeSeventeenIsReported) {
-    // A 10 ns clock: the load latches 5 ns after the taking edge. Strobe 17 falling 1 ns before a
-    // rising edge leaves RG2's 8.5 ns path 6 ns: reported once; falling 1 ns after one leaves it
-    // 14 ns: silent.
+    // The load latches half a clock after the taking edge, the third rising edge after strobe 17
+    // fell: at least 2.5 clocks after the strobe, 16 ns for the shortest clock the phase rules
+    // allow (6.4 ns), so RG2's 8.5 ns path is always met there. A 3 ns clock (rising at 0, 3, ...;
+    // its 1.5 ns low phases reported as well) breaks it: strobe 17 falling at 98.5 ns, 0.5 ns
+    // before a rising edge, passes sync17 at 99 and 102 ns, is taken at 105 and loaded at 106.5 ns,
+    // 8 ns after the strobe: reported once. Falling at 201 ns, on a rising edge, it is sampled at
+    // 204 ns (the clock first), taken at 210 and loaded at 211.5 ns, 10.5 ns after: silent.
     report_log::get().expect(msg::timing);
-    const sc_time clk10(10, SC_NS);
-    bench_t bench("tb", clk10, [](bench_t& b) {
-        b.load(4, 255);
-        b.strobe(sc_time(99, SC_NS), 0x7000, sc_time(5, SC_NS));
+    report_log::get().expect(msg::setup);  // at 3 ns, RG_SQ's input may change at its latching instant
+    const sc_time clk3(3, SC_NS);
+    bench_t bench("tb", clk3, [](bench_t& b) {
+        b.load(1, 255);
+        b.strobe(sc_time(98500, SC_PS), 0x7000, sc_time(5, SC_NS));
         b.strobe(sc_time(201, SC_NS), 0x7100, sc_time(5, SC_NS));
         b.until(sc_time(300, SC_NS));
     });
     run(bench);
     EXPECT_EQ(bench.dut.chk_load.violations(), 1u);
-    EXPECT_EQ(report_log::get().count(msg::timing), 1u);
+    EXPECT_GE(bench.dut.chk_clk.violations(), 10u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 1u + 10u);  // the phase checker reports 10
     ASSERT_EQ(bench.samples.size(), 2u);
-    expect_golden(bench.samples[1]);
 }
 
 TEST(SquaredTiming, NLoadedBetweenTheStrobeAndTheLoadIsReported) {
-    // Strobe 17 falls at 105 ns, the load latches at 130 ns; strobe 15 falling at 119 ns leaves
-    // RG1's 11.3 ns path 11 ns.
+    // Strobe 17 falls at 105 ns; 120 and 140 ns clock it through sync17, 160 ns takes it and the
+    // load latches at 170 ns; strobe 15 falling at 159 ns leaves RG1's 11.3 ns path 11 ns.
     report_log::get().expect(msg::timing);
     bench_t bench("tb", clk20, [](bench_t& b) {
         b.load(20, 255);
@@ -163,8 +172,8 @@ TEST(SquaredTiming, NLoadedBetweenTheStrobeAndTheLoadIsReported) {
         b.in18_cos.write(0x7800);
         b.until(sc_time(105, SC_NS));
         b.ctl17.write(false);
-        b.until(sc_time(118, SC_NS));
-        b.load_n(100);  // ctl15 falls at 119 ns
+        b.until(sc_time(158, SC_NS));
+        b.load_n(100);  // ctl15 falls at 159 ns
         b.until(sc_time(400, SC_NS));
         b.ctl17.write(true);
         b.until(sc_time(500, SC_NS));
@@ -174,22 +183,109 @@ TEST(SquaredTiming, NLoadedBetweenTheStrobeAndTheLoadIsReported) {
     EXPECT_EQ(report_log::get().count(msg::timing), 1u);
 }
 
+TEST(SquaredTiming, StrobeTwentyLatchingTooLateBeforeOutputTwentyNineIsReported) {
+    // n = 1 (k = 0), k_s*I = 100: strobe 17 falls at 105 ns and stays low until 200 ns (done at the
+    // fourth rising edge, 180 ns); strobe 20 latches k_s*I(R) = 200 at 199 ns, 1.1 ns before
+    // output 29 rises (200.1 ns), less than RG3 -> MUL12's 3.2 ns: reported. The defined result:
+    // the outputs sampled at that rise are not settled: output 25 still shows cos * 100
+    // (0x7000 * 100 >> 7 = 22400 on Q9.8), and changes to cos * 200 = 44800 3.2 ns after the latch.
+    report_log::get().expect(msg::timing);
+    bench_t bench("tb", clk20, [](bench_t& b) {
+        b.load(1, 100);
+        b.until(sc_time(104, SC_NS));
+        b.in18_cos.write(0x7000);
+        b.until(sc_time(105, SC_NS));
+        b.ctl17.write(false);
+        b.until(sc_time(198, SC_NS));
+        b.in19_ksi_r.write(200);
+        b.until(sc_time(199, SC_NS));
+        b.ctl20.write(false);
+        b.until(sc_time(200, SC_NS));
+        b.ctl17.write(true);
+        b.until(sc_time(201, SC_NS));
+        b.ctl20.write(true);
+        b.until(sc_time(300, SC_NS));
+    });
+    run(bench);
+    EXPECT_EQ(bench.dut.chk_timing.violations(), 1u);
+    const auto texts = report_log::get().messages(msg::timing);
+    ASSERT_EQ(texts.size(), 1u);
+    const std::string& t = texts[0];
+    EXPECT_NE(t.find("tb.dut.chk_timing: outputs validated at " + sc_time(200100, SC_PS).to_string() + ", only " +
+                     sc_time(1100, SC_PS).to_string() + " after"),
+              std::string::npos) << t;
+    EXPECT_NE(t.find(std::string(bench.dut.chk_timing.ctl[0].name()) + " latched"), std::string::npos)
+        << "strobe 20's input of the checker: " << t;
+    EXPECT_NE(t.find("(its path to the outputs: rg3 -> mul12 = 3.2 ns)"), std::string::npos) << t;
+    EXPECT_NE(t.find("the outputs sampled at this edge are not settled"), std::string::npos) << t;
+    ASSERT_EQ(bench.valid_rises.size(), 1u);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(200, SC_NS) + gate);
+    ASSERT_EQ(bench.samples.size(), 1u);
+    EXPECT_EQ(bench.samples[0].ksi[0], 200u) << "the monitor saw RG3 latch the new k_s*I";
+    EXPECT_EQ(bench.samples[0].out[0], 22400u) << "output 25 not yet settled: the old k_s*I's colour";
+    EXPECT_EQ(bench.samples[0].out[0], golden_squared(1, 0x7000, {100, 100, 100}, overflow_mode::saturate).out[0]);
+    EXPECT_EQ(bench.out25_r.read().to_uint64(), 44800u) << "settled after RG3 -> MUL12";
+}
+
+TEST(SquaredTiming, ClockHighPhaseNotLongerThanItsPathIsReported) {
+    // A 20 ns clock at 1 % duty: high 0.2 ns, not longer than the controller's select through
+    // MX_SQ (0.3 ns): every high phase is counted, the first 10 reported. n = 1 (k = 0), strobe 17
+    // low 5 ns, so output 29 rises at done. The defined result, worked by hand: the select changes
+    // at the rising edge and MX_SQ follows 0.3 ns later, after RG_SQ latched at the falling edge
+    // 0.2 ns after it; so RG_SQ takes each input one clock late: at the LOAD's falling edge it
+    // holds, at the done edge's it takes the quadratic, 0.1 ns after output 29 rose. Each sample
+    // therefore shows the previous pixel's colour (the first: RG_SQ's power-up 0), at n = 1
+    // cos * k_s*I (0x7000 * 255 >> 7 = 57120, 0x6000: 48960).
+    report_log::get().expect(msg::timing);
+    const std::vector<uint32_t> cs{0x7000, 0x6000, 0x5000};
+    const std::map<uint64_t, uint64_t> shown{{0x7000, 0}, {0x6000, 57120}, {0x5000, 48960}};
+    std::vector<surface> s{{1, {255, 255, 255}, cs}};
+    const strobe_timing t = phase_sweep_timing(15, sc_core::SC_ZERO_TIME, clk20, 0.01);
+    specular_bench<squared_device> bench("tb", s, t, [&shown](uint64_t, uint64_t c, const std::array<uint64_t, 3>&) {
+        datapath_nets r{};
+        const auto it = shown.find(c);
+        const uint64_t v = it == shown.end() ? 1 : it->second;
+        r.out = {v, v, v};
+        return r;
+    });
+    ASSERT_TRUE(run_to_completion(bench, sc_time(1, sc_core::SC_MS)));
+    EXPECT_EQ(bench.checker.samples(), cs.size());
+    EXPECT_EQ(bench.checker.mismatches(), 0u) << "each sample the previous pixel's colour";
+    EXPECT_GE(bench.dut.chk_clk.high_violations(), 10u);
+    EXPECT_EQ(bench.dut.chk_clk.low_violations(), 0u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 10u);
+    const auto texts = report_log::get().messages(msg::timing);
+    ASSERT_EQ(texts.size(), 10u);
+    EXPECT_NE(texts[0].find("tb.dut.chk_clk: high phase of"), std::string::npos) << texts[0];
+    EXPECT_NE(texts[0].find("lasts " + sc_time(200, SC_PS).to_string() + ", not longer than the " +
+                            sc_time(300, SC_PS).to_string() + " its paths take"),
+              std::string::npos)
+        << texts[0];
+    EXPECT_NE(texts[0].find("are not settled"), std::string::npos) << texts[0];
+    EXPECT_NE(texts[9].find("[10 violations reported; further ones are only counted]"), std::string::npos) << texts[9];
+}
+
 TEST(SquaredBadInput, StrobeBeforeTheResultIsValidIsReportedAndTheResultDropped) {
-    // n = 1000 (k = 9): the first cos is taken at 120 ns and still being squared when strobe 17
-    // falls again at 150 ns: reported, that result never validated; the second is taken at 160 ns
-    // and output 29 rises at 160 + 10 * 20 ns.
+    // n = 1000 (k = 9): the first cos crosses sync17 at 120 and 140 ns, is taken at 160 ns and
+    // still being squared when strobe 17 falls again at 190 ns: reported, that result never
+    // validated; the second request crosses at 200 and 220 ns, is taken at 240 ns, and output 29
+    // rises at 240 + 10 * 20 ns.
     report_log::get().expect(msg::timing);
     bench_t bench("tb", clk20, [](bench_t& b) {
         b.load(1000, 255);
         b.strobe(sc_time(105, SC_NS), 0x7000, sc_time(10, SC_NS));
-        b.strobe(sc_time(150, SC_NS), 0x7F00, sc_time(10, SC_NS));
-        b.until(sc_time(500, SC_NS));
+        b.strobe(sc_time(190, SC_NS), 0x7F00, sc_time(10, SC_NS));
+        b.until(sc_time(600, SC_NS));
     });
     run(bench);
     EXPECT_EQ(bench.dut.stage().ctl_sq.dropped(), 1u);
     EXPECT_EQ(report_log::get().count(msg::timing), 1u);
+    const auto texts = report_log::get().messages(msg::timing);
+    ASSERT_EQ(texts.size(), 1u);
+    EXPECT_NE(texts[0].find("ctl17 fell at 190 ns before the previous result was valid (still being squared)"),
+              std::string::npos) << texts[0];
     ASSERT_EQ(bench.valid_rises.size(), 1u);
-    EXPECT_EQ(bench.valid_rises[0], sc_time(360, SC_NS) + gate);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(440, SC_NS) + gate);
     ASSERT_EQ(bench.samples.size(), 1u);
     EXPECT_EQ(bench.samples[0].cos, 0x7F00u);
     expect_golden(bench.samples[0]);
@@ -208,9 +304,13 @@ TEST(SquaredBadInput, TwoStrobesBeforeTheTakingEdgeReportTheFirstAsDropped) {
     ASSERT_EQ(bench.samples.size(), 1u);
     EXPECT_EQ(bench.samples[0].cos, 0x6800u);
     expect_golden(bench.samples[0]);
-    // k = 2 for n = 7: taken at 120 ns, done at 120 + 3 * 20 ns.
+    // The second strobe keeps the request raised (reported: "not yet taken by clk"); k = 2 for
+    // n = 7: through sync17 at 120 and 140 ns, taken at 160 ns, done at 160 + 3 * 20 ns.
+    const auto texts = report_log::get().messages(msg::timing);
+    ASSERT_EQ(texts.size(), 1u);
+    EXPECT_NE(texts[0].find("(not yet taken by clk)"), std::string::npos) << texts[0];
     ASSERT_EQ(bench.valid_rises.size(), 1u);
-    EXPECT_EQ(bench.valid_rises[0], sc_time(180, SC_NS) + gate);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(220, SC_NS) + gate);
 }
 
 TEST(SquaredBadInput, NZeroIsReportedAndReadAsNOne) {
@@ -228,9 +328,10 @@ TEST(SquaredBadInput, NZeroIsReportedAndReadAsNOne) {
     for (std::size_t i = 0; i < cs.size(); ++i) {
         EXPECT_EQ(bench.samples[i].out, golden_squared(1, cs[i], {255, 255, 255}, overflow_mode::saturate).out);
         EXPECT_EQ(bench.samples[i].out[0], (uint64_t{cs[i]} * 255u) >> 7) << "cos * k_s*I on Q9.8";
-        // n = 0 takes no squaring: output 29 rises 2 rising edges after the strobe. The strobe falls
-        // at a rising edge (100 ns, 200 ns, ...): taken at the next one, as the controller orders them.
-        EXPECT_EQ(bench.valid_rises[i], next_rise(sc_time(100.0 + 100 * i, SC_NS), clk20) + clk20 + gate);
+        // n = 0 takes no squaring: output 29 rises 4 rising edges after the strobe (sync17's two,
+        // the taking edge, done). The strobe falls at a rising edge (100 ns, 200 ns, ...): sync17's
+        // first flip-flop samples it at the next one, as the controller orders them.
+        EXPECT_EQ(bench.valid_rises[i], next_rise(sc_time(100.0 + 100 * i, SC_NS), clk20) + 3 * clk20 + gate);
     }
 }
 
@@ -310,7 +411,7 @@ TEST(SquaredChecker, AMonitorSampleOffTheGoldenModelIsCaught) {
 namespace {
 
 // The bench squared_tb's default run builds: a sphere's raster line of 48 pixels at n = 10, 100 and
-// 1000 (Fig. 3 with 13 clocks per pixel), traced into `stem`.vcd.
+// 1000 (Fig. 3 with 15 clocks per pixel), traced into `stem`.vcd.
 void trace_default_run(const std::string& stem) {
     std::vector<uint32_t> line;
     for (double c : scene::sphere_line_cos(0.2, 48, 0.3, 0.4, 1.0)) line.push_back(scene::cos_code(c));
@@ -338,7 +439,8 @@ TEST(SquaredTrace, VcdDeclaresTheDeviceNetsAndTheViewShowsOnlyThose) {
     for (const char* net : {"tb.clk", "tb.ctl17", "tb.out29_valid", "tb.dut.rg1_n[9:0]", "tb.dut.z_lead[3:0]",
                             "tb.dut.a_coef[11:0]", "tb.dut.a_gen.mul_e_f_x_not_f[17:0]", "tb.dut.mul10_a_x_diff[19:0]",
                             "tb.dut.add11_q[18:0]", "tb.dut.sq_brdf[18:0]", "tb.dut.sq.mx_sq_sel[1:0]",
-                            "tb.dut.sq.mul_sq_square[18:0]", "tb.dut.sq_done", "tb.out25_r[16:0]"})
+                            "tb.dut.sq.mul_sq_square[18:0]", "tb.dut.sq_done", "tb.out25_r[16:0]",
+                            "tb.dut.sq.ctl_sq_req", "tb.dut.sq.sync17.stage1", "tb.dut.sq.sync17_req"})
         EXPECT_EQ(declared.count(std::string("SystemC.") + net), 1u) << net;
     for (const auto& n : declared) EXPECT_EQ(n.find(' '), std::string::npos) << n;
     const auto shown = gtkw_listed(source_path("traces/squared.gtkw"));

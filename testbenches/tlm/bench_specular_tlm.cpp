@@ -2,8 +2,9 @@
 // core, untraced: evaluated pixels per second of the loosely-timed burst path (target: >= 5e7) and
 // of the pin-accurate path, each shading whole raster lines (a 1024-pixel COS_BLOCK write, then a
 // read of the RESULT_BLOCK; --burst P: P pixels per access, 1 for a transaction per pixel and
-// direction) from an initiator thread, at n = 120 (the squared device: k = 6, eight
-// clocks a pixel; the square-and-multiply device: 120 = 0b1111000, eleven clocks a pixel). Every 61st pixel of each line is checked against the device's golden model in
+// direction) from an initiator thread, at n = 120 (the squared device: k = 6, ten clocks a pixel;
+// the square-and-multiply device: 120 = 0b1111000, 6 squares and 3 multiplications, thirteen
+// clocks a pixel). Every 61st pixel of each line is checked against the device's golden model in
 // the loop (under 2 % of the work); a mismatch exits 1. The timed loop and the report are
 // tlm_initiator.h's, shared with bench_line_tlm. --device takes render_pipeline's names.
 //   bench_specular_tlm [--device patent|minimax|rom_matched|ua22802|squared|sqmul] [--lt-pixels N] [--pin-pixels N]

@@ -37,15 +37,16 @@ sc_time fig3_pixel_end(const sc_time& start, unsigned) { return start + sc_time(
 
 // The squared device's pixel worked by hand from its documented timing (modules/tlm/README.md) with
 // the defaults: cos at `start`, strobe 17 falls at the first falling edge of the 20 ns clock (10 ns +
-// 20 ns m) at least 2.5 ns later, the stage takes it at the rising edge 10 ns after that, and output
-// 29 rises k + 1 clocks later plus the AND gate's 100 ps; k = floor(log2 n) (9 - leading zeros of
-// the 10-bit n), 0 for n = 0.
+// 20 ns m) at least 2.5 ns later, the synchroniser samples it at the rising edge 10 ns after that,
+// and output 29 rises k + 3 clocks later (the synchroniser's second edge, the taking edge, k squares,
+// the done edge) plus the AND gate's 100 ps; k = floor(log2 n) (9 - leading zeros of the 10-bit n),
+// 0 for n = 0.
 sc_time squared_pixel_end(const sc_time& start, unsigned n) {
     unsigned k = 0;
     while (k < 9 && (n >> (k + 1)) != 0) ++k;
     const double after_first_fall = start / sc_time(1, SC_NS) + 2.5 - 10.0;
     const double m = after_first_fall <= 0 ? 0 : std::ceil(after_first_fall / 20.0);
-    return sc_time(10.0 + 20.0 * m + 10.0 + 20.0 * (k + 1) + 0.1, SC_NS);
+    return sc_time(10.0 + 20.0 * m + 10.0 + 20.0 * (k + 3) + 0.1, SC_NS);
 }
 
 // The square-and-multiply device's pixel the same way, with its walk of floor(log2 n) + popcount(n)
@@ -322,21 +323,22 @@ TEST(SpecularTlmTiming, PinAccurateWaitsIncomingDelayThenStrobes) {
 
 // The squared device, pin-accurate, hand-worked (20 ns clock rising at 0, 20, 40 ns, ...; n = 5:
 // k = 2): the N write waits 7 ns, then 8 ns of strobe 15; the COS write at 15 ns waits 7 ns, sets
-// cos at 22 ns, strobe 17 falls at the first falling edge from 24.5 ns (30 ns), the stage takes it
-// at 40 ns, done rises 3 clocks later (100 ns), output 29 at 100.1 ns: 85.1 ns. A COS write whose
-// set-up ends exactly on a falling edge (cos at 147.5 ns) falls there: 150, 160, 220.1 ns.
+// cos at 22 ns, strobe 17 falls at the first falling edge from 24.5 ns (30 ns), the synchroniser
+// samples it at 40 ns, done rises 5 clocks later (60 and 80 ns: its second stage and the taking
+// edge; 100, 120 ns: the squares; 140 ns), output 29 at 140.1 ns: 125.1 ns. A COS write whose
+// set-up ends exactly on a falling edge (cos at 147.5 ns) falls there: 150, 160, 260.1 ns.
 TEST(SpecularTlmTiming, SquaredPinAccurateStrobeFollowsTheClock) {
     bench<squared_device> b("b", tlm_timing::pin_accurate, [](tlm_initiator& i) {
         i.delay_in = sc_time(7, SC_NS);
         ASSERT_EQ(i.write32(m::N, 5), tlm::TLM_OK_RESPONSE);
         EXPECT_EQ(i.last_elapsed, sc_time(15, SC_NS));
         ASSERT_EQ(i.write32(m::COS, 0x4000), tlm::TLM_OK_RESPONSE);
-        EXPECT_EQ(i.last_elapsed, sc_time(85.1, SC_NS));
+        EXPECT_EQ(i.last_elapsed, sc_time(125.1, SC_NS));
         EXPECT_EQ(i.last_delay, sc_core::SC_ZERO_TIME);
         i.delay_in = sc_core::SC_ZERO_TIME;
         sc_core::wait(sc_time(147.5, SC_NS) - sc_core::sc_time_stamp());
         ASSERT_EQ(i.write32(m::COS, 0x4000), tlm::TLM_OK_RESPONSE);
-        EXPECT_EQ(i.last_elapsed, sc_time(72.6, SC_NS));
+        EXPECT_EQ(i.last_elapsed, sc_time(112.6, SC_NS));
         EXPECT_EQ(i.read32(m::RESULT_R), 0u) << "k_s*I still 0";
         EXPECT_EQ(i.last_elapsed, sc_core::SC_ZERO_TIME) << "a read costs no strobe";
     });
@@ -350,13 +352,14 @@ TEST(SpecularTlmTiming, SquaredPinAccurateStrobeFollowsTheClock) {
 }
 
 // The same in loosely-timed mode, where only the local time (the incoming delay) moves the phase:
-// from 7 ns cos is set up by 9.5 ns, strobe 17 falls at 10 ns, is taken at 20 ns, output 29 rises
-// at 80.1 ns; from 7.5 ns the set-up ends on the falling edge at 10 ns (the same); from 8 ns it
-// ends after it: 30, 40, 100.1 ns. n = 1000 (k = 9) from 0: 10, 20, 220.1 ns.
+// from 7 ns cos is set up by 9.5 ns, strobe 17 falls at 10 ns, is sampled at 20 ns, output 29 rises
+// 5 clocks later, at 120.1 ns; from 7.5 ns the set-up ends on the falling edge at 10 ns (the same);
+// from 8 ns it ends after it: 30, 40, 140.1 ns. n = 1000 (k = 9) from 0: 10, 20, 20 + 12 x 20 =
+// 260.1 ns.
 TEST(SpecularTlmTiming, SquaredLooselyTimedDelayFollowsTheClockPhase) {
     bench<squared_device> b("b", tlm_timing::loosely_timed, [](tlm_initiator& i) {
         ASSERT_EQ(i.write32(m::N, 5), tlm::TLM_OK_RESPONSE);
-        const std::pair<double, double> from_to[] = {{7.0, 80.1}, {7.5, 80.1}, {8.0, 100.1}};  // ns
+        const std::pair<double, double> from_to[] = {{7.0, 120.1}, {7.5, 120.1}, {8.0, 140.1}};  // ns
         for (const auto& [in, out] : from_to) {
             i.delay_in = sc_time(in, SC_NS);
             ASSERT_EQ(i.write32(m::COS, 0x4000), tlm::TLM_OK_RESPONSE);
@@ -365,18 +368,19 @@ TEST(SpecularTlmTiming, SquaredLooselyTimedDelayFollowsTheClockPhase) {
         i.delay_in = sc_core::SC_ZERO_TIME;
         ASSERT_EQ(i.write32(m::N, 1000), tlm::TLM_OK_RESPONSE);
         ASSERT_EQ(i.write32(m::COS, 0x4000), tlm::TLM_OK_RESPONSE);
-        EXPECT_EQ(i.last_delay, sc_time(220.1, SC_NS));
+        EXPECT_EQ(i.last_delay, sc_time(260.1, SC_NS));
         EXPECT_EQ(sc_core::sc_time_stamp(), sc_core::SC_ZERO_TIME) << "annotated, never waited";
     });
     ASSERT_TRUE(run_to_completion(b, limit));
 }
 
 // Another clock and a long strobe: a 10 ns clock (falling edges at 5, 15, 25 ns, ...) and strobe
-// 17 low 40 ns, so for k <= 2 output 29 follows strobe 17's rise, for k >= 3 the squaring stage's
-// done. By hand: KSI_R and N = 1 (k = 0) from 0 ns, then COS from 16 ns: set-up to 18.5 ns, strobe
-// 17 falls at 25 ns, done rises at 40 ns, strobe 17 at 65 ns, output 29 at 65.1 ns: 49.1 ns. N = 8
-// (k = 3), then COS from 73.1 ns: falls at 85 ns, taken at 90 ns, done at 130 ns (after the strobe's
-// 125 ns), output 29 at 130.1 ns: 57 ns. Then random n and pixels, both modes equal in data and time.
+// 17 low 40 ns, so for k = 0 output 29 follows strobe 17's rise (done 5 + 3 x 10 ns after the
+// strobe), for k >= 1 the squaring stage's done. By hand: KSI_R and N = 1 (k = 0) from 0 ns, then
+// COS from 16 ns: set-up to 18.5 ns, strobe 17 falls at 25 ns, sampled at 30 ns, done rises at
+// 60 ns, strobe 17 at 65 ns, output 29 at 65.1 ns: 49.1 ns. N = 8 (k = 3), then COS from 73.1 ns:
+// falls at 85 ns, sampled at 90 ns, done at 90 + 6 x 10 = 150 ns (after the strobe's 125 ns),
+// output 29 at 150.1 ns: 77 ns. Then random n and pixels, both modes equal in data and time.
 struct squared_10ns_long_strobe : specular_tlm_squared {
     static tlm_strobe_timing timing() {
         tlm_strobe_timing t;
@@ -406,7 +410,7 @@ TEST(SpecularTlmTiming, SquaredOtherClockAndLongStrobe) {
         both_write(m::N, 1);
         EXPECT_EQ(both_write(m::COS, 0x7000), sc_time(49.1, SC_NS));
         both_write(m::N, 8);
-        EXPECT_EQ(both_write(m::COS, 0x7000), sc_time(57, SC_NS));
+        EXPECT_EQ(both_write(m::COS, 0x7000), sc_time(77, SC_NS));
         std::mt19937_64 rng(10);
         for (int p = 0; p < 60; ++p) {
             if (p % 4 == 0) both_write(m::N, static_cast<uint32_t>(rng() % 1000 + 1));
@@ -423,8 +427,10 @@ TEST(SpecularTlmTiming, SquaredOtherClockAndLongStrobe) {
 // A whole raster line (1024 pixels) in one burst, each mode against the golden model and the
 // hand-worked time, then the same results by debug transport. `total` is the burst's time by hand:
 // UA 60553 20 ns a pixel; squared (n = 300: k = 8) the first pixel from 0 ns (loosely timed: no
-// time has passed) falls at 10 ns and ends at 200.1 ns, from 32 ns (pin-accurate: after four 8 ns
-// loads) falls at 50 ns and ends at 240.1 ns; each further pixel (k + 2) x 20 ns.
+// time has passed) falls at 10 ns, is sampled at 20 ns and ends (k + 3) x 20 ns later, at
+// 240.1 ns; from 32 ns (pin-accurate: after four 8 ns loads) it falls at 50 ns and ends at
+// 280.1 ns; each further pixel (k + 4) x 20 ns (from a done edge: 10 ns to the next falling edge,
+// 10 more to the sampling edge, k + 3 clocks).
 template <class V, tlm_timing T>
 void whole_line(const sc_time& total) {
     bench<typename V::gen> b("b", T, [total](tlm_initiator& i) {
@@ -460,14 +466,14 @@ void whole_line(const sc_time& total) {
     ASSERT_TRUE(run_to_completion(b, sc_core::sc_time(1, sc_core::SC_SEC)));
 }
 const sc_time fig3_line = sc_time(20, SC_NS) * 1024.0;
-const sc_time squared_rest = sc_time(200, SC_NS) * 1023.0;
+const sc_time squared_rest = sc_time(240, SC_NS) * 1023.0;
 TEST(SpecularTlmBurst, WholeLineLooselyTimed) { whole_line<ua60553_v, tlm_timing::loosely_timed>(fig3_line); }
 TEST(SpecularTlmBurst, WholeLinePinAccurate) { whole_line<ua60553_v, tlm_timing::pin_accurate>(fig3_line); }
 TEST(SpecularTlmBurst, WholeLineLooselyTimedSquared) {
-    whole_line<squared_v, tlm_timing::loosely_timed>(sc_time(200.1, SC_NS) + squared_rest);
+    whole_line<squared_v, tlm_timing::loosely_timed>(sc_time(240.1, SC_NS) + squared_rest);
 }
 TEST(SpecularTlmBurst, WholeLinePinAccurateSquared) {
-    whole_line<squared_v, tlm_timing::pin_accurate>(sc_time(240.1 - 32, SC_NS) + squared_rest);
+    whole_line<squared_v, tlm_timing::pin_accurate>(sc_time(280.1 - 32, SC_NS) + squared_rest);
 }
 
 // Debug transport: register reads without side effects or time (a not-ready result too, with no

@@ -29,6 +29,9 @@ inline constexpr unsigned cos_align = squared::cos_align;  // Q1.15 onto Q1.18
 inline constexpr unsigned max_steps = 2 * (n_fmt.width - 1);
 // RG_P's 16 high wires (Q1.15, 3 low wires open: floor) to UA 60553's colour multipliers.
 inline constexpr unsigned p_to_brdf_drop = squared::sq_to_brdf_drop;
+// Strobe 17 crosses into clk's domain through the squared-quadratic device's synchroniser, so done
+// rises squares + multiplies + 2 + sync_stages rising edges after the strobe fell (sqmul_count.h).
+inline constexpr unsigned sync_stages = squared::sync_stages;
 
 // MX_P's select code, the input RG_P takes at a falling edge of clk: its own word, cos (the load)
 // or MUL_P's product; MX_B's, MUL_P's second operand: RG_P (a square) or cos (a multiplication).

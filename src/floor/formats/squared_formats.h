@@ -79,6 +79,12 @@ inline constexpr unsigned max_squarings = z_full;  // 9, for n = 512..1023
 // block model wires MX_SQ's inputs in this order and the RTL generator writes it into the Verilog.
 enum sq_select : unsigned { sq_hold = 0, sq_load = 1, sq_square = 2 };
 
+// Strobe 17 crosses into clk's domain through a synchroniser of this many flip-flops (blocks/
+// synchroniser.h): the request it raises reaches the controller at the second rising edge after
+// the strobe and is taken at the third, so done rises k + 2 + sync_stages rising edges after the
+// strobe fell (modules/squared/sq_count.h).
+inline constexpr unsigned sync_stages = 2;
+
 // The colour multipliers read the squaring register's 16 high wires (Q1.15, 3 low wires open:
 // floor) and are UA 60553's MUL12..14: Q1.15 x 8.0 -> Q9.8.
 inline constexpr unsigned sq_to_brdf_drop = q_frac - spec::brdf_fmt.frac;  // 3
