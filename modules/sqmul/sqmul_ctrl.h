@@ -1,11 +1,12 @@
 // Controller of the square-and-multiply device's stage (ours; RTL twin rtl/sqmul/sqmul_ctrl.v):
 // sqmul_count.h stepped at the rising edges of clk and at the falling edges of strobe 17, in one
-// process, so an edge of both in the same instant is ordered: the clock first (a strobe at a rising
-// edge is taken at the next one). Drives MX_P's and MX_B's selects (at rising edges; RG_P latches at
-// the falling edge half a clock later) and `done`, output 29's gate (cleared by the strobe itself,
-// set at a rising edge).
+// process, so an edge of both in the same instant is ordered: the clock first. Strobe 17's edge
+// drives `req` (strobe 17's domain) into the synchroniser sync17; each rising edge reads only
+// sync17's output `req_s`. Drives MX_P's and MX_B's selects (at rising edges; RG_P latches at the
+// falling edge half a clock later) and `done`, output 29's gate (cleared by the strobe itself, set
+// at a rising edge).
 // Bad input (shading/timing): a strobe before the previous result is valid is reported; that result
-// is dropped, the new cos is taken at the next rising edge.
+// is dropped, the new cos is taken once its request has crossed.
 #pragma once
 
 #include <sstream>
@@ -31,11 +32,13 @@ public:
 
     sc_core::sc_in<bool> clk{"clk"};
     sc_core::sc_in<bool> ctl17{"ctl17"};
-    sc_core::sc_in<z_t> z{"z"};  // the LZC of RG1: 9 - z squares
-    sc_core::sc_in<f_t> f{"f"};  // n's bits below its leading one, most significant first
+    sc_core::sc_in<bool> req_s{"req_s"};  // req through sync17: the only strobe input clk reads
+    sc_core::sc_in<z_t> z{"z"};           // the LZC of RG1: 9 - z squares
+    sc_core::sc_in<f_t> f{"f"};           // n's bits below its leading one, most significant first
     sc_core::sc_out<p_select_t> mx_p_sel{"mx_p_sel"};
     sc_core::sc_out<b_select_t> mx_b_sel{"mx_b_sel"};
     sc_core::sc_out<bool> done{"done"};
+    sc_core::sc_out<bool> req{"req"};  // strobe 17's request flip-flop, into sync17
 
     SC_HAS_PROCESS(sqmul_ctrl);
     explicit sqmul_ctrl(const sc_core::sc_module_name& name) : sc_module(name) {
@@ -60,7 +63,7 @@ private:
         if (clk.posedge()) {
             last_rise_ = sc_core::sc_time_stamp();
             rose_ = true;
-            const auto s = st_.rising(z.read().to_uint(), f.read().to_uint());
+            const auto s = st_.rising(req_s.read(), z.read().to_uint(), f.read().to_uint());
             mx_p_sel.write(p_select_t(s.p));
             mx_b_sel.write(b_select_t(s.b));
             done.write(st_.done());
@@ -68,6 +71,7 @@ private:
         if (ctl17.negedge()) {
             const bool was_busy = st_.busy();
             if (st_.strobe()) report(was_busy);
+            req.write(st_.req());
             done.write(st_.done());
         }
     }

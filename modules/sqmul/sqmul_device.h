@@ -5,14 +5,15 @@
 //   RG1..RG5     UA 60553's registers, written on the falling edges of strobes 15, 17, 20, 22, 24
 //   lzc_n, bsh1  z = leading zeros of n, n << z: its 9 low wires f (f_wires) are the bits to walk
 //   cos_align    RG2's Q1.15 onto Q1.18;  sat_cos: clamped to 1.0 (saturate mode) or not (wrap)
-//   stage        MX_B, MUL_P, MX_P, RG_P and the controller (sqmul_stage.h, sqmul_ctrl.h)
+//   stage        MX_B, MUL_P, MX_P, RG_P, the controller (sqmul_stage.h, sqmul_ctrl.h) and sync17,
+//                the synchroniser that brings strobe 17's request into clk's domain
 //   MUL12..14    UA 60553's colour multipliers on RG_P's 16 high wires
 //   out29        strobe 17 AND the stage's done: output 29 rises when the result is valid
 // Pins: UA 60553's, plus `clk`, the stage's clock. The timing: the strobe's falling edge latches
-// cos; the stage takes it at the next rising edge of clk and output 29 rises floor(log2 n) +
-// popcount(n) + 1 rising edges after it (the taking edge counted) at the earliest, or at strobe 17's
-// rise if that comes later; a platform that waits for output 29's rising edge, as Fig. 3 says,
-// needs no other change.
+// cos and closes output 29's gate; its request crosses sync17 (two rising edges), the third rising
+// edge takes it, and output 29 rises floor(log2 n) + popcount(n) + 3 rising edges after the strobe
+// at the earliest, or at strobe 17's rise if that comes later; a platform that waits for output
+// 29's rising edge, as Fig. 3 says, needs no other change.
 // This class only instantiates and wires; widths from the format table, paths from the elaborated
 // design (core/timing_graph.h), read by the monitors.
 #pragma once
@@ -118,7 +119,7 @@ public:
           chk_in16_n("chk_in16_n", sqmul::n_min, sqmul::n_max, n_out_of_range),
           chk_in18_cos("chk_in18_cos", 0, spec::cos_one,
                        mode == overflow_mode::saturate ? cos_out_of_range_saturate : cos_out_of_range_wrap),
-          chk_timing("chk_timing", 3, {&rg1, &rg2, &stage.rg_p, &stage.ctl}),
+          chk_timing("chk_timing", 3, {&rg1, &rg2, &stage.rg_p, &stage.ctl, &stage.sync17}),
           chk_load("chk_load", 2, stage.rg_p, sqmul::p_load),
           chk_clk("chk_clk") {
         if (t.reg + t.multiplier + t.mux == sc_core::SC_ZERO_TIME)

@@ -2,9 +2,11 @@
 // their timing, none of its blocks. One process at the pins' edges: at a rising edge of clk the
 // controller's plain state (sqmul_count.h, the block model's own FSM) steps; at a falling edge RG_P
 // takes the (clamped) cos (a LOAD), its own square or its product with cos (sqmul_arith.h's steps);
-// registers 1-5 are words latched at their strobes' falling edges. Outputs 25-27 change once per
-// latch that changes them, at the derived path delay (RG_P or RG3-5 -> MUL12-14), where the block
-// model's multipliers settle; output 29 is strobe 17 AND done after the gate's delay. The block
+// registers 1-5 are words latched at their strobes' falling edges; strobe 17's request crosses the
+// block model's synchroniser sync17 as its plain chain (blocks/synchroniser.h). Outputs 25-27
+// change once per latch that changes them, at the derived path delay (RG_P or RG3-5 ->
+// MUL12-14), where the block model's multipliers settle; output 29 is strobe 17 AND done after the
+// gate's delay. The block
 // model's checks are made at the same edges with the same message ids: the input ranges, a strobe
 // before the result is valid, each LOAD against RG2's path and the taking edge against RG1's,
 // strobes 20/22/24 against output 29's rise, and every clock phase.
@@ -25,6 +27,7 @@
 #include <systemc>
 
 #include "arith/squared_arith.h"
+#include "blocks/synchroniser.h"
 #include "core/abstraction.h"
 #include "core/report_ids.h"
 #include "formats/specular_formats.h"
@@ -147,7 +150,11 @@ private:
         rise_seen_ = true;
         const bool was_done = st_.done();
         const auto g = golden_squared_a(rg_[0]);  // LZC and BSH1 of RG1, as the squared device's
-        sel_ = st_.rising(static_cast<unsigned>(g.z), static_cast<unsigned>(g.f));
+        // sync17's flip-flops and the controller's take their inputs at the same edge: the
+        // controller reads the synchroniser's output from before it.
+        const bool req_s = sync_.q() != 0;
+        sync_.rising(st_.req());
+        sel_ = st_.rising(req_s, static_cast<unsigned>(g.z), static_cast<unsigned>(g.f));
         if (st_.done() != was_done) drive_valid();
     }
 
@@ -324,6 +331,7 @@ private:
     std::array<uint64_t, 5> rg_{};
     std::array<sc_core::sc_time, 5> fall_;
     std::array<bool, 5> fallen_{};
+    synchroniser_chain<1, sqmul::sync_stages> sync_;  // sync17
     sqmul::sqmul_count st_;
     sqmul::sqmul_count::selects sel_;
     uint64_t p_ = 0, q15_ = 0;
