@@ -130,7 +130,7 @@ private:
 // A clocked specular device (the squared-quadratic and square-and-multiply devices, ours: UA 60553's
 // pins plus `clk`) driven the same way, with its 20 ns clock and strobe 17 an sc_clock of `clocks`
 // clock periods, high for one of them: every result is valid when strobe 17 rises (the benches'
-// squared_timing and sqmul_timing, 13 and 22 clocks). Strobe 17 falls 5 ns after a rising edge
+// squared_timing and sqmul_timing, 15 and 24 clocks). Strobe 17 falls 5 ns after a rising edge
 // of clk, clear of every edge.
 template <class Device>
 class clocked_harness : public sc_core::sc_module, public harness {

@@ -155,17 +155,17 @@ void register_specular_cases() {
                                             [mode](uint64_t n, uint64_t c, const auto& k) {
                                                 return golden_ua60553_tuned(n, c, k, mode);
                                             });
-    // The clocked devices (ours), 13 and 22 clocks a pixel (specular_tb.h's squared_timing, sqmul_timing).
+    // The clocked devices (ours), 15 and 24 clocks a pixel (specular_tb.h's squared_timing, sqmul_timing).
     const auto squared = [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
         return golden_squared(n, c, k, mode).out;
     };
     const auto sqmul = [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
         return golden_sqmul(n, c, k, mode).out;
     };
-    add_clocked<device_squared>("sc/squared", "golden/squared", 13, squared);
-    add_clocked<device_squared_fast>("sc/squared_fast", "golden/squared", 13, squared);
-    add_clocked<device_sqmul>("sc/sqmul", "golden/sqmul", 22, sqmul);
-    add_clocked<device_sqmul_fast>("sc/sqmul_fast", "golden/sqmul", 22, sqmul);
+    add_clocked<device_squared>("sc/squared", "golden/squared", 15, squared);
+    add_clocked<device_squared_fast>("sc/squared_fast", "golden/squared", 15, squared);
+    add_clocked<device_sqmul>("sc/sqmul", "golden/sqmul", 24, sqmul);
+    add_clocked<device_sqmul_fast>("sc/sqmul_fast", "golden/sqmul", 24, sqmul);
 #ifdef SHADING_PERF_VERILATOR
     add_verilator();
 #endif

@@ -4,7 +4,8 @@
 // (inputs, instant of output 29's rise, outputs) over every 16-bit cos code at n = 1, 3, 20, 1023,
 // every n 0..1023 with the cos codes where cos^n is near 0.5, 0.1 and 0.01, random pixels, and a
 // stream whose strobes come before the long walks are done (dropped, restarted); the clocks per
-// sample against floor(log2 n) + popcount(n) + 1; negative tests show both comparisons can fail.
+// sample against floor(log2 n) + popcount(n) + 3 (strobe 17's request crossing the synchroniser
+// sync17 in both); negative tests show both comparisons can fail.
 // Random pixels: 10^6 per mode in four runs of 250 000 (one ctest entry each).
 #include <gtest/gtest.h>
 
@@ -49,13 +50,15 @@ specular_checker::golden_fn sqmul_golden_fn(overflow_mode m, unsigned n_offset =
     };
 }
 
-// floor(log2 n) + popcount(n) + 1, n = 0 read as 1, worked out here (not from a model).
+// Rising edges from strobe 17's fall to done, worked out here (not from a model): sync17's two,
+// the taking edge, floor(log2 n) squares and popcount(n) - 1 multiplications, the done edge:
+// floor(log2 n) + popcount(n) + 3, n = 0 read as 1.
 unsigned walk_edges(unsigned n) {
     if (n == 0) n = 1;
     unsigned log2 = 0, ones = 0;
     for (unsigned v = n; v > 1; v >>= 1) ++log2;
     for (unsigned v = n; v != 0; v >>= 1) ones += v & 1u;
-    return log2 + ones + 1;
+    return log2 + ones + 3;
 }
 
 template <typename T>
@@ -149,12 +152,12 @@ TYPED_TEST(RtlSqmul, EveryNWithCosCodesNearHalfATenthAndAHundredth) {
 
 TYPED_TEST(RtlSqmul, OutputTwentyNineRisesAfterTheWalkForEveryN) {
     // Strobe 17 low for 5 ns only: output 29 rises with done, at the (floor(log2 n) + popcount(n)
-    // + 1)-th rising edge of clk after the strobe fell, for every n 0..1023; the model's instant is
+    // + 3)-th rising edge of clk after the strobe fell, for every n 0..1023; the model's instant is
     // the RTL's plus the AND gate's delay (compared by the bench for every sample).
     report_log::get().expect(msg::input);
     std::vector<surface> s;
     for (unsigned n = 0; n < (1u << sqmul::n_fmt.width); ++n) s.push_back({n, {255, 255, 255}, {0x7000, 0x7F00}});
-    const strobe_timing t = done_timing(42);  // n = 1023: 20 edges
+    const strobe_timing t = done_timing(44);  // n = 1023: 22 edges
     const auto r = this->run(s, s.size() * 2, t);
     const auto ns = pixel_ns(s);
     ASSERT_EQ(r.falls.size(), ns.size());
@@ -167,24 +170,26 @@ TYPED_TEST(RtlSqmul, OutputTwentyNineRisesAfterTheWalkForEveryN) {
                           << ", want " << want << " (" << walk_edges(ns[i]) << " rising edges)";
     }
     EXPECT_EQ(wrong, 0u);
-    // Hand-worked: n = 20 = 0b10100: 4 squares, 1 multiplication, 7 edges; n = 1000: 16.
-    EXPECT_EQ(walk_edges(20), 7u);
-    EXPECT_EQ(walk_edges(1000), 16u);
+    // Hand-worked: n = 20 = 0b10100: 2 + 1 + 4 squares + 1 multiplication + 1 = 9 edges;
+    // n = 1000 = 0b1111101000: 2 + 1 + 9 + 5 + 1 = 18.
+    EXPECT_EQ(walk_edges(20), 9u);
+    EXPECT_EQ(walk_edges(1000), 18u);
 }
 
 TYPED_TEST(RtlSqmul, StrobesBeforeTheResultIsValidAreDroppedAlike) {
-    // A pixel every 8 clocks (strobe 17 low 5 ns): walks of at most 4 edges (n = 0..4) finish well
-    // within the period, before the next surface reloads RG1; walks of 11 edges or more (n >= 128
-    // with enough ones) are always abandoned by the next strobe (dropped, reported; restarted with
-    // the new cos), also across a surface change (8 clocks + the 32 ns of loads). Both devices must
-    // validate the same samples at the same instants; the model's dropped count is the number of
-    // long walks a later strobe followed, worked out from the stream.
+    // A pixel every 12 clocks (strobe 17 low 5 ns): walks of at most 6 edges (n = 0..4; done at
+    // most 19.5 + 5 * 20 ns after the strobe) finish within the period, before the next surface
+    // reloads RG1 (122.5 ns after it); walks of 15 edges or more (n = 95 = 0b1011111 the least; done
+    // at least 14 * 20 ns after the strobe) are always abandoned by the next strobe (dropped,
+    // reported; restarted with the new cos), also across a surface change (12 clocks + the 32 ns of
+    // loads, 272 ns). Both devices must validate the same samples at the same instants; the model's
+    // dropped count is the number of long walks a later strobe followed, worked out from the stream.
     report_log::get().expect(msg::timing);
     report_log::get().expect(msg::input);
     std::mt19937 rng(17);
     std::vector<unsigned> short_ns{0, 1, 2, 3, 4}, long_ns;
     for (unsigned n = 5; n < 1024; ++n)
-        if (walk_edges(n) >= 11) long_ns.push_back(n);
+        if (walk_edges(n) >= 15) long_ns.push_back(n);
     std::vector<surface> s;
     std::size_t short_pixels = 0, long_pixels = 0;
     std::uniform_int_distribution<uint32_t> code(0, spec::cos_one);
@@ -196,8 +201,8 @@ TYPED_TEST(RtlSqmul, StrobesBeforeTheResultIsValidAreDroppedAlike) {
         (is_long ? long_pixels : short_pixels) += x.cos_codes.size();
         s.push_back(x);
     }
-    const bool last_long = walk_edges(s.back().n) >= 11;
-    const auto r = this->run(s, short_pixels, done_timing(8));
+    const bool last_long = walk_edges(s.back().n) >= 15;
+    const auto r = this->run(s, short_pixels, done_timing(12));
     EXPECT_GT(long_pixels, 50u);
     EXPECT_EQ(r.dropped, long_pixels - (last_long ? 1 : 0)) << "every long walk but a final one";
     EXPECT_EQ(r.rises.size(), short_pixels);

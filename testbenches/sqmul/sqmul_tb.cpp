@@ -1,5 +1,5 @@
 // Square-and-multiply device testbench program: replays Fig. 3 with the stage's clock (load n and
-// k_s*I through their strobes, then stream cos values on strobe 17, 22 clocks per pixel),
+// k_s*I through their strobes, then stream cos values on strobe 17, 24 clocks per pixel),
 // checks every output validated by output 29 against the golden model and measures the device
 // against cos^n. Options common to every bench: common/common_options.h.
 //
@@ -69,9 +69,10 @@ int run_device(bench_runner& run, options& o) {
         std::printf("%6s %9s %11s %26s %18s\n", "n", "samples", "mismatches", "max rel err (cos^n>=0.56)",
                     "clocks per sample");
         for (const auto& [n, st] : bench.checker.stats()) {
-            // The taking edge, one per square and per multiplication, the done edge (golden_sqmul's counts).
+            // sync17's edges, the taking edge, one per square and per multiplication (golden_sqmul's
+            // counts), the done edge.
             const auto g = golden_sqmul(n, 0, {0, 0, 0}, mode);
-            const unsigned clocks = g.squares + g.multiplies + 2;
+            const unsigned clocks = g.squares + g.multiplies + sqmul::sync_stages + 2;
             std::printf("%6llu %9zu %11zu %25.3f%% %18u\n", static_cast<unsigned long long>(n), st.samples,
                         st.mismatches, 100.0 * st.max_rel_err_056, clocks);
             run.summary({run.bench(), std::string(o.sweep ? "sweep" : "scene") + "_n" + std::to_string(n) + "_" +

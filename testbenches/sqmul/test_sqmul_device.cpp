@@ -1,6 +1,6 @@
 // The square-and-multiply device's block model (sqmul/sqmul_device.h) against its golden model
 // (golden_sqmul) on every n 0..1023 with cos codes where cos^n is 0.5, 0.1 and 0.01, in both modes;
-// its clocks per sample against floor(log2 n) + popcount(n) + 1 worked out here (and by hand at a
+// its clocks per sample against floor(log2 n) + popcount(n) + 3 worked out here (and by hand at a
 // few n) and against the instants of output 29; the controller's steps at n = 5 by hand; the
 // derived paths against hand sums of the default delays; each timing rule and bad input reported
 // with its documented result; the trace and its view. Each TEST elaborates one bench: ctest runs
@@ -45,13 +45,15 @@ sc_time next_rise(const sc_time& t, const sc_time& period) {
     return period * static_cast<double>(k);
 }
 
-// Rising edges from strobe 17's fall to done: floor(log2 n) + popcount(n) + 1, n = 0 read as 1.
+// Rising edges from strobe 17's fall to done: sync17's two, the taking edge, floor(log2 n) squares
+// and popcount(n) - 1 multiplications, the done edge: floor(log2 n) + popcount(n) + 3, n = 0 read
+// as 1.
 unsigned clocks_per_sample(unsigned n) {
     if (n == 0) n = 1;
     unsigned log2 = 0, ones = 0;
     for (unsigned v = n; v > 1; v >>= 1) ++log2;
     for (unsigned v = n; v != 0; v >>= 1) ones += v & 1u;
-    return log2 + ones + 1;
+    return log2 + ones + 3;
 }
 
 void run(bench_t& bench, const sc_time& limit = sc_time(1, SC_MS)) {
@@ -83,48 +85,63 @@ std::vector<uint32_t> codes_around_levels(unsigned n) {
 }  // namespace
 
 TEST(SqmulClocks, HandWorkedCountsAtAFewN) {
-    // floor(log2 n) + popcount(n) + 1, worked by hand: 5 = 0b101: 2 + 2 + 1; 20 = 0b10100: 4 + 2 + 1;
-    // 100 = 0b1100100: 6 + 3 + 1; 1000 = 0b1111101000: 9 + 6 + 1; 1023: 9 + 10 + 1; 1 and 0: 2.
-    EXPECT_EQ(clocks_per_sample(5), 5u);
-    EXPECT_EQ(clocks_per_sample(20), 7u);
-    EXPECT_EQ(clocks_per_sample(100), 10u);
-    EXPECT_EQ(clocks_per_sample(1000), 16u);
-    EXPECT_EQ(clocks_per_sample(1023), 20u);
-    EXPECT_EQ(clocks_per_sample(1), 2u);
-    EXPECT_EQ(clocks_per_sample(0), 2u);
-    // The golden model walks as many steps.
+    // floor(log2 n) + popcount(n) + 3, worked by hand: 5 = 0b101: 2 + 2 + 3; 20 = 0b10100: 4 + 2 + 3;
+    // 100 = 0b1100100: 6 + 3 + 3; 1000 = 0b1111101000: 9 + 6 + 3; 1023: 9 + 10 + 3; 1 and 0: 4.
+    EXPECT_EQ(clocks_per_sample(5), 7u);
+    EXPECT_EQ(clocks_per_sample(20), 9u);
+    EXPECT_EQ(clocks_per_sample(100), 12u);
+    EXPECT_EQ(clocks_per_sample(1000), 18u);
+    EXPECT_EQ(clocks_per_sample(1023), 22u);
+    EXPECT_EQ(clocks_per_sample(1), 4u);
+    EXPECT_EQ(clocks_per_sample(0), 4u);
+    // The golden model walks as many steps (sync17's two edges, the taking and the done edge
+    // around them).
     for (unsigned n = 0; n < 1024; ++n) {
         const auto g = golden_sqmul(n, 0x7000, {0, 0, 0}, overflow_mode::saturate);
-        EXPECT_EQ(g.squares + g.multiplies + 2, clocks_per_sample(n)) << "n = " << n;
+        EXPECT_EQ(g.squares + g.multiplies + 4, clocks_per_sample(n)) << "n = " << n;
     }
 }
 
 TEST(SqmulCount, StepsAtNFiveByHand) {
-    // n = 5 = 0b101: z = 7, f = n << 7's 9 low wires = 0b010000000. Taking edge LOAD; bit 0: SQUARE;
-    // bit 1: SQUARE then MULTIPLY (cos on MX_B); then the done edge (HOLD).
+    // n = 5 = 0b101: z = 7, f = n << 7's 9 low wires = 0b010000000. The strobe raises req (the
+    // complement of `taken`, 0 at power-up); while sync17 still shows 0 the edges hold; the edge
+    // that sees it taken LOADs; bit 0: SQUARE; bit 1: SQUARE then MULTIPLY (cos on MX_B); then the
+    // done edge (HOLD, ack = taken = req).
     sqmul::sqmul_count c;
     EXPECT_TRUE(c.done());
     EXPECT_FALSE(c.strobe());
+    EXPECT_TRUE(c.req());
     EXPECT_FALSE(c.done());
+    EXPECT_TRUE(c.strobe()) << "a second strobe before the taking edge drops the first";
+    EXPECT_TRUE(c.req()) << "and keeps the request raised";
     const unsigned z = 7, f = 0b010000000;
+    for (int i = 0; i < 2; ++i) {
+        const auto s = c.rising(false, z, f);  // the request still crossing sync17
+        EXPECT_EQ(s.p, sqmul::p_hold);
+        EXPECT_TRUE(c.pending());
+        EXPECT_FALSE(c.done());
+    }
     const std::vector<std::pair<sqmul::p_select, sqmul::b_select>> want{
         {sqmul::p_load, sqmul::b_p}, {sqmul::p_product, sqmul::b_p}, {sqmul::p_product, sqmul::b_p},
         {sqmul::p_product, sqmul::b_cos}, {sqmul::p_hold, sqmul::b_p}};
     for (std::size_t i = 0; i < want.size(); ++i) {
-        const auto s = c.rising(z, f);
+        const auto s = c.rising(true, z, f);
         EXPECT_EQ(s.p, want[i].first) << "edge " << i + 1;
         EXPECT_EQ(s.b, want[i].second) << "edge " << i + 1;
         EXPECT_EQ(c.done(), i + 1 == want.size()) << "edge " << i + 1;
     }
-    // A strobe while busy abandons the result.
+    // The next strobe lowers req (taken = 1); a strobe while busy abandons the result.
     EXPECT_FALSE(c.strobe());
-    c.rising(z, f);
+    EXPECT_FALSE(c.req());
+    EXPECT_EQ(c.rising(false, z, f).p, sqmul::p_load);
     EXPECT_TRUE(c.strobe());
+    EXPECT_TRUE(c.req()) << "a new request, taken once it has crossed";
 }
 
 TEST(SqmulTiming, OutputTwentyNineRisesAfterTheWalk) {
     // Strobe 17 falls at 105 ns into each 600 ns slot and rises 10 ns later: output 29 waits for
-    // done, at next_rise(fall) + (clocks - 1) clocks, plus the AND gate's delay.
+    // done, at next_rise(fall) + (clocks - 1) clocks, plus the AND gate's delay (n = 1023: 22
+    // edges, 120 + 21 * 20 = 540 ns into its slot).
     const std::vector<unsigned> ns{1, 2, 3, 5, 20, 100, 1000, 1023};
     bench_t bench("tb", clk20, [&](bench_t& b) {
         for (std::size_t j = 0; j < ns.size(); ++j) {
@@ -146,8 +163,9 @@ TEST(SqmulTiming, OutputTwentyNineRisesAfterTheWalk) {
         EXPECT_EQ(bench.valid_rises[j], want) << "n = " << ns[j];
         expect_golden(bench.samples[j]);
     }
-    // n = 20: strobe at 2505 ns, taken at 2520 ns, done at the 7th rising edge, 2640 ns.
-    EXPECT_EQ(bench.valid_rises[4], sc_time(2640, SC_NS) + gate);
+    // n = 20: strobe at 2505 ns, through sync17 at 2520 and 2540 ns, taken at 2560 ns, 4 squares
+    // and 1 multiplication, done at the 9th rising edge, 2680 ns.
+    EXPECT_EQ(bench.valid_rises[4], sc_time(2680, SC_NS) + gate);
     EXPECT_EQ(bench.dut.stage.ctl.dropped(), 0u);
 }
 
@@ -249,26 +267,33 @@ TEST(SqmulTiming, ClockHighPhaseNotLongerThanItsPathIsReported) {
 }
 
 TEST(SqmulTiming, LoadTooSoonAfterStrobeSeventeenIsReported) {
-    // An 8 ns clock loads 4 ns after the taking edge. Strobe 17 falling 0.6 ns before a rising edge
-    // leaves RG2's 4.8 ns path 4.6 ns: reported once; falling 1 ns before one leaves it 5 ns: silent.
+    // The load latches half a clock after the taking edge, the third rising edge after strobe 17
+    // fell: at least 2.5 clocks after the strobe, over 18 ns for the shortest clock the phase
+    // rules allow (just over 7.2 ns), so RG2's 4.8 ns path is always met there. A 1.6 ns clock (rising at 0, 1.6,
+    // ...; its 0.8 ns phases reported as well) breaks it: strobe 17 falling at 100.3 ns, 0.5 ns
+    // before a rising edge, passes sync17 at 100.8 and 102.4 ns, is taken at 104 and loaded at
+    // 104.8 ns, 4.5 ns after the strobe: reported once. Falling at 200 ns, on a rising edge, it is
+    // sampled at 201.6 ns (the clock first), taken at 204.8 and loaded at 205.6 ns, 5.6 ns after:
+    // silent. n = 1: no product, so the load alone writes RG_P.
     report_log::get().expect(msg::timing);
-    bench_t bench("tb", sc_time(8, SC_NS), [](bench_t& b) {
-        b.load(4, 255);
-        b.strobe(sc_time(103400, SC_PS), 0x7000, sc_time(5, SC_NS));
-        b.strobe(sc_time(199, SC_NS), 0x7100, sc_time(5, SC_NS));
+    report_log::get().expect(msg::setup);  // at 1.6 ns, RG_P's input may change at its latching instant
+    bench_t bench("tb", sc_time(1600, SC_PS), [](bench_t& b) {
+        b.load(1, 255);
+        b.strobe(sc_time(100300, SC_PS), 0x7000, sc_time(5, SC_NS));
+        b.strobe(sc_time(200, SC_NS), 0x7100, sc_time(5, SC_NS));
         b.until(sc_time(300, SC_NS));
     });
     run(bench);
     EXPECT_EQ(bench.dut.chk_load.violations(), 1u);
-    EXPECT_EQ(report_log::get().count(msg::timing), 1u);
+    EXPECT_GE(bench.dut.chk_clk.violations(), 10u);
+    EXPECT_EQ(report_log::get().count(msg::timing), 1u + 10u);  // the phase checker reports 10
     ASSERT_EQ(bench.samples.size(), 2u);
-    expect_golden(bench.samples[1]);
 }
 
 TEST(SqmulTiming, NLoadedJustBeforeTheTakingEdgeIsReported) {
-    // Strobe 17 falls at 105 ns, taken at 120 ns; strobe 15 falling at 118.5 ns leaves RG1's 1.7 ns
-    // path into the controller 1.5 ns: reported. Strobe 15 at 134 ns (after the taking edge) is not
-    // this LOAD's: silent.
+    // Strobe 17 falls at 105 ns; 120 and 140 ns clock it through sync17, 160 ns takes it; strobe 15
+    // falling at 158.5 ns leaves RG1's 1.7 ns path into the controller 1.5 ns: reported. Strobe 15
+    // at 174 ns (after the taking edge) is not this LOAD's: silent.
     report_log::get().expect(msg::timing);
     bench_t bench("tb", clk20, [](bench_t& b) {
         b.load(20, 255);
@@ -276,10 +301,10 @@ TEST(SqmulTiming, NLoadedJustBeforeTheTakingEdgeIsReported) {
         b.in18_cos.write(0x7800);
         b.until(sc_time(105, SC_NS));
         b.ctl17.write(false);
-        b.until(sc_time(117500, SC_PS));
-        b.load_n(100);  // ctl15 falls at 118.5 ns
-        b.until(sc_time(133, SC_NS));
-        b.load_n(3);  // at 134 ns
+        b.until(sc_time(157500, SC_PS));
+        b.load_n(100);  // ctl15 falls at 158.5 ns
+        b.until(sc_time(173, SC_NS));
+        b.load_n(3);  // at 174 ns
         b.until(sc_time(400, SC_NS));
         b.ctl17.write(true);
         b.until(sc_time(500, SC_NS));
@@ -290,21 +315,26 @@ TEST(SqmulTiming, NLoadedJustBeforeTheTakingEdgeIsReported) {
 }
 
 TEST(SqmulBadInput, StrobeBeforeTheResultIsValidIsReportedAndTheResultDropped) {
-    // n = 1000 (16 clocks): the first cos is taken at 120 ns and still being walked when strobe 17
-    // falls again at 150 ns: reported, that result never validated; the second is taken at 160 ns
-    // and output 29 rises at 160 + 15 * 20 ns.
+    // n = 1000 (18 clocks): the first cos crosses sync17 at 120 and 140 ns, is taken at 160 ns and
+    // still being walked when strobe 17 falls again at 190 ns: reported, that result never
+    // validated; the second request crosses at 200 and 220 ns, is taken at 240 ns, and output 29
+    // rises at 240 + 15 * 20 ns.
     report_log::get().expect(msg::timing);
     bench_t bench("tb", clk20, [](bench_t& b) {
         b.load(1000, 255);
         b.strobe(sc_time(105, SC_NS), 0x7000, sc_time(10, SC_NS));
-        b.strobe(sc_time(150, SC_NS), 0x7F00, sc_time(10, SC_NS));
+        b.strobe(sc_time(190, SC_NS), 0x7F00, sc_time(10, SC_NS));
         b.until(sc_time(700, SC_NS));
     });
     run(bench);
     EXPECT_EQ(bench.dut.stage.ctl.dropped(), 1u);
     EXPECT_EQ(report_log::get().count(msg::timing), 1u);
+    const auto texts = report_log::get().messages(msg::timing);
+    ASSERT_EQ(texts.size(), 1u);
+    EXPECT_NE(texts[0].find("ctl17 fell at 190 ns before the previous result was valid (still being walked)"),
+              std::string::npos) << texts[0];
     ASSERT_EQ(bench.valid_rises.size(), 1u);
-    EXPECT_EQ(bench.valid_rises[0], sc_time(460, SC_NS) + gate);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(540, SC_NS) + gate);
     ASSERT_EQ(bench.samples.size(), 1u);
     EXPECT_EQ(bench.samples[0].cos, 0x7F00u);
     expect_golden(bench.samples[0]);
@@ -323,9 +353,13 @@ TEST(SqmulBadInput, TwoStrobesBeforeTheTakingEdgeReportTheFirstAsDropped) {
     ASSERT_EQ(bench.samples.size(), 1u);
     EXPECT_EQ(bench.samples[0].cos, 0x6800u);
     expect_golden(bench.samples[0]);
-    // n = 7 = 0b111: 2 + 3 + 1 = 6 edges: taken at 120 ns, done at 120 + 5 * 20 ns.
+    // The second strobe keeps the request raised (reported: "not yet taken by clk"); n = 7 = 0b111:
+    // 2 + 3 + 3 = 8 edges: through sync17 at 120 and 140 ns, taken at 160 ns, done at 160 + 5 * 20 ns.
+    const auto texts = report_log::get().messages(msg::timing);
+    ASSERT_EQ(texts.size(), 1u);
+    EXPECT_NE(texts[0].find("(not yet taken by clk)"), std::string::npos) << texts[0];
     ASSERT_EQ(bench.valid_rises.size(), 1u);
-    EXPECT_EQ(bench.valid_rises[0], sc_time(220, SC_NS) + gate);
+    EXPECT_EQ(bench.valid_rises[0], sc_time(260, SC_NS) + gate);
 }
 
 TEST(SqmulBadInput, NZeroIsReportedAndReadAsNOne) {
@@ -342,8 +376,9 @@ TEST(SqmulBadInput, NZeroIsReportedAndReadAsNOne) {
     ASSERT_EQ(bench.samples.size(), cs.size());
     for (std::size_t i = 0; i < cs.size(); ++i) {
         EXPECT_EQ(bench.samples[i].out[0], (uint64_t{cs[i]} * 255u) >> 7) << "cos * k_s*I on Q9.8";
-        // Two rising edges; a strobe at a rising edge's instant is taken at the next one.
-        EXPECT_EQ(bench.valid_rises[i], next_rise(sc_time(100.0 + 100 * i, SC_NS), clk20) + clk20 + gate);
+        // Four rising edges (sync17's two, the taking edge, done); a strobe at a rising edge's
+        // instant is sampled by sync17's first flip-flop at the next one.
+        EXPECT_EQ(bench.valid_rises[i], next_rise(sc_time(100.0 + 100 * i, SC_NS), clk20) + 3 * clk20 + gate);
     }
 }
 
@@ -426,7 +461,7 @@ TEST(SqmulChecker, AMonitorSampleOffTheGoldenModelIsCaught) {
 namespace {
 
 // The bench sqmul_tb's default run builds: a sphere's raster line of 48 pixels at n = 10, 100 and
-// 1000 (Fig. 3 with 22 clocks per pixel), traced into `stem`.vcd.
+// 1000 (Fig. 3 with 24 clocks per pixel), traced into `stem`.vcd.
 void trace_default_run(const std::string& stem) {
     std::vector<uint32_t> line;
     for (double c : scene::sphere_line_cos(0.2, 48, 0.3, 0.4, 1.0)) line.push_back(scene::cos_code(c));
@@ -450,7 +485,8 @@ TEST(SqmulTrace, VcdDeclaresTheDeviceNetsAndTheViewShowsOnlyThose) {
     for (const char* net : {"tb.clk", "tb.ctl17", "tb.out29_valid", "tb.dut.rg1_n[9:0]", "tb.dut.z_lead[3:0]",
                             "tb.dut.f_frac[8:0]", "tb.dut.cos_p[18:0]", "tb.dut.p_brdf[18:0]",
                             "tb.dut.stage.mx_p_sel[1:0]", "tb.dut.stage.mx_b_sel", "tb.dut.stage.mul_p_product[18:0]",
-                            "tb.dut.p_done", "tb.out25_r[16:0]"})
+                            "tb.dut.p_done", "tb.out25_r[16:0]", "tb.dut.stage.ctl_req",
+                            "tb.dut.stage.sync17.stage1", "tb.dut.stage.sync17_req"})
         EXPECT_EQ(declared.count(std::string("SystemC.") + net), 1u) << net;
     for (const auto& n : declared) EXPECT_EQ(n.find(' '), std::string::npos) << n;
     const auto shown = gtkw_listed(source_path("traces/sqmul.gtkw"));

@@ -49,8 +49,10 @@ sc_time squared_pixel_end(const sc_time& start, unsigned n) {
     return sc_time(10.0 + 20.0 * m + 10.0 + 20.0 * (k + 3) + 0.1, SC_NS);
 }
 
-// The square-and-multiply device's pixel the same way, with its walk of floor(log2 n) + popcount(n)
-// clocks after the taking edge in place of k + 1 (n = 0 read as 1).
+// The square-and-multiply device's pixel the same way (the same synchroniser), with floor(log2 n) +
+// popcount(n) + 2 clocks after the sampling edge in place of k + 3: the synchroniser's second edge,
+// the taking edge, its walk of floor(log2 n) squares and popcount(n) - 1 multiplications, the done
+// edge (n = 0 read as 1).
 sc_time sqmul_pixel_end(const sc_time& start, unsigned n) {
     if (n == 0) n = 1;
     unsigned steps = 0;
@@ -58,7 +60,7 @@ sc_time sqmul_pixel_end(const sc_time& start, unsigned n) {
     for (unsigned v = n; v != 0; v >>= 1) steps += v & 1u;
     const double after_first_fall = start / sc_time(1, SC_NS) + 2.5 - 10.0;
     const double m = after_first_fall <= 0 ? 0 : std::ceil(after_first_fall / 20.0);
-    return sc_time(10.0 + 20.0 * m + 10.0 + 20.0 * steps + 0.1, SC_NS);
+    return sc_time(10.0 + 20.0 * m + 10.0 + 20.0 * (steps + 2) + 0.1, SC_NS);
 }
 
 struct ua60553_v {
