@@ -5,10 +5,11 @@
 #                                    wrapper
 #   <p>/lib/libshading_floor.a       the floor's shared arithmetic (no SystemC): each device's bit-exact
 #                                    function (UA 60553, its tuned generators, UA 22802, the
-#                                    squared-quadratic device, the interpolation units, the sample
-#                                    stage), which the fast models and the TLM wrappers call
-#   <p>/lib/libshading_golden.a      the references and the golden models' checks and studies
-#                                    (square-and-multiply; the rest of each golden model is the floor)
+#                                    squared-quadratic and square-and-multiply devices, the
+#                                    interpolation units, the sample stage), which the fast models and
+#                                    the TLM wrappers call
+#   <p>/lib/libshading_golden.a      the references and the golden models' checks and studies (the
+#                                    Horner unit's steps; the rest of each golden model is the floor)
 #   <p>/lib/cmake/shading/           find_package(shading CONFIG): shading::modules, ::golden, ...
 #   <p>/lib/pkgconfig/shading.pc     pkg-config: Requires: systemc
 #   <p>/lib/libshading_scene.a, libshading_pipeline.a, shading-scene.pc   when built (tinyobjloader,
@@ -76,7 +77,7 @@ install(TARGETS ${SHADING_EXPORTED} EXPORT shadingTargets
 # Public headers: modules/** (every block, monitor, device and wrapper), the floor (the number
 # formats and the shared arithmetic), the golden models and references, scene.h (compiled into
 # shading_golden) and the generated ROM, all in one include root. By directory, so a new device's
-# headers (modules/squared, formats/squared_formats.h, ...) come along; scripts/check_package.sh
+# headers (modules/squared, modules/sqmul, formats/sqmul_formats.h, ...) come along; scripts/check_package.sh
 # checks a list of them.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${SHADING_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.h")

@@ -197,6 +197,21 @@ target_link_libraries(gen_rtl PRIVATE shading_golden)
 #   the same signals; 1-wire pins as bool. Lint warnings (-Wall) fail the build; tracing is compiled in.
 function(shading_verilate_rtl target prefix)
   cmake_parse_arguments(ARG "" "TOP;SOURCE" "DIRS;ARGS" ${ARGN})
+  # A previous run's list of the files Verilator read (<prefix>_copy.cmake in the build tree): if one
+  # of them is gone since (a Verilog header folded into shading_formats.vh), the list is dropped, so
+  # verilate() runs Verilator again instead of stopping the configure on the missing file.
+  set(_vcopy ${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/${target}.dir/${prefix}.dir/${prefix}_copy.cmake)
+  if(EXISTS ${_vcopy})
+    file(STRINGS ${_vcopy} _deps REGEX "^set\\(${prefix}_DEPS ")
+    string(REGEX MATCHALL "\"[^\"]+\"" _files "${_deps}")
+    foreach(_f IN LISTS _files)
+      string(REPLACE "\"" "" _f "${_f}")
+      if(NOT EXISTS "${_f}")
+        file(REMOVE ${_vcopy})
+        break()
+      endif()
+    endforeach()
+  endif()
   verilate(${target} SYSTEMC TRACE
            PREFIX ${prefix}
            TOP_MODULE ${ARG_TOP}

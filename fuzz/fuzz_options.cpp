@@ -93,6 +93,17 @@ std::optional<int> squared(int argc, char** argv) {
     return std::nullopt;
 }
 
+std::optional<int> sqmul(int argc, char** argv) {
+    sqmul_options o;
+    if (auto rc = parse_sqmul(argc, argv, o)) return rc;
+    check_bench(o.bench, "traces/sqmul", true);
+    check_ns(o.ns, 1023);
+    FUZZ_CHECK(within(o.scene_pixels, 2u, 100000u), "--scene-pixels %u", o.scene_pixels);
+    FUZZ_CHECK(o.clk_ns >= 1.0 && o.clk_ns <= 1000.0, "--clk-ns %g", o.clk_ns);
+    FUZZ_CHECK(in(abstractions, o.abstraction), "--abstraction '%s'", o.abstraction.c_str());
+    return std::nullopt;
+}
+
 std::optional<int> interp_coef(int argc, char** argv) {
     interp_coef_options o;
     if (auto rc = parse_interp_coef(argc, argv, o)) return rc;
@@ -334,6 +345,7 @@ const program programs[] = {
     {"bench_line_tlm", bench_line_tlm},     {"components_study", components_study},
     {"edge_study", edge_study},             {"two_line_study", two_line_study},
     {"cell_study", cell_study},             {"render_cells", render_cells},
+    {"sqmul_tb", sqmul},
 };
 
 }  // namespace

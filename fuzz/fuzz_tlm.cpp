@@ -318,6 +318,9 @@ struct harness : sc_core::sc_module {
         targets.push_back(std::make_unique<specular_target<a_gen_tuned>>("tuned_pa", pa));
         targets.push_back(std::make_unique<specular_target<squared_device>>("squared_pa", pa));
         targets.push_back(std::make_unique<line_target<5, sample_set::case1, div3_mode::shift_add>>("line5_pa", pa));
+        // Appended, so the committed seeds keep their targets.
+        targets.push_back(std::make_unique<specular_target<sqmul_device>>("sqmul_lt", lt));
+        targets.push_back(std::make_unique<specular_target<sqmul_device>>("sqmul_pa", pa));
         SC_THREAD(serve);
     }
     void serve() {

@@ -10,7 +10,7 @@ OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus", "fuzz_o
 PROGRAMS = ["interp_coef_tb", "ua60553_tb", "interp_fd_tb", "ua22802_tb", "interp_horner_tb", "squared_tb",
             "interp_line_tb", "interp_study", "soak_pipeline", "render_reference", "bench_specular_tlm",
             "accuracy_study", "generator_search", "head_study", "render_pipeline", "bench_line_tlm",
-            "components_study", "edge_study", "two_line_study", "cell_study", "render_cells"]
+            "components_study", "edge_study", "two_line_study", "cell_study", "render_cells", "sqmul_tb"]
 BENCH = {  # what every bench's ctest entries pass (cmake/shading.cmake, shading_add_bench)
     "default": "--no-vcd",
     "inject": "--no-vcd --inject-mismatch 3",
@@ -27,6 +27,8 @@ SEEDS = {
     "interp_horner_tb": {"gap": "--random 3000 --seed 7 --gap 2", "fast": "--abstraction fast --csv out/h.csv --width 64"},
     "squared_tb": {"sweep": "--sweep --no-vcd", "fast": "--random 3000 --abstraction fast --mode wrap",
                    "clk": "--clk-ns 2.5 --scene-pixels 4 --n 1,3"},
+    "sqmul_tb": {"sweep": "--sweep --no-vcd", "fast": "--random 3000 --abstraction fast --mode wrap",
+                 "clk": "--clk-ns 2.5 --scene-pixels 4 --n 1,3"},
     "interp_line_tb": {"exact": "--case 2 --div3 exact --m 4 --no-vcd", "random": "--random 3000 --seed 7 --div3 SHIFT-ADD"},
     "interp_study": {"short": "--csv interp_study_smoke.csv --width 64", "usage": "--width not-a-number"},
     "soak_pipeline": {"short": "--renders 2 --size 8", "usage": "--renders 1"},

@@ -32,10 +32,13 @@ for f in lib/cmake/shading/shadingConfig.cmake lib/cmake/shading/shadingConfigVe
          include/shading/tlm/tlm_target_base.h include/shading/tlm/specular_tlm.h \
          include/shading/squared/squared.h include/shading/squared/squared_device.h \
          include/shading/squared/squared_fast.h include/shading/squared/squaring_stage.h \
+         include/shading/sqmul/sqmul.h include/shading/sqmul/sqmul_device.h include/shading/sqmul/sqmul_fast.h \
+         include/shading/sqmul/sqmul_stage.h include/shading/sqmul/sqmul_ctrl.h include/shading/sqmul/sqmul_count.h \
+         include/shading/blocks/saturator.h \
          include/shading/blocks/lzc.h include/shading/blocks/barrel_shifter.h include/shading/blocks/and_gate.h \
          include/shading/monitors/load_checker.h include/shading/monitors/phase_checker.h \
          include/shading/formats/squared_formats.h include/shading/formats/sqmul_formats.h \
-         include/shading/arith/squared_arith.h include/shading/golden/sqmul_golden.h \
+         include/shading/arith/squared_arith.h include/shading/arith/sqmul_arith.h \
          include/shading/arith/specular_arith.h include/shading/arith/pipeline_arith.h \
          include/shading/scene/world.h include/shading/golden_pipeline/pipeline.h \
          include/shading/pipeline/shading_pipeline.h \
@@ -49,7 +52,7 @@ done
 # Every device's bit-exact function is in libshading_floor, the checks' extras in libshading_golden
 # (their sources are globbed at configure time).
 for lib_sym in floor:golden_ua60553 floor:golden_ua22802 floor:golden_ua60553_tuned floor:golden_squared \
-               golden:golden_sqmul; do
+               floor:golden_sqmul golden:interp::golden_horner_steps; do
   lib="${lib_sym%%:*}" sym="${lib_sym#*:}"
   grep -qF " T shading::$sym(" <<<"$(nm -C "$stage/lib/libshading_$lib.a")" \
     || { echo "check_package: libshading_$lib.a does not define shading::$sym" >&2; exit 1; }

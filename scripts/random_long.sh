@@ -3,7 +3,8 @@
 # against its golden model (the --random mode of every testbench program), in parallel processes
 # (default 2), each a chunk with its own seed. Not run by CI: it takes tens of minutes on 2 cores.
 # Writes out/random_long.tsv (model, samples, mismatches, seconds spent simulating summed over the chunks,
-# samples per second of one process) and exits non-zero if any chunk failed.
+# samples per second of one process; a chunk of 10^5 stimuli or more is split over the bench's own
+# processes, one per core, and counts its wall time) and exits non-zero if any chunk failed.
 #
 #   scripts/random_long.sh                      10^7 per model, build/bin, 2 processes
 #   N=1000000 JOBS=4 SHADING_BIN=build-x/bin scripts/random_long.sh
@@ -28,6 +29,8 @@ trap 'rm -rf "$work"' EXIT
   printf 'ua22802\tua22802_tb --mode MODE\n'
   printf 'squared\tsquared_tb --mode MODE\n'
   printf 'squared_fast\tsquared_tb --abstraction fast --mode MODE\n'
+  printf 'sqmul\tsqmul_tb --mode MODE\n'
+  printf 'sqmul_fast\tsqmul_tb --abstraction fast --mode MODE\n'
   printf 'interp_fd_m6\tinterp_fd_tb --m 6\n'
   printf 'interp_line\tinterp_line_tb --case CASE --div3 DIV\n'  # chunks: both sample sets x both /3
   printf 'interp_horner\tinterp_horner_tb\n'
@@ -63,9 +66,11 @@ while IFS=$'\t' read -r model cmd; do
   samples=0; mism=0; secs=0; failed=0
   for k in $(seq 0 $((chunks - 1))); do
     line=$(grep ' random (' "$work/$model.$k.log" | tail -1 || true)
-    # "<bench> random (<case>): S samples, M mismatches, R <unit>/s (W s simulated, seed X)"
+    # "<bench> random (<case>): S samples, M mismatches, R <unit>/s (W s simulated, seed X)", or with
+    # the chunk split over processes "..., P processes, R <unit>/s summed over the processes, W s wall"
     s=$(sed -E 's/.*: ([0-9]+) samples.*/\1/' <<<"$line"); m=$(sed -E 's/.* ([0-9]+) mismatches.*/\1/' <<<"$line")
-    w=$(sed -E 's/.*\(([0-9.]+) s simulated.*/\1/' <<<"$line")
+    # one process: "(W s simulated, seed X)"; a chunk split over processes (--jobs): ", W s wall"
+    w=$(sed -nE 's/.*\(([0-9.]+) s simulated.*/\1/p; s/.*, ([0-9.]+) s wall.*/\1/p' <<<"$line")
     if [ -z "$line" ] || [ "$(cat "$work/$model.$k.rc")" != 0 ]; then failed=$((failed + 1)); fi
     [ -n "$line" ] && samples=$((samples + s)) && mism=$((mism + m)) && secs=$(echo "$secs + $w" | bc -l)
   done

@@ -18,7 +18,7 @@ nice cmake --build build -j 2 --target soak_pipeline bench_specular_tlm bench_li
 status=0
 echo "== soak_pipeline --renders 1000 --size 128"
 nice build/bin/soak_pipeline --renders 1000 --size 128 2>&1 | grep -v 'Simulation stopped by user' || status=1
-for d in patent minimax rom_matched ua22802 squared; do
+for d in patent minimax rom_matched ua22802 squared sqmul; do
   echo "== bench_specular_tlm --device $d --lt-pixels $lt --pin-pixels $pin"
   nice build/bin/bench_specular_tlm --device "$d" --lt-pixels "$lt" --pin-pixels "$pin" || status=1
   # One pixel per access: PIXELS / 2 pixels are PIXELS transactions (a write and a read each).

@@ -9,7 +9,8 @@
 //     stepped here at each edge, every read seeing the value before the edge as a signal would. With
 //     the squared-quadratic device the sample controller waits for output 29, which that device
 //     raises k + 4 clocks after its strobe (k = its squarings for the frame's n; two clocks for
-//     its synchroniser): counted here.
+//     its synchroniser), the square-and-multiply device floor(log2 n) + popcount(n) + 3 clocks
+//     after it (the same synchroniser): counted here.
 //   - The datapath is one function call per interval: interval_pixels() (src/floor/arith/
 //     pipeline_arith.h, what the golden pipeline's golden_interval() computes: the device's specular
 //     term, the diffuse and ambient adders, the coefficient units and the Horner unit or forward
@@ -29,6 +30,7 @@
 #include <vector>
 
 #include "arith/pipeline_arith.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "core/report_ids.h"
 #include "formats/interp_formats.h"
@@ -53,7 +55,7 @@ public:
     shading_pipeline_fast(const sc_core::sc_module_name& name, const scene::device_config& dev,
                           interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4, bool carry = false)
         : sc_module(name), dev_(dev), set_(set), div_(div), fd_m_(horner ? 0 : fd_m),
-          fsm_(dev.device == scene::specular_device::squared, carry) {
+          fsm_(dev.device == scene::specular_device::squared || dev.device == scene::specular_device::sqmul, carry) {
         SC_METHOD(on_edge);
         sensitive << clk;
         dont_initialize();
@@ -103,9 +105,9 @@ private:
         bool start() const { return u.start.read(); }
         bool load_frame() const { return u.load_frame.read(); }
         bool ld_e() const { return u.ld_e_; }
-        // The squared-quadratic device's output 29, high from the (k + 4)-th falling edge after its
-        // strobe fell (its done rises at the (k + 4)-th rising edge: sync17's two, the taking edge,
-        // k squares, the done edge).
+        // A clocked device's output 29, high from the dev_clocks_-th falling edge after its strobe
+        // fell (its done rises at that rising edge: sync17's two, the taking edge and the done edge
+        // counted).
         bool dev_valid() const { return u.edges_ - u.strobe_edge_ >= u.dev_clocks_; }
         unsigned check_job() const { return u.check_job(); }
         void ready(bool v) { u.ready.write(v); }
@@ -145,14 +147,25 @@ private:
         }
     }
 
+    // Rising edges from strobe 17's fall to done (sync17's and the taking edge counted): the
+    // squared-quadratic device's sync17 stages, taking edge, k squares, done (sq_count.h); the
+    // square-and-multiply device's sync17 stages, taking edge, one per square and per
+    // multiplication, done (sqmul_count.h).
+    uint64_t device_clocks(unsigned n) const {
+        if (dev_.device == scene::specular_device::sqmul) {
+            const auto g = golden_sqmul(n, 0, {0, 0, 0}, dev_.mode);
+            return g.squares + g.multiplies + sqmul::sync_stages + 2;
+        }
+        return squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(n).z)) + squared::sync_stages + 2;
+    }
+
     // RG1, RG3-5, k_d*I and ambient: the device's frame strobes fall.
     void latch_frame() {
         k_.n = static_cast<unsigned>(in_n.read().to_uint());
         k_.ksi = {in_ksi_r.read().to_uint64(), in_ksi_g.read().to_uint64(), in_ksi_b.read().to_uint64()};
         k_.kdi = {in_kdi_r.read().to_uint64(), in_kdi_g.read().to_uint64(), in_kdi_b.read().to_uint64()};
         k_.ambient = {in_amb_r.read().to_uint64(), in_amb_g.read().to_uint64(), in_amb_b.read().to_uint64()};
-        dev_clocks_ =
-            squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k_.n).z)) + squared::sync_stages + 2;
+        dev_clocks_ = device_clocks(k_.n);
     }
 
     // The job registers latch the pins.
@@ -295,7 +308,7 @@ private:
     pipeline::sample_fsm fsm_;
     bool samples_ready_ = false;
     uint64_t edges_ = 0, strobe_edge_ = 0;  // falling edges so far; the last one strobe 17 fell at
-    uint64_t dev_clocks_ = 4;               // the squared-quadratic device's k + 4 for the frame's n
+    uint64_t dev_clocks_ = 4;               // a clocked device's clocks per sample for the frame's n
     interval job_, d_;  // the job registers (with the samples' pixels) and the descriptor registers
     std::array<pipeline::sample_geometry, 4> job_s_{};
     pipeline::sample_geometry last_s_{};  // the last sample's codes

@@ -1,6 +1,7 @@
 // TLM-2.0 wrapper of the specular devices (UA 60553's pins): the UA 60553 family
-// (specular/specular_device.h with any generator of `a`) and the squared-quadratic device (ours,
-// squared/squared_device.h, with a `clk` pin): a tlm_utils::simple_target_socket `socket` with
+// (specular/specular_device.h with any generator of `a`), the squared-quadratic device (ours,
+// squared/squared_device.h, with a `clk` pin) and the square-and-multiply device (ours,
+// sqmul/sqmul_device.h, the same pins): a tlm_utils::simple_target_socket `socket` with
 // b_transport and transport_dbg over the register map below, in one of two timing modes chosen at
 // construction:
 //   pin_accurate   - the wrapper owns the signal-level devices and drives UA 60553, Fig. 3's
@@ -10,7 +11,7 @@
 //                    with the same delay (added to b_transport's delay argument, no wait).
 // Both give bit-identical data (testbenches/tlm). One class template, specular_tlm<V>, whose V
 // names the device as tlm_variant<V> describes it (a_gen_linear, a_gen_rom, a_gen_tuned: UA 60553's
-// Fig. 1 with that generator; squared_device); aliases at the end of the file.
+// Fig. 1 with that generator; squared_device; sqmul_device); aliases at the end of the file.
 //
 // Register map (byte addresses; registers are 32-bit words in host byte order, little-endian on
 // the supported hosts; reserved bits read 0, writes to them are ignored):
@@ -27,8 +28,9 @@
 //                      alignment, 3 byte enables, 4 command, 5 read before ready), cleared by
 //                      CONTROL.CLEAR_ERR. The log is the wrapper's, not the device's state.
 //   0x024 CONTROL  RW  bit 0 OVF: 0 saturate, 1 wrap (ADD11's overflow mode; a change clears
-//                      READY and invalidates the result window); bits 5:4 VARIANT, read-only
-//                      (0 UA 60553, 1 UA 22802 ROM, 2 tuned UA 60553, 3 squared-quadratic);
+//                      READY and invalidates the result window); bits 6:4 VARIANT, read-only
+//                      (0 UA 60553, 1 UA 22802 ROM, 2 tuned UA 60553, 3 squared-quadratic,
+//                      4 square-and-multiply);
 //                      bit 8 TIMING, read-only
 //                      (0 loosely timed, 1 pin-accurate); bit 31 CLEAR_ERR, write 1 to clear
 //                      STATUS bits 5:1, reads 0.
@@ -60,6 +62,9 @@
 //                    AND gate's delay; so it depends on n and, for a burst's first pixel, on the
 //                    clock's phase at the access's local time (back-to-back pixels take (k + 4)
 //                    clocks each);
+//   sqmul device     the same with floor(log2 n) + popcount(n) + 2 clocks in place of k + 3 (its
+//                    walk over n's bits; back-to-back pixels take floor(log2 n) + popcount(n) + 3
+//                    clocks each);
 // everything else 0. In pin-accurate mode an access that drives strobes first waits the incoming
 // delay (and returns it as 0); the others return at once with the delay untouched.
 // Debug transport: reads of any byte range within one region (registers 0x000-0x027, COS_BLOCK,
@@ -78,11 +83,14 @@
 #include <systemc>
 
 #include "arith/specular_arith.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "arith/ua60553_tuned_arith.h"
 #include "formats/specular_formats.h"
+#include "formats/sqmul_formats.h"
 #include "formats/squared_formats.h"
 #include "specular/specular_device.h"
+#include "sqmul/sqmul_device.h"
 #include "squared/squared_device.h"
 #include "tlm/tlm_target_base.h"
 #include "tuned/a_gen_tuned.h"
@@ -104,7 +112,7 @@ inline constexpr uint32_t STATUS_READY = 1u << 0;
 inline constexpr uint32_t ERR_ADDRESS = tlm_err::address, ERR_SIZE = tlm_err::size,
                           ERR_BYTE_ENABLE = tlm_err::byte_enable, ERR_COMMAND = tlm_err::command,
                           ERR_NOT_READY = tlm_err::not_ready;
-inline constexpr uint32_t CONTROL_OVF = 1u << 0, CONTROL_VARIANT_SHIFT = 4, CONTROL_VARIANT_MASK = 3u << 4,
+inline constexpr uint32_t CONTROL_OVF = 1u << 0, CONTROL_VARIANT_SHIFT = 4, CONTROL_VARIANT_MASK = 7u << 4,
                           CONTROL_TIMING = 1u << 8, CONTROL_CLEAR_ERR = 1u << 31;
 }  // namespace tlm_map
 
@@ -184,6 +192,30 @@ struct tlm_variant<squared_device> {
     static std::array<uint64_t, 3> outputs(uint64_t n, uint64_t cos, const std::array<uint64_t, 3>& ksi,
                                            overflow_mode m) {
         return golden_squared(n, cos, ksi, m).out;
+    }
+};
+// The square-and-multiply device (ours): nothing to configure; its latency from the first rising
+// edge after the strobe is floor(log2 n) + popcount(n) + 2 clocks (sqmul_count.h: sync17's second
+// stage, the taking edge with the LOAD, one step per square and per multiplication, done).
+template <>
+struct tlm_variant<sqmul_device> {
+    using device = sqmul_device;
+    struct config {};
+    static config default_config() { return {}; }
+    static constexpr uint32_t code = 4;
+    static constexpr qfmt n_fmt = sqmul::n_fmt;
+    static constexpr bool clocked = true;
+    static std::unique_ptr<device> make(const char* name, overflow_mode m, const config&, const block_delays& d) {
+        return std::make_unique<device>(name, m, d);
+    }
+    static uint64_t law(uint64_t n, const config&) { return n & n_fmt.mask(); }
+    static unsigned latency(uint64_t n) {
+        const auto g = golden_sqmul(n, 0, {0, 0, 0}, overflow_mode::saturate);
+        return g.squares + g.multiplies + sqmul::sync_stages + 1;
+    }
+    static std::array<uint64_t, 3> outputs(uint64_t n, uint64_t cos, const std::array<uint64_t, 3>& ksi,
+                                           overflow_mode m) {
+        return golden_sqmul(n, cos, ksi, m).out;
     }
 };
 
@@ -523,5 +555,6 @@ using specular_tlm_ua60553 = specular_tlm<a_gen_linear>;
 using specular_tlm_ua22802 = specular_tlm<a_gen_rom>;
 using specular_tlm_ua60553_tuned = specular_tlm<a_gen_tuned>;
 using specular_tlm_squared = specular_tlm<squared_device>;
+using specular_tlm_sqmul = specular_tlm<sqmul_device>;
 
 }  // namespace shading

@@ -1,4 +1,4 @@
-// Controller of the square-and-multiply baseline (ours, for comparison; no SystemC block): walks
+// Controller of the square-and-multiply device (ours; SystemC twin modules/sqmul/sqmul_ctrl.h): walks
 // the bits of n below its leading one, most significant first, one step per rising edge of clk:
 //     taking edge   LOAD (RG_P <- cos at the falling edge that follows); left = k = 9 - z,
 //                   bits = f, the 9 wires of n << z below its leading one
@@ -8,12 +8,12 @@
 // `SQUARED_SYNC_STAGES = 2 flip-flops), so done rises squares + multiplies + 4 rising edges after
 // strobe 17 fell (the synchroniser's two and the taking edge counted), with floor(log2 n) squares
 // and popcount(n) - 1 multiplications: the baseline's clocks per sample are floor(log2 n) +
-// popcount(n) + 3 (n = 0 is read as n = 1: 4).
+// popcount(n) + 3 (n = 0 is read as n = 1: 4). The select codes are the floor's sqmul::p_select
+// and b_select (sqmul_formats.h), generated into shading_formats.vh.
 // The strobe handshake (req in strobe 17's domain, req_s from sync17 the only one of it read on
 // clk, taken and ack on clk, done = req == ack && !busy), a strobe before done abandoning the
 // result, the start-up state: as sq_ctrl.v.
 `include "shading_formats.vh"
-`include "sqmul_codes.vh"
 module sqmul_ctrl (
     input  wire                       clk,
     input  wire                       ctl17,
@@ -21,7 +21,7 @@ module sqmul_ctrl (
     input  wire [`SQUARED_Z_W-1:0]    z,  // the LZC of RG1
     input  wire [`SQUARED_F_W-1:0]    f,  // n's bits below its leading one, most significant first
     output reg  [`SQMUL_MX_P_SEL_W-1:0] mx_p_sel = `SQMUL_MX_P_HOLD,
-    output reg                        mx_b_sel = `SQMUL_MX_B_P,
+    output reg  [`SQMUL_MX_B_SEL_W-1:0] mx_b_sel = `SQMUL_MX_B_P,
     output reg                        req = 1'b0,
     output wire                       done
 );

@@ -1,4 +1,5 @@
-// The square-and-multiply baseline (ours, for comparison; golden model src/golden/sqmul_golden.*):
+// The square-and-multiply device (ours; golden model src/floor/arith/sqmul_arith.*, SystemC twin
+// modules/sqmul/sqmul_device.h, instance for instance):
 // cos^n over the bits of n with one Q1.18 multiplier, on the squared-quadratic device's pins
 // (UA 60553's plus clk) and handshake (output 29 = strobe 17 AND done).
 //   RG1..RG5     UA 60553's registers, written on the falling edges of strobes 15, 17, 20, 22, 24

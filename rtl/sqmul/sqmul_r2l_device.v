@@ -1,5 +1,5 @@
 // The right-to-left square-and-multiply design (ours, for comparison; golden model
-// golden_sqmul_r2l in src/golden/sqmul_golden.*): cos^n over the bits of n, least significant
+// golden_sqmul_r2l in src/floor/arith/sqmul_arith.*): cos^n over the bits of n, least significant
 // first, with a squarer and a multiplier written in the same clock, on the squared-quadratic
 // device's pins (UA 60553's plus clk) and handshake (output 29 = strobe 17 AND done).
 //   RG1..RG5     UA 60553's registers, written on the falling edges of strobes 15, 17, 20, 22, 24

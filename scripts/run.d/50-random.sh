@@ -14,6 +14,7 @@ done
 for mode in saturate wrap; do
   "$SHADING_BIN/ua22802_tb" --random 200000 --seed "$seed" --mode "$mode"
   "$SHADING_BIN/squared_tb" --random 100000 --seed "$seed" --mode "$mode"
+  "$SHADING_BIN/sqmul_tb" --random 100000 --seed "$seed" --mode "$mode"
 done
 "$SHADING_BIN/interp_coef_tb" --random 20000 --seed "$seed"
 "$SHADING_BIN/interp_horner_tb" --random 50000 --seed "$seed"

@@ -5,7 +5,7 @@
 # pixels) with the device image's NMSE against Phong and the counted long operations per pixel of Phong.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-for dev in patent minimax rom_matched ua22802 squared; do
+for dev in patent minimax rom_matched ua22802 squared sqmul; do
   for mode in saturate wrap; do
     out="$SHADING_OUT/scene/${dev}_${mode}"
     log=$("$SHADING_BIN/render_reference" --scene head --size 512 --device "$dev" --mode "$mode" --out "$out")

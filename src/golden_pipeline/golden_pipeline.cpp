@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "golden_pipeline/pipeline.h"
 #include "scene/scene.h"
@@ -171,6 +172,12 @@ using scene::times;
 scene::op_counts device_sample_ops(const scene::device_config& dev, unsigned n) {
     scene::op_counts ops = device_per_sample;
     if (dev.device == scene::specular_device::squared) ops.mul += golden_squared_a(n).k;  // MUL_SQ, k times
+    if (dev.device == scene::specular_device::sqmul) {
+        // MUL_P once per square and per multiplication, then MUL12..14: no MUL7, MUL10, ADD9, ADD11.
+        const auto g = golden_sqmul(n, 0, {0, 0, 0}, dev.mode);
+        ops = scene::op_counts{};
+        ops.mul = g.squares + g.multiplies + 3;
+    }
     return ops;
 }
 

@@ -76,17 +76,18 @@ const char* device_name(specular_device d) {
         case specular_device::rom_matched: return "rom_matched";
         case specular_device::ua22802: return "ua22802";
         case specular_device::squared: return "squared";
+        case specular_device::sqmul: return "sqmul";
     }
     return "?";
 }
 
-std::vector<std::string> device_names() { return {"patent", "minimax", "rom_matched", "ua22802", "squared"}; }
+std::vector<std::string> device_names() { return {"patent", "minimax", "rom_matched", "ua22802", "squared", "sqmul"}; }
 
 specular_device parse_device(const std::string& name) {
     for (auto d : {specular_device::patent, specular_device::minimax, specular_device::rom_matched,
-                   specular_device::ua22802, specular_device::squared})
+                   specular_device::ua22802, specular_device::squared, specular_device::sqmul})
         if (name == device_name(d)) return d;
-    throw scene_error("unknown specular device '" + name + "' (patent, minimax, rom_matched, ua22802, squared)");
+    throw scene_error("unknown specular device '" + name + "' (patent, minimax, rom_matched, ua22802, squared, sqmul)");
 }
 
 cnum pow_int(cnum x, unsigned n) {

@@ -2,7 +2,8 @@
 //  (a) Phong with exact cos^n, Blinn's N.H: what users compare against;
 //  (b) the same, with the specular term from a specular device's bit-accurate golden model
 //      (UA 60553 with the patent's or a tuned generator, the UA 22802 ROM prototype, or our
-//      squared-quadratic device: the quadratic at n / 2^k squared k times).
+//      squared-quadratic device: the quadratic at n / 2^k squared k times; or the square-and-multiply
+//      device: cos^n over the bits of n).
 // So the device's BRDF error is (b) against (a), and an interpolating pipeline's error is measured
 // against (b). Both shade with
 //   I_c = 255 * (ambient_c + sum over lights with N.L > 0 of I_l,c * (k_d,c * N.L + k_s,c * S))
@@ -24,7 +25,7 @@
 namespace shading::scene {
 
 const char* device_name(specular_device d);
-// "patent", "minimax", "rom_matched", "ua22802", "squared"; throws scene_error otherwise.
+// "patent", "minimax", "rom_matched", "ua22802", "squared", "sqmul"; throws scene_error otherwise.
 specular_device parse_device(const std::string& name);
 std::vector<std::string> device_names();
 

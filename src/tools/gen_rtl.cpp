@@ -141,6 +141,16 @@ int write_formats(const std::string& path, unsigned sqmul_frac) {
     define(os, "SQMUL_P_ONE", p_word.one);
     define(os, "SQMUL_COS_ALIGN", p_word.cos_align);
     define(os, "SQMUL_MAX_STEPS", sqmul::max_steps);
+    // MX_P's and MX_B's inputs, at the select codes the controller drives (sqmul_formats.h).
+    define(os, "SQMUL_MX_P_INPUTS", sqmul::p_inputs);
+    define(os, "SQMUL_MX_P_SEL_W", select_wires(sqmul::p_product));
+    define(os, "SQMUL_MX_P_HOLD", sqmul::p_hold);
+    define(os, "SQMUL_MX_P_LOAD", sqmul::p_load);
+    define(os, "SQMUL_MX_P_PRODUCT", sqmul::p_product);
+    define(os, "SQMUL_MX_B_INPUTS", sqmul::b_inputs);
+    define(os, "SQMUL_MX_B_SEL_W", select_wires(sqmul::b_cos));
+    define(os, "SQMUL_MX_B_P", sqmul::b_p);
+    define(os, "SQMUL_MX_B_COS", sqmul::b_cos);
 
     os << "\n// interp_formats.h: the interpolation paper's units\n";
     define_fmt(os, "INTERP_SAMPLE", interp::sample_fmt);

@@ -6,7 +6,7 @@
 
 #include "formats/specular_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/sqmul_golden.h"
+#include "arith/sqmul_arith.h"
 #include "reference/brdf_reference.h"
 
 namespace shading::study {

@@ -1,5 +1,6 @@
 #include "study_devices.h"
 
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
@@ -7,7 +8,6 @@
 #include "formats/squared_formats.h"
 #include "formats/ua22802_formats.h"
 #include "formats/ua60553_formats.h"
-#include "golden/sqmul_golden.h"
 #include "study_metrics.h"
 
 namespace shading::study {

@@ -1,4 +1,4 @@
-// The square-and-multiply designs' golden models (src/golden/sqmul_golden.*) at hand-worked words,
+// The square-and-multiply designs' golden models (src/floor/arith/sqmul_arith.*) at hand-worked words,
 // both walks and several P words; their clocks per sample against the hand-derived formula; the
 // study's relative-error measure against functions whose error is known. No simulation.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 
 #include "formats/specular_formats.h"
 #include "formats/sqmul_formats.h"
-#include "golden/sqmul_golden.h"
+#include "arith/sqmul_arith.h"
 #include "reference/brdf_reference.h"
 #include "sqmul_words.h"
 

@@ -11,6 +11,7 @@
 #include "blocks/inverter_bank.h"
 #include "blocks/mul.h"
 #include "blocks/reg.h"
+#include "blocks/saturator.h"
 #include "blocks/synchroniser.h"
 #include "core/report_ids.h"
 
@@ -187,6 +188,28 @@ TEST(EqualityComparator, OneOnlyWhereEveryWireAgreesAfterItsDelay) {
     a.write(0x8001);
     sc_start(1, SC_NS);
     EXPECT_TRUE(y.read());
+}
+
+TEST(Saturator, ClampsAboveHiAfterItsDelayInSaturateModeAndIsWiresInWrapMode) {
+    // 19 wires, hi = 1.0 on Q1.18 (0x40000): 0x60000 (1.5) is clamped, 0x3FFFF passes; in wrap mode
+    // both pass, with no delay.
+    bus<19> x("x"), ys("ys"), yw("yw");
+    saturator<19> sat("sat", overflow_mode::saturate, 0x40000, sc_time(1, SC_NS));
+    saturator<19> wires("wires", overflow_mode::wrap, 0x40000, sc_time(1, SC_NS));
+    sat.x(x); sat.y(ys);
+    wires.x(x); wires.y(yw);
+    EXPECT_EQ(sat.delay(), sc_time(1, SC_NS));
+    EXPECT_EQ(wires.delay(), sc_core::SC_ZERO_TIME);
+    x.write(0x60000);
+    sc_start(500, SC_PS);
+    EXPECT_EQ(ys.read(), 0u) << "not settled yet";
+    EXPECT_EQ(yw.read(), 0x60000u);
+    sc_start(1, SC_NS);
+    EXPECT_EQ(ys.read(), 0x40000u);
+    x.write(0x3FFFF);
+    sc_start(2, SC_NS);
+    EXPECT_EQ(ys.read(), 0x3FFFFu);
+    EXPECT_EQ(yw.read(), 0x3FFFFu);
 }
 
 TEST(Synchroniser, AChangeReachesQAtTheStagesThRisingEdge) {

@@ -43,6 +43,9 @@ struct squared_options {
     std::string abstraction = "block";
 };
 
+// The square-and-multiply device's bench (sqmul_tb) takes the squared-quadratic device's options.
+using sqmul_options = squared_options;
+
 struct interp_coef_options {
     bench_options bench;
     std::string csv_path;
@@ -73,6 +76,7 @@ struct interp_line_options {
 std::optional<int> parse_ua60553(int argc, char** argv, ua60553_options& o);
 std::optional<int> parse_ua22802(int argc, char** argv, ua22802_options& o);
 std::optional<int> parse_squared(int argc, char** argv, squared_options& o);
+std::optional<int> parse_sqmul(int argc, char** argv, sqmul_options& o);
 std::optional<int> parse_interp_coef(int argc, char** argv, interp_coef_options& o);
 std::optional<int> parse_interp_fd(int argc, char** argv, interp_fd_options& o);
 std::optional<int> parse_interp_horner(int argc, char** argv, interp_horner_options& o);

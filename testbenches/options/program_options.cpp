@@ -103,21 +103,35 @@ std::optional<int> parse_ua22802(int argc, char** argv, ua22802_options& o) {
     return parse_bench(app, argc, argv, o.bench);
 }
 
-std::optional<int> parse_squared(int argc, char** argv, squared_options& o) {
-    CLI::App app("Squared-quadratic specular device: Fig. 3 with its clock, against the golden model");
-    add_bench_options(app, o.bench, "traces/squared", true);
+namespace {
+// The clocked devices' benches (squared_tb, sqmul_tb): their options are the same.
+std::optional<int> parse_clocked(int argc, char** argv, squared_options& o, const char* what, const char* trace,
+                                 const char* clk_help, const char* fast_help) {
+    CLI::App app(what);
+    add_bench_options(app, o.bench, trace, true);
     app.add_flag("--sweep", o.sweep, "stream every cos code 0..0x8000 instead of a scene line");
     app.add_option("--n", o.ns, "specular exponents (default: 10 100 1000 for the scene, 1 3 10 100 512 1000 "
                                 "for --sweep)")
         ->check(CLI::Range(0u, 1023u));
     app.add_option("--scene-pixels", o.scene_pixels, "pixels of the sphere's raster line")->check(CLI::Range(2u, 100000u));
-    app.add_option("--clk-ns", o.clk_ns, "the squaring stage's clock period (strobe 17: 12 clocks low, 1 high)")
-        ->check(CLI::Range(1.0, 1000.0))->check(not_nan());
-    app.add_option("--abstraction", o.abstraction,
-                   "device model: block (every block, per-block waveform) or fast (one process at the pins, "
-                   "the same pin timing; squared/squared_fast.h)")
-        ->check(abstractions);
+    app.add_option("--clk-ns", o.clk_ns, clk_help)->check(CLI::Range(1.0, 1000.0))->check(not_nan());
+    app.add_option("--abstraction", o.abstraction, fast_help)->check(abstractions);
     return parse_bench(app, argc, argv, o.bench);
+}
+}  // namespace
+
+std::optional<int> parse_squared(int argc, char** argv, squared_options& o) {
+    return parse_clocked(argc, argv, o, "Squared-quadratic specular device: Fig. 3 with its clock, against the golden model",
+                         "traces/squared", "the squaring stage's clock period (strobe 17: 12 clocks low, 1 high)",
+                         "device model: block (every block, per-block waveform) or fast (one process at the pins, "
+                         "the same pin timing; squared/squared_fast.h)");
+}
+
+std::optional<int> parse_sqmul(int argc, char** argv, sqmul_options& o) {
+    return parse_clocked(argc, argv, o, "Square-and-multiply specular device: Fig. 3 with its clock, against the golden model",
+                         "traces/sqmul", "the stage's clock period (strobe 17: 21 clocks low, 1 high)",
+                         "device model: block (every block, per-block waveform) or fast (one process at the pins, "
+                         "the same pin timing; sqmul/sqmul_fast.h)");
 }
 
 std::optional<int> parse_interp_coef(int argc, char** argv, interp_coef_options& o) {
@@ -197,7 +211,7 @@ std::optional<int> parse_render_reference(int argc, char** argv, render_referenc
     app.add_option("--size", o.size, "image width and height in pixels")->check(CLI::Range(1u, 8192u));
     // Names, ranges and numbers are checked by the parser: any bad one is bad usage (exit 2).
     const auto devices = CLI::IsMember(device_names());
-    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared")
+    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared, sqmul")
         ->check(devices);
     app.add_option("--compare", o.compare,
                    "devices (comma-separated) for compare.png: Phong and their images above their error maps")
@@ -217,7 +231,7 @@ std::optional<int> parse_render_reference(int argc, char** argv, render_referenc
 
 std::optional<int> parse_bench_specular_tlm(int argc, char** argv, bench_specular_tlm_options& o) {
     CLI::App app{"Throughput of the specular TLM-2.0 wrapper, loosely timed and pin-accurate"};
-    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared")
+    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared, sqmul")
         ->check(CLI::IsMember(device_names()));
     add_pixel_options(app, o.lt_pixels, o.pin_pixels, "lines");
     app.add_option("--burst", o.burst, "pixels per access (1: one transaction per write and per read)")

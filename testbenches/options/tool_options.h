@@ -18,7 +18,7 @@ const char* default_data_dir();
 
 // The names --device takes (render_reference, bench_specular_tlm, render_pipeline).
 inline const std::vector<std::string>& device_names() {
-    static const std::vector<std::string> names{"patent", "minimax", "rom_matched", "ua22802", "squared"};
+    static const std::vector<std::string> names{"patent", "minimax", "rom_matched", "ua22802", "squared", "sqmul"};
     return names;
 }
 

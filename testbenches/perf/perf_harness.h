@@ -127,4 +127,90 @@ private:
     bool pending_ = false;
 };
 
+// A clocked specular device (the squared-quadratic and square-and-multiply devices, ours: UA 60553's
+// pins plus `clk`) driven the same way, with its 20 ns clock and strobe 17 an sc_clock of `clocks`
+// clock periods, high for one of them: every result is valid when strobe 17 rises (the benches'
+// squared_timing and sqmul_timing, 15 and 24 clocks). Strobe 17 falls 5 ns after a rising edge
+// of clk, clear of every edge.
+template <class Device>
+class clocked_harness : public sc_core::sc_module, public harness {
+    using n_t = typename decltype(Device::in16_n)::data_type;  // the fast models have no n_fmt
+    using cos_t = sc_dt::sc_uint<spec::cos_fmt.width>;
+    using ksi_t = sc_dt::sc_uint<spec::ksi_fmt.width>;
+    using out_t = sc_dt::sc_uint<spec::out_fmt.width>;
+
+public:
+    using golden_fn = std::function<std::array<uint64_t, 3>(uint64_t n, uint64_t cos, const std::array<uint64_t, 3>& ksi)>;
+    static constexpr uint64_t n = 120;
+    static constexpr std::array<uint64_t, 3> ksi{255, 140, 40};
+
+    sc_core::sc_clock clk;
+    sc_core::sc_clock ctl17;
+    sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
+    sc_core::sc_signal<n_t> in16_n{"in16_n"};
+    sc_core::sc_signal<cos_t> in18_cos{"in18_cos"};
+    sc_core::sc_signal<ksi_t> in19_ksi_r{"in19_ksi_r"}, in21_ksi_g{"in21_ksi_g"}, in23_ksi_b{"in23_ksi_b"};
+    sc_core::sc_signal<out_t> out25_r{"out25_r"}, out26_g{"out26_g"}, out27_b{"out27_b"};
+    sc_core::sc_signal<bool> out29_valid{"out29_valid"};
+    Device dut;
+
+    SC_HAS_PROCESS(clocked_harness);
+    template <typename... DeviceArgs>
+    clocked_harness(const sc_core::sc_module_name& name, unsigned clocks, golden_fn golden, DeviceArgs&&... device_args)
+        : sc_module(name),
+          clk("clk", sc_core::sc_time(20, sc_core::SC_NS)),
+          ctl17("ctl17", sc_core::sc_time(20.0 * clocks, sc_core::SC_NS), 1.0 / clocks,
+                sc_core::sc_time(45, sc_core::SC_NS), true),
+          dut("dut", std::forward<DeviceArgs>(device_args)...),
+          golden_(std::move(golden)) {
+        dut.clk(clk);
+        dut.ctl15(ctl15); dut.ctl17(ctl17); dut.ctl20(ctl20); dut.ctl22(ctl22); dut.ctl24(ctl24);
+        dut.in16_n(in16_n); dut.in18_cos(in18_cos);
+        dut.in19_ksi_r(in19_ksi_r); dut.in21_ksi_g(in21_ksi_g); dut.in23_ksi_b(in23_ksi_b);
+        dut.out25_r(out25_r); dut.out26_g(out26_g); dut.out27_b(out27_b); dut.out29_valid(out29_valid);
+        SC_THREAD(load);
+        SC_METHOD(on_rise);
+        sensitive << ctl17.posedge_event();
+        dont_initialize();
+    }
+
+    sc_core::sc_object& root() override { return *this; }
+    uint64_t items() const override { return items_; }
+    uint64_t mismatches() const override { return mismatches_; }
+    sc_core::sc_time batch() const override { return ctl17.period() * 1000.0; }
+    sc_core::sc_time period() const override { return clk.period(); }
+
+private:
+    // RG1, RG3..RG5 latch at the falling edges of their 4 ns pulses, all before ctl17 first rises.
+    void load() {
+        const sc_core::sc_time pulse(4, sc_core::SC_NS);
+        in16_n.write(n_t(n));
+        in19_ksi_r.write(ksi_t(ksi[0])); in21_ksi_g.write(ksi_t(ksi[1])); in23_ksi_b.write(ksi_t(ksi[2]));
+        for (auto* ctl : {&ctl15, &ctl20, &ctl22, &ctl24}) {
+            ctl->write(true);
+            wait(pulse);
+            ctl->write(false);
+            wait(pulse);
+        }
+    }
+    // At strobe 17's rise (output 29 rises with it, a gate delay later) the pixel latched at its
+    // fall is checked (the first rise has none), the next code presented.
+    void on_rise() {
+        if (pending_) {
+            ++items_;
+            mismatches_ += out25_r.read().to_uint64() != expected_[0] || out26_g.read().to_uint64() != expected_[1] ||
+                           out27_b.read().to_uint64() != expected_[2];
+        }
+        code_ = (code_ + 7919) % (spec::cos_one + 1);  // the whole cos range, scattered
+        in18_cos.write(cos_t(code_));
+        expected_ = golden_(n, code_, ksi);
+        pending_ = true;
+    }
+
+    golden_fn golden_;
+    std::array<uint64_t, 3> expected_{};
+    uint64_t code_ = 0, items_ = 0, mismatches_ = 0;
+    bool pending_ = false;
+};
+
 }  // namespace shading::perf

@@ -41,6 +41,8 @@
 #include "core/trace.h"
 #include "golden/interp_golden.h"
 #include "arith/specular_arith.h"
+#include "arith/sqmul_arith.h"
+#include "arith/squared_arith.h"
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
 #include "testbenches/interp/interp_coef_bench.h"
@@ -162,6 +164,24 @@ void register_goldens() {
         for (int i = 0; i < 1024; ++i) {
             code = (code + 7919) % (spec::cos_one + 1);
             benchmark::DoNotOptimize(golden_ua60553_tuned(120, code, ksi, overflow_mode::saturate).out);
+        }
+        return std::size_t{1024};
+    });
+    // The clocked devices' golden models (ours): the squared-quadratic law, and the square-and-multiply
+    // walk over n's bits (n = 120 = 0b1111000: 6 squares and 3 multiplications).
+    add_golden("golden/squared", "evaluations", [] {
+        static uint64_t code = 0;
+        for (int i = 0; i < 1024; ++i) {
+            code = (code + 7919) % (spec::cos_one + 1);
+            benchmark::DoNotOptimize(golden_squared(120, code, ksi, overflow_mode::saturate).out);
+        }
+        return std::size_t{1024};
+    });
+    add_golden("golden/sqmul", "evaluations", [] {
+        static uint64_t code = 0;
+        for (int i = 0; i < 1024; ++i) {
+            code = (code + 7919) % (spec::cos_one + 1);
+            benchmark::DoNotOptimize(golden_sqmul(120, code, ksi, overflow_mode::saturate).out);
         }
         return std::size_t{1024};
     });

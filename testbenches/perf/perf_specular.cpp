@@ -1,6 +1,8 @@
 // perf_models' rows for the specular devices (perf_cases.h says why they are a file of their own):
 // UA 60553, UA 22802 and the tuned device at block level and as the fast pin-level model, each with
-// block delays on and off, traced and untraced; the Verilator twin; the UA 60553 TLM wrapper.
+// block delays on and off, traced and untraced; the clocked devices (squared-quadratic,
+// square-and-multiply) likewise with their delays (all zero is a configuration error for them);
+// the Verilator twin; the UA 60553 TLM wrapper.
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -8,11 +10,15 @@
 #include <vector>
 
 #include "arith/specular_arith.h"
+#include "arith/sqmul_arith.h"
+#include "arith/squared_arith.h"
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
 #include "perf_cases.h"
 #include "perf_harness.h"
 #include "perf_specular.h"
+#include "sqmul/sqmul.h"
+#include "squared/squared.h"
 #include "tlm/specular_tlm.h"
 #include "tuned/ua60553_tuned.h"
 #include "ua22802/ua22802.h"
@@ -99,6 +105,17 @@ void add_specular(const std::string& name, const std::string& golden,
         }
 }
 
+// A clocked device, `clocks` clocks of 20 ns a pixel; tracing on and off.
+template <class Device>
+void add_clocked(const std::string& name, const std::string& golden, unsigned clocks,
+                 typename perf::clocked_harness<Device>::golden_fn g) {
+    using H = perf::clocked_harness<Device>;
+    for (bool traced : {false, true})
+        add_sc(name + "/delays" + (traced ? "/traced" : ""), golden, "evaluations",
+               [=] { return std::unique_ptr<harness>(new H("top", clocks, g, overflow_mode::saturate, block_delays{})); },
+               traced);
+}
+
 #ifdef SHADING_PERF_VERILATOR
 // The RTL twin's UA 60553 datapath (rtl/specular/specular_device.v, AGEN 0, saturate) compiled by
 // `verilator --sc` (cmake/verilator.cmake), in the same harness: ctl17 from an sc_clock.
@@ -138,6 +155,17 @@ void register_specular_cases() {
                                             [mode](uint64_t n, uint64_t c, const auto& k) {
                                                 return golden_ua60553_tuned(n, c, k, mode);
                                             });
+    // The clocked devices (ours), 15 and 24 clocks a pixel (specular_tb.h's squared_timing, sqmul_timing).
+    const auto squared = [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        return golden_squared(n, c, k, mode).out;
+    };
+    const auto sqmul = [mode](uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k) {
+        return golden_sqmul(n, c, k, mode).out;
+    };
+    add_clocked<device_squared>("sc/squared", "golden/squared", 15, squared);
+    add_clocked<device_squared_fast>("sc/squared_fast", "golden/squared", 15, squared);
+    add_clocked<device_sqmul>("sc/sqmul", "golden/sqmul", 24, sqmul);
+    add_clocked<device_sqmul_fast>("sc/sqmul_fast", "golden/sqmul", 24, sqmul);
 #ifdef SHADING_PERF_VERILATOR
     add_verilator();
 #endif

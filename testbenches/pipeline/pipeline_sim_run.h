@@ -16,6 +16,7 @@
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"
+#include "sqmul/sqmul_device.h"
 #include "squared/squared_device.h"
 
 namespace shading::pipeline::sim_detail {
@@ -29,11 +30,11 @@ inline double cpu_seconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-// A watchdog far beyond any plan: 14 clocks per job and per sample (the squared-quadratic device's
-// k + 5 <= 14 clocks per sample), 6 per pixel, and the frame load.
+// A watchdog far beyond any plan: 24 clocks per job and per sample (the square-and-multiply device's
+// floor(log2 n) + popcount(n) + 4 <= 23 clocks per sample), 6 per pixel, and the frame load.
 inline sc_core::sc_time time_limit(const plan& p) {
     uint64_t clocks = 100;
-    for (const auto& j : p.jobs) clocks += 14 + 14 * 4 + 6ull * std::min(j.len, 64u);
+    for (const auto& j : p.jobs) clocks += 24 + 24 * 4 + 6ull * std::min(j.len, 64u);
     return pipeline_period() * static_cast<double>(clocks);
 }
 
@@ -117,6 +118,8 @@ inline sim_result run_device(const plan& p, const frame_constants& k, const scen
             return run<a_gen_rom, EVAL>(p, k, dev, c, a_gen_rom::default_config(), o);
         case scene::specular_device::squared:
             return run<squared_device, EVAL>(p, k, dev, c, squared_device::default_config(), o);
+        case scene::specular_device::sqmul:
+            return run<sqmul_device, EVAL>(p, k, dev, c, sqmul_device::default_config(), o);
     }
     return {};
 }

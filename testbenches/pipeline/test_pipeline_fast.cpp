@@ -26,7 +26,9 @@
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
+#include "sqmul/sqmul_device.h"
 #include "squared/squared_device.h"
 
 using namespace shading;
@@ -298,6 +300,10 @@ TEST_P(PipelineFastPins, SameAsBlockLevelAtEveryEdge) {
             if (horner) run_pair<squared_device, evaluator::horner>(pc, squared_device::default_config());
             else run_pair<squared_device, evaluator::fd>(pc, squared_device::default_config());
             break;
+        case scene::specular_device::sqmul:
+            if (horner) run_pair<sqmul_device, evaluator::horner>(pc, sqmul_device::default_config());
+            else run_pair<sqmul_device, evaluator::fd>(pc, sqmul_device::default_config());
+            break;
     }
 }
 
@@ -313,7 +319,9 @@ INSTANTIATE_TEST_SUITE_P(
                       pair_case{"fd_any_m_squared", scene::specular_device::squared, evaluator::fd, 0, 9},
                       pair_case{"horner_patent_carry", scene::specular_device::patent, evaluator::horner, 0, 10, true},
                       pair_case{"fd_any_m_squared_carry", scene::specular_device::squared, evaluator::fd, 0, 11, true},
-                      pair_case{"fd_m3_ua22802_carry", scene::specular_device::ua22802, evaluator::fd, 3, 13, true}),
+                      pair_case{"fd_m3_ua22802_carry", scene::specular_device::ua22802, evaluator::fd, 3, 13, true},
+                      pair_case{"horner_sqmul", scene::specular_device::sqmul, evaluator::horner, 0, 14},
+                      pair_case{"fd_any_m_sqmul_carry", scene::specular_device::sqmul, evaluator::fd, 0, 15, true}),
     [](const ::testing::TestParamInfo<pair_case>& i) { return std::string(i.param.name); });
 
 // The comparison can fail: the fast pipeline built with the other sample set differs at the pins.
@@ -351,9 +359,16 @@ TEST_P(PipelineFastRender, BitExactAgainstTheGoldenFrame) {
     const hardware_counts hw = hardware_ops(p, c);
     EXPECT_GE(s.clocks, s.frame_load_clocks + hw.clocks);
     // The squared-quadratic device adds k + 3 clocks to each of a job's samples (sample_fsm.h;
-    // k + 4 rising edges from its strobe to output 29: its synchroniser's two, taking, k, done).
-    const uint64_t per_job =
-        10 + (dev.device == scene::specular_device::squared ? 4 * (golden_squared_a(k.n).k + 3) : 0);
+    // k + 4 rising edges from its strobe to output 29: its synchroniser's two, taking, k, done), the
+    // square-and-multiply device its squares and multiplications + 3 (the same edges around its walk).
+    uint64_t per_sample = 0;
+    if (dev.device == scene::specular_device::squared)
+        per_sample = squared::sq_count::squarings(static_cast<unsigned>(golden_squared_a(k.n).z)) + 3;
+    if (dev.device == scene::specular_device::sqmul) {
+        const auto g = golden_sqmul(k.n, 0, {0, 0, 0}, overflow_mode::saturate);
+        per_sample = g.squares + g.multiplies + 3;
+    }
+    const uint64_t per_job = 10 + 4 * per_sample;
     EXPECT_LE(s.clocks, s.frame_load_clocks + 20 + hw.clocks + per_job * p.jobs.size());
     std::printf("%s%u %s %s fast: %zu pixels, %.2f clocks/pixel, %.0f pixels per CPU second\n", rc.scene, rc.size,
                 scene::device_name(rc.device), evaluator_name(rc.e), p.pixels, double(s.clocks) / p.pixels,
@@ -365,7 +380,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(render_case{"head", 64, scene::specular_device::patent, evaluator::horner, false},
                       render_case{"head", 64, scene::specular_device::ua22802, evaluator::fd, true},
                       render_case{"sphere", 48, scene::specular_device::minimax, evaluator::horner, true},
-                      render_case{"head", 64, scene::specular_device::squared, evaluator::fd, true}),
+                      render_case{"head", 64, scene::specular_device::squared, evaluator::fd, true},
+                      render_case{"head", 64, scene::specular_device::sqmul, evaluator::horner, true}),
     render_case_name);
 
 }  // namespace

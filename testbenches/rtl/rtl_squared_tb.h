@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "arith/squared_arith.h"
-#include "golden/sqmul_golden.h"
+#include "arith/sqmul_arith.h"
 #include "testbenches/specular/specular_tb.h"
 #include "testbenches/squared/squared_phase_sweep.h"
 
@@ -41,16 +41,6 @@ struct squared_variant_names {
         return T::mode == overflow_mode::saturate ? "Saturate" : "Wrap";
     }
 };
-
-// Fig. 3 for the square-and-multiply baseline: output 29 rises at most 22 clocks after strobe 17
-// fell (n = 1023: the synchroniser's two rising edges, the taking edge, 9 squares,
-// 9 multiplications, the done edge), so a pixel period of 24 clocks (23 low, 1 high) never strobes
-// before the previous result is valid (nor for the right-to-left design, at most 14).
-inline strobe_timing sqmul_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
-    strobe_timing t = squared_timing(clk_period);
-    t.t_low = 23 * clk_period;
-    return t;
-}
 
 // A timing that shows the clocks per sample: strobe 17 low for 5 ns only, so output 29 = strobe
 // 17 AND done rises when done does; high for the rest of a period of `clocks` clocks. The

@@ -1,14 +1,15 @@
 // The designs the squared-quadratic device is compared with, verilated and checked bit-exact
-// against their golden models on the device pins (no SystemC model of any): the series variant
+// against their golden models on the device pins: the series variant
 // (rtl/squared/squared_series_device.v: 9 squarers with bypass multiplexers, combinational, Fig. 3
-// timing with no clock; golden_squared), the square-and-multiply baseline
-// (rtl/sqmul/sqmul_device.v: one multiplier over the bits of n, left to right; golden_sqmul) and
-// its right-to-left twin (rtl/sqmul/sqmul_r2l_device.v: a squarer and a multiplier in one clock
-// per bit; golden_sqmul_r2l), all saturating (the synthesis table's variants; no range checker:
-// n = 0, n > 1000 and cos > 1.0 are simply compared). Random pixels, every n 0..1023, every cos
-// code at n = 1000, the clocked designs' clocks per sample for every n, strobe 17 at every phase
-// of their clock, and negative tests; both square-and-multiply designs also at the word-length
-// study's Q1.16 P word (the same RTL read with the formats of sqmul_word/p16/).
+// timing with no clock, no SystemC model; golden_squared), the square-and-multiply baseline
+// (rtl/sqmul/sqmul_device.v: one multiplier over the bits of n, left to right; golden_sqmul;
+// co-simulated with its SystemC model in test_rtl_sqmul.cpp) and its right-to-left twin
+// (rtl/sqmul/sqmul_r2l_device.v: a squarer and a multiplier in one clock per bit; golden_sqmul_r2l;
+// no SystemC model), all saturating (the synthesis table's variants; no range checker: n = 0,
+// n > 1000 and cos > 1.0 are simply compared). Random pixels, every n 0..1023, every cos code at
+// n = 1000, the clocked designs' clocks per sample for every n, strobe 17 at every phase of their
+// clock, and negative tests; both square-and-multiply designs also at the word-length study's Q1.16
+// P word (the same RTL read with the formats of sqmul_word/p16/).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -19,7 +20,7 @@
 #include "core/report_ids.h"
 #include "formats/sqmul_formats.h"
 #include "formats/squared_formats.h"
-#include "golden/sqmul_golden.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "rtl_squared_tb.h"
 #include "testbenches/specular/specular_tb.h"

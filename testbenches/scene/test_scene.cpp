@@ -9,6 +9,7 @@
 #include <string>
 
 #include "arith/specular_arith.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
@@ -429,6 +430,7 @@ TEST(SceneShade, DeviceReferenceEqualsGolden) {
             if (name == "rom_matched") want = golden_ua60553_tuned(m.n, code, ksi, mode, ua60553::rom_matched).out;
             if (name == "ua22802") want = golden_ua22802(m.n, code, ksi, mode).out;
             if (name == "squared") want = golden_squared(m.n, code, ksi, mode).out;
+            if (name == "sqmul") want = golden_sqmul(m.n, code, ksi, mode).out;
             op_counts ops;
             const rgb v = shade_device(hand_pixel(&ops), m, {light{}}, dev);
             const rgb diffuse = 255.0 * (m.ambient + 0.8 * m.k_d);

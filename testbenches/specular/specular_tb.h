@@ -94,6 +94,16 @@ inline strobe_timing squared_timing(const sc_core::sc_time& clk_period = sc_core
     return t;
 }
 
+// Fig. 3 for the square-and-multiply device: output 29 rises at most 22 clocks after strobe 17
+// fell (n = 1023: the synchroniser's two rising edges, the taking edge, 9 squares,
+// 9 multiplications, the done edge), so a pixel period of 24 clocks (23 low, 1 high) never strobes
+// before the previous result is valid (nor for the right-to-left design, at most 14).
+inline strobe_timing sqmul_timing(const sc_core::sc_time& clk_period = sc_core::sc_time(20, sc_core::SC_NS)) {
+    strobe_timing t = squared_timing(clk_period);
+    t.t_low = 23 * clk_period;
+    return t;
+}
+
 // Strobe 17 at every phase of the squared-quadratic device's clock: a pixel period of `clocks`
 // clocks plus `step`, so each strobe falls `step` later in the clock's period than the one before
 // (surface loads shift it by 8 ns each), strobe 17 low for `low` only (output 29 then rises with

@@ -2,11 +2,12 @@
 // core, untraced: evaluated pixels per second of the loosely-timed burst path (target: >= 5e7) and
 // of the pin-accurate path, each shading whole raster lines (a 1024-pixel COS_BLOCK write, then a
 // read of the RESULT_BLOCK; --burst P: P pixels per access, 1 for a transaction per pixel and
-// direction) from an initiator thread, at n = 120 (the squared device: k = 6, ten
+// direction) from an initiator thread, at n = 120 (the squared device: k = 6, ten clocks a pixel;
+// the square-and-multiply device: 120 = 0b1111000, 6 squares and 3 multiplications, thirteen
 // clocks a pixel). Every 61st pixel of each line is checked against the device's golden model in
 // the loop (under 2 % of the work); a mismatch exits 1. The timed loop and the report are
 // tlm_initiator.h's, shared with bench_line_tlm. --device takes render_pipeline's names.
-//   bench_specular_tlm [--device patent|minimax|rom_matched|ua22802|squared] [--lt-pixels N] [--pin-pixels N]
+//   bench_specular_tlm [--device patent|minimax|rom_matched|ua22802|squared|sqmul] [--lt-pixels N] [--pin-pixels N]
 //                      [--burst P]
 #include <array>
 #include <string>
@@ -14,6 +15,7 @@
 
 #include "testbenches/options/tool_options.h"
 #include "arith/specular_arith.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
@@ -98,6 +100,11 @@ int sc_main(int argc, char* argv[]) {
         return bench<specular_tlm_ua22802>("UA 22802", lt_px, pin_px, burst, [](uint64_t c, const std::array<uint64_t, 3>& k) {
             return golden_ua22802(bench_n, c, k, sat).out;
         });
+    if (device == "sqmul")
+        return bench<specular_tlm_sqmul>("Square-and-multiply", lt_px, pin_px, burst,
+                                         [](uint64_t c, const std::array<uint64_t, 3>& k) {
+                                             return golden_sqmul(bench_n, c, k, sat).out;
+                                         });
     return bench<specular_tlm_squared>("Squared-quadratic", lt_px, pin_px, burst,
                                        [](uint64_t c, const std::array<uint64_t, 3>& k) {
                                            return golden_squared(bench_n, c, k, sat).out;

@@ -1,5 +1,5 @@
-// TLM-2.0 wrapper of the specular devices (modules/tlm/specular_tlm.h: the UA 60553 family and the
-// squared-quadratic device): the register map, every error response with the state unchanged,
+// TLM-2.0 wrapper of the specular devices (modules/tlm/specular_tlm.h: the UA 60553 family, the
+// squared-quadratic and the square-and-multiply devices): the register map, every error response with the state unchanged,
 // both timing modes against the golden models (src/golden, written independently of the wrapper's
 // own per-pixel path) and against each other on random traffic, the time of each access against
 // hand-worked timing, the burst path for a whole line and debug transport. Each TEST elaborates
@@ -16,6 +16,7 @@
 #include "testbenches/common/sim_guard.h"
 #include "core/report_ids.h"
 #include "arith/specular_arith.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
@@ -46,6 +47,20 @@ sc_time squared_pixel_end(const sc_time& start, unsigned n) {
     const double after_first_fall = start / sc_time(1, SC_NS) + 2.5 - 10.0;
     const double m = after_first_fall <= 0 ? 0 : std::ceil(after_first_fall / 20.0);
     return sc_time(10.0 + 20.0 * m + 10.0 + 20.0 * (k + 3) + 0.1, SC_NS);
+}
+
+// The square-and-multiply device's pixel the same way (the same synchroniser), with floor(log2 n) +
+// popcount(n) + 2 clocks after the sampling edge in place of k + 3: the synchroniser's second edge,
+// the taking edge, its walk of floor(log2 n) squares and popcount(n) - 1 multiplications, the done
+// edge (n = 0 read as 1).
+sc_time sqmul_pixel_end(const sc_time& start, unsigned n) {
+    if (n == 0) n = 1;
+    unsigned steps = 0;
+    for (unsigned v = n; v > 1; v >>= 1) ++steps;
+    for (unsigned v = n; v != 0; v >>= 1) steps += v & 1u;
+    const double after_first_fall = start / sc_time(1, SC_NS) + 2.5 - 10.0;
+    const double m = after_first_fall <= 0 ? 0 : std::ceil(after_first_fall / 20.0);
+    return sc_time(10.0 + 20.0 * m + 10.0 + 20.0 * (steps + 2) + 0.1, SC_NS);
 }
 
 struct ua60553_v {
@@ -80,6 +95,14 @@ struct squared_v {
     }
     static sc_time pixel_end(const sc_time& start, unsigned n) { return squared_pixel_end(start, n); }
 };
+struct sqmul_v {
+    using gen = sqmul_device;
+    static constexpr uint32_t code = 4;
+    static sqmul_nets golden(uint64_t n, uint64_t c, const std::array<uint64_t, 3>& k, overflow_mode md) {
+        return golden_sqmul(n, c, k, md);
+    }
+    static sc_time pixel_end(const sc_time& start, unsigned n) { return sqmul_pixel_end(start, n); }
+};
 
 // The time a burst of `count` pixels at n takes from `start`: its pixels back to back.
 template <class V>
@@ -110,7 +133,7 @@ std::vector<unsigned char> snapshot(tlm_initiator& i) {
 
 template <class V>
 class SpecularTlm : public ::testing::Test {};
-using variants = ::testing::Types<ua60553_v, ua22802_v, tuned_v, squared_v>;
+using variants = ::testing::Types<ua60553_v, ua22802_v, tuned_v, squared_v, sqmul_v>;
 TYPED_TEST_SUITE(SpecularTlm, variants);
 
 // Register map: reset values, field widths, read-only fields, READY's life, a pixel against golden.
@@ -191,6 +214,7 @@ void every_error_leaves_state_unchanged() {
 }
 TEST(SpecularTlmErrors, EveryErrorLeavesStateUnchanged) { every_error_leaves_state_unchanged<a_gen_linear>(); }
 TEST(SpecularTlmErrors, EveryErrorLeavesStateUnchangedSquared) { every_error_leaves_state_unchanged<squared_device>(); }
+TEST(SpecularTlmErrors, EveryErrorLeavesStateUnchangedSqmul) { every_error_leaves_state_unchanged<sqmul_device>(); }
 
 // >= 10^4 random (n, k_s*I, cos) in loosely-timed mode against the device's golden model, both
 // overflow modes, with the annotated delay of every access checked against the hand-worked pixel

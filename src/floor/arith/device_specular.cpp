@@ -1,6 +1,7 @@
 #include "arith/device_specular.h"
 
 #include "arith/specular_arith.h"
+#include "arith/sqmul_arith.h"
 #include "arith/squared_arith.h"
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
@@ -16,6 +17,7 @@ std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, ui
             return golden_ua60553_tuned(n, cos_code, ksi, dev.mode, ua60553::rom_matched).out;
         case specular_device::ua22802: return golden_ua22802(n, cos_code, ksi, dev.mode).out;
         case specular_device::squared: return golden_squared(n, cos_code, ksi, dev.mode).out;
+        case specular_device::sqmul: return golden_sqmul(n, cos_code, ksi, dev.mode).out;
     }
     return {0, 0, 0};
 }

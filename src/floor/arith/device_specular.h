@@ -12,7 +12,7 @@
 
 namespace shading::scene {
 
-enum class specular_device { patent, minimax, rom_matched, ua22802, squared };
+enum class specular_device { patent, minimax, rom_matched, ua22802, squared, sqmul };
 
 struct device_config {
     specular_device device = specular_device::patent;
@@ -20,8 +20,9 @@ struct device_config {
 };
 
 // The device's out25..27 codes (Q9.8) for exponent n, the Q1.15 cos code and the 8-bit k_s*I codes:
-// UA 60553 with the patent's generator or a tuned one (minimax, rom_matched), UA 22802, or the
-// squared-quadratic device, each through its golden function (specular_arith.h and beside it).
+// UA 60553 with the patent's generator or a tuned one (minimax, rom_matched), UA 22802, the
+// squared-quadratic device or the square-and-multiply device, each through its golden function
+// (specular_arith.h and beside it).
 std::array<uint64_t, 3> device_specular(const device_config& dev, unsigned n, uint32_t cos_code,
                                         const std::array<uint64_t, 3>& ksi);
 

@@ -13,12 +13,34 @@
 namespace shading::sqmul {
 
 inline constexpr qfmt n_fmt = squared::n_fmt;
+inline constexpr unsigned n_min = squared::n_min;
+inline constexpr unsigned n_max = squared::n_max;
+// LZC and BSH1 as the squared-quadratic device's: z leading zeros of n, n << z, its 9 low wires f
+// are n's bits below its leading one, walked most significant first; 9 - z squares (none for n = 0).
+inline constexpr unsigned z_width = squared::z_width;
+inline constexpr unsigned z_full = squared::z_full;
+inline constexpr qfmt mant_fmt = squared::mant_fmt;
+inline constexpr qfmt f_fmt = squared::f_fmt;
 inline constexpr qfmt p_fmt = squared::q_fmt;  // Q1.18
 inline constexpr unsigned p_frac = squared::q_frac;
 inline constexpr uint64_t p_one = squared::q_one;
 inline constexpr unsigned cos_align = squared::cos_align;  // Q1.15 onto Q1.18
 // n = 1023 = 0b1111111111: 9 squares and 9 multiplications.
 inline constexpr unsigned max_steps = 2 * (n_fmt.width - 1);
+// RG_P's 16 high wires (Q1.15, 3 low wires open: floor) to UA 60553's colour multipliers.
+inline constexpr unsigned p_to_brdf_drop = squared::sq_to_brdf_drop;
+// Strobe 17 crosses into clk's domain through the squared-quadratic device's synchroniser, so done
+// rises squares + multiplies + 2 + sync_stages rising edges after the strobe fell (sqmul_count.h).
+inline constexpr unsigned sync_stages = squared::sync_stages;
+
+// MX_P's select code, the input RG_P takes at a falling edge of clk: its own word, cos (the load)
+// or MUL_P's product; MX_B's, MUL_P's second operand: RG_P (a square) or cos (a multiplication).
+// The controller (modules/sqmul/sqmul_count.h) drives them, the block model wires the
+// multiplexers' inputs in this order and the RTL generator writes them into the Verilog.
+enum p_select : unsigned { p_hold = 0, p_load = 1, p_product = 2 };
+inline constexpr unsigned p_inputs = 3;
+enum b_select : unsigned { b_p = 0, b_cos = 1 };
+inline constexpr unsigned b_inputs = 2;
 
 // The P word at `frac` fraction bits, Q1.frac, for the word-length study (studies/accuracy,
 // sqmul_study) and its synthesis rows; the devices' word is p_word(p_frac). cos (Q1.15) is aligned

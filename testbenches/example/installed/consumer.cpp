@@ -1,7 +1,7 @@
 // A consumer of the installed package: binds a specular device's pins to its own nets, shades a few
 // pixels through Fig. 3's strobes, reads R, G, B at output 29's rising edge and compares every word
-// with the device's golden model. Two platforms in one elaboration: device_ua60553, and
-// device_squared (ours), the same pins plus its squaring stage's clock, which the
+// with the device's golden model. Three platforms in one elaboration: device_ua60553, and
+// device_squared and device_sqmul (ours), the same pins plus their stage's clock, which the
 // platform's 20 ns clock drives. Built against the installed tree only (CMakeLists.txt here);
 // exits 0 only if all of it matched.
 #include <array>
@@ -12,7 +12,9 @@
 #include <type_traits>
 
 #include "arith/specular_arith.h"  // shading::floor: golden_ua60553
+#include "arith/sqmul_arith.h"     // shading::floor: golden_sqmul
 #include "arith/squared_arith.h"   // shading::floor: golden_squared
+#include "sqmul/sqmul.h"            // shading::modules
 #include "squared/squared.h"        // shading::modules
 #include "ua60553/ua60553.h"        // shading::modules
 
@@ -22,7 +24,9 @@ using golden_fn = std::array<uint64_t, 3> (*)(unsigned n, unsigned cos, const st
 
 template <class Device>
 struct platform : sc_core::sc_module {
-    static constexpr bool clocked = std::is_same_v<Device, shading::device_squared>;
+    static constexpr bool squared = std::is_same_v<Device, shading::device_squared>;
+    static constexpr bool clocked = squared || std::is_same_v<Device, shading::device_sqmul>;
+    static constexpr const char* label = squared ? "squared " : clocked ? "sqmul   " : "UA 60553";
 
     sc_core::sc_signal<bool> ctl15{"ctl15"}, ctl17{"ctl17"}, ctl20{"ctl20"}, ctl22{"ctl22"}, ctl24{"ctl24"};
     sc_core::sc_signal<sc_dt::sc_uint<10>> n{"n"};
@@ -30,7 +34,7 @@ struct platform : sc_core::sc_module {
     sc_core::sc_signal<sc_dt::sc_uint<8>> ks_r{"ks_r"}, ks_g{"ks_g"}, ks_b{"ks_b"};
     sc_core::sc_signal<sc_dt::sc_uint<17>> r{"r"}, g{"g"}, b{"b"};  // Q9.8
     sc_core::sc_signal<bool> valid{"valid"};
-    std::unique_ptr<sc_core::sc_clock> clk;  // the squared device's only
+    std::unique_ptr<sc_core::sc_clock> clk;  // the clocked devices' only
 
     Device spec{"spec"};  // saturate mode; UA 60553 with the patent's constants
     golden_fn golden;
@@ -65,7 +69,8 @@ struct platform : sc_core::sc_module {
     void drive() {
         ctl17.write(true);
         // Three surfaces, six pixels each: cos codes from 1.0 down, and a small LCG's inside the
-        // highlight; n = 1000 is the squared device's longest case (9 squarings).
+        // highlight; n = 1000 is the squared device's longest case (9 squarings), 16 clocks of the
+        // square-and-multiply device's.
         const std::array<std::array<unsigned, 4>, 3> surfaces{{{40, 255, 200, 90}, {7, 13, 128, 250}, {1000, 180, 180, 180}}};
         uint32_t x = 12345;
         for (const auto& s : surfaces) {
@@ -80,12 +85,12 @@ struct platform : sc_core::sc_module {
                 wait(2, SC_NS);
                 ctl17.write(false);  // latch cos
                 wait(15, SC_NS);     // longer than UA 60553's 11.2 ns critical path
-                ctl17.write(true);   // output 29 rises with it (UA 60553) or once squared (ours)
-                wait(sc_time(300, SC_NS), valid.posedge_event());
+                ctl17.write(true);   // output 29 rises with it (UA 60553) or once computed (ours)
+                wait(sc_time(500, SC_NS), valid.posedge_event());
                 const auto want = golden(s[0], c, {s[1], s[2], s[3]});
                 const bool ok = valid.read() && r.read() == want[0] && g.read() == want[1] && b.read() == want[2];
                 std::printf("%s n %4u cos 0x%04x -> R %05x G %05x B %05x  golden %05llx %05llx %05llx %s\n",
-                            clocked ? "squared " : "UA 60553", s[0], c, unsigned(r.read()), unsigned(g.read()),
+                            label, s[0], c, unsigned(r.read()), unsigned(g.read()),
                             unsigned(b.read()), (unsigned long long)want[0], (unsigned long long)want[1],
                             (unsigned long long)want[2], ok ? "ok" : "MISMATCH");
                 ++pixels;
@@ -105,12 +110,16 @@ int sc_main(int, char*[]) {
     platform<shading::device_squared> top_sq("top_squared", [](unsigned n, unsigned c, const std::array<uint64_t, 3>& k) {
         return shading::golden_squared(n, c, k, overflow_mode::saturate).out;
     });
+    platform<shading::device_sqmul> top_sm("top_sqmul", [](unsigned n, unsigned c, const std::array<uint64_t, 3>& k) {
+        return shading::golden_sqmul(n, c, k, overflow_mode::saturate).out;
+    });
     sc_core::sc_start(20, sc_core::SC_US);
-    const bool finished = top.finished && top_sq.finished;
+    const bool finished = top.finished && top_sq.finished && top_sm.finished;
     const auto warnings = sc_core::sc_report_handler::get_count(sc_core::SC_WARNING);
-    std::printf("consumer: %u + %u pixels, %u mismatches, %u warnings, %s\n", top.pixels, top_sq.pixels,
-                top.errors + top_sq.errors, unsigned(warnings), finished ? "finished" : "NOT FINISHED");
-    return (top.pixels == 18 && top_sq.pixels == 18 && top.errors + top_sq.errors == 0 && finished && warnings == 0)
+    const unsigned errors = top.errors + top_sq.errors + top_sm.errors;
+    std::printf("consumer: %u + %u + %u pixels, %u mismatches, %u warnings, %s\n", top.pixels, top_sq.pixels,
+                top_sm.pixels, errors, unsigned(warnings), finished ? "finished" : "NOT FINISHED");
+    return (top.pixels == 18 && top_sq.pixels == 18 && top_sm.pixels == 18 && errors == 0 && finished && warnings == 0)
                ? 0
                : 1;
 }

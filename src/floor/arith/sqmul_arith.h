@@ -1,7 +1,9 @@
-// Bit-accurate golden models of the square-and-multiply designs (formats/sqmul_formats.h), plain
-// C++: cos^n exact up to the floors of their products. Left to right with one multiplier (the
-// baseline, golden_sqmul) and right to left with two (golden_sqmul_r2l); both on the Q1.18 word
-// by default, or on Q1.p_frac for the word-length study (p_frac in [p_frac_min, p_frac_max]).
+// The bit-exact functions of the square-and-multiply designs (ours; formats/sqmul_formats.h), plain
+// C++ written from the format table, not from the blocks: cos^n exact up to the floors of their
+// products. Left to right with one multiplier (the baseline, golden_sqmul: the golden model the
+// device is checked against, and what its fast model, the TLM wrapper and the pipeline's fast model
+// call; the floor, docs/layers.md) and right to left with two (golden_sqmul_r2l); both on the Q1.18
+// word by default, or on Q1.p_frac for the word-length study (p_frac in [p_frac_min, p_frac_max]).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-#include "golden/sqmul_golden.h"
+#include "arith/sqmul_arith.h"
 
 #include <algorithm>
 #include <stdexcept>
