@@ -25,7 +25,7 @@ void add_scene_options(CLI::App& app, options& o) {
 
 void add_device_options(CLI::App& app, options& o) {
     const std::string g = "Device";
-    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared, sqmul (--sweep: default all of the grid's)")
+    app.add_option("--device", o.device, "specular device: patent, minimax, rom_matched, ua22802, squared, sqmul (default sqmul; --sweep: default all of the grid's)")
         ->check(CLI::IsMember({"patent", "minimax", "rom_matched", "ua22802", "squared", "sqmul", "all"}))->group(g);
     app.add_option("--mode", o.mode, "overflow mode of the device's ADD11")
         ->check(CLI::IsMember({"saturate", "wrap"}))->group(g);

@@ -36,7 +36,7 @@ struct options {
     std::string length = "fixed", degree = "cubic", eval = "horner", set = "case1", div3 = "shift_add";
     std::string unit = "stepped";       // the geometry side's unit: stepped or scratch
     plan_config pc;                     // the numeric and boolean settings, defaults from pipeline.h
-    std::string device = "patent", mode = "saturate";
+    std::string device = "sqmul", mode = "saturate";  // the device table's pick for the pipeline (docs/devices.md)
     bool device_given = false;          // --sweep: without --device, the grid's devices
     bool sim = true, images = true;
     std::string abstraction = "block";  // the SystemC pipeline's level: block or fast (interp/abstraction.h)
