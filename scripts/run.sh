@@ -17,11 +17,11 @@ start=$SECONDS
 took() { echo "run.sh: $1 took $(( (SECONDS - $2) / 60 )) min $(( (SECONDS - $2) % 60 )) s"; }
 scripts/setup.sh plots  # matplotlib for the figures of run.d/30, 40 and 70
 took setup "$start"
-# The programs the steps run, not the test suites (scripts/test.sh builds and runs those).
+# The programs the steps run (every $SHADING_BIN/<program> they name), not the test suites
+# (scripts/test.sh builds and runs those).
 t=$SECONDS
-scripts/build.sh --studies ua60553_tb ua22802_tb squared_tb interp_coef_tb interp_fd_tb interp_horner_tb \
-                           interp_line_tb render_reference render_pipeline accuracy_study generator_search \
-                           head_study interp_study
+mapfile -t programs < <(grep -oh 'SHADING_BIN/[a-z0-9_]*' scripts/run.d/*.sh | sed 's|SHADING_BIN/||' | sort -u)
+scripts/build.sh --studies "${programs[@]}"
 took build "$t"
 mkdir -p out traces
 export SHADING_BIN="$PWD/build/bin" SHADING_OUT="$PWD/out" SHADING_SUMMARY="$PWD/out/summary.tsv"
