@@ -311,7 +311,7 @@ std::optional<int> render_pipeline(int argc, char** argv) {
     FUZZ_CHECK(in({"case1", "case2"}, o.set), "--set '%s'", o.set.c_str());
     FUZZ_CHECK(in({"shift_add", "exact"}, o.div3), "--div3 '%s'", o.div3.c_str());
     FUZZ_CHECK(device(o.device) || o.device == "all", "--device '%s'", o.device.c_str());
-    FUZZ_CHECK(o.device_given || o.device == "patent", "--device '%s' without --device", o.device.c_str());
+    FUZZ_CHECK(o.device_given || o.device == "sqmul", "--device '%s' without --device", o.device.c_str());
     FUZZ_CHECK(in(modes, o.mode), "--mode '%s'", o.mode.c_str());
     FUZZ_CHECK(in({"stepped", "scratch"}, o.unit), "--unit '%s'", o.unit.c_str());
     FUZZ_CHECK(within(o.pc.above_slack, -1, int(shading::interp::m_max)), "--above-slack %d", o.pc.above_slack);
