@@ -14,6 +14,7 @@
 #include "formats/interp_formats.h"
 #include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
+#include "formats/sqmul_formats.h"
 #include "formats/squared_formats.h"
 #include "formats/ua22802_formats.h"
 #include "formats/ua60553_formats.h"
@@ -65,6 +66,7 @@ TEST(FormatTable, ReadmeRowsMatchSrcFormats) {
         {"`a`: UA 60553 / UA 22802 ROM / squared device", {ua60553::a_fmt, ua22802::a_fmt, squared::a_fmt}},
         {"BRDF (ADD11 out)", {spec::brdf_fmt}},
         {"squared device: q and each square (RG_SQ)", {squared::q_fmt}},
+        {"square-and-multiply device: P and each product (RG_P)", {sqmul::p_fmt}},
         {"outputs 25–27", {spec::out_fmt}},
         {"interpolation samples I1..I4, pixels", {interp::sample_fmt}},
         {"cell unit: lattice registers, column buffers", {interp::sample_fmt}},  // cell_channel's WI
