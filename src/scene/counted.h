@@ -15,18 +15,24 @@ struct op_counts {
     uint64_t sqrt = 0;  // square roots
     uint64_t add = 0;   // additions and subtractions
     uint64_t cmp = 0;   // comparisons (max/clamp), reported apart, not "long" operations
-    // The long operations the paper's speed claim is about.
+    // Of the divisions and square roots above, the pairs that form one reciprocal length 1/sqrt(x)
+    // (normalize): a reciprocal square root unit performs each pair as one long operation.
+    uint64_t rsqrt = 0;
+    // The long operations the paper's speed claim is about, in the textbook convention (a square
+    // root and a division per normalisation) and with a reciprocal square root as one operation.
     uint64_t long_ops() const { return mul + div + sqrt; }
+    uint64_t long_ops_rsqrt() const { return long_ops() - rsqrt; }
     op_counts& operator+=(const op_counts& o) {
         mul += o.mul;
         div += o.div;
         sqrt += o.sqrt;
         add += o.add;
         cmp += o.cmp;
+        rsqrt += o.rsqrt;
         return *this;
     }
     bool operator==(const op_counts& o) const {
-        return mul == o.mul && div == o.div && sqrt == o.sqrt && add == o.add && cmp == o.cmp;
+        return mul == o.mul && div == o.div && sqrt == o.sqrt && add == o.add && cmp == o.cmp && rsqrt == o.rsqrt;
     }
 };
 
@@ -37,12 +43,13 @@ inline op_counts times(op_counts c, uint64_t k) {
     c.sqrt *= k;
     c.add *= k;
     c.cmp *= k;
+    c.rsqrt *= k;
     return c;
 }
 
 inline std::ostream& operator<<(std::ostream& os, const op_counts& c) {
     return os << "mul " << c.mul << ", div " << c.div << ", sqrt " << c.sqrt << ", add " << c.add
-              << ", cmp " << c.cmp;
+              << ", cmp " << c.cmp << ", of which 1/sqrt pairs " << c.rsqrt;
 }
 
 class cnum {
@@ -87,9 +94,10 @@ struct cvec3 {
     friend cvec3 operator*(cnum s, const cvec3& a) { return {s * a.x, s * a.y, s * a.z}; }
 };
 inline cnum dot(const cvec3& a, const cvec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-// One square root, one division (the reciprocal length) and three multiplications.
+// One square root, one division (the reciprocal length: one 1/sqrt pair) and three multiplications.
 inline cvec3 normalize(const cvec3& a) {
     cnum one(1.0, a.x.counts());
+    if (op_counts* c = a.x.counts()) ++c->rsqrt;
     return (one / sqrt(dot(a, a))) * a;
 }
 

@@ -215,17 +215,22 @@ pixel_geometry geometry_at(const rasterised& r, unsigned x, unsigned y, op_count
 }
 
 void add_view_and_lights(const rasterised& r, pixel_geometry& g, op_counts* ops) {
+    auto c = [ops](double v) { return cnum(v, ops); };
+    add_view_and_lights(r, g, ops, [&](const glm::dvec3& e) { return normalize(cvec3{c(e.x), c(e.y), c(e.z)} - g.p); });
+}
+
+void add_view_and_lights(const rasterised& r, pixel_geometry& g, op_counts* ops,
+                         const std::function<cvec3(const glm::dvec3&)>& towards) {
     const world& s = *r.src;
     auto c = [ops](double v) { return cnum(v, ops); };
     auto cv = [&c](const glm::dvec3& v) { return cvec3{c(v.x), c(v.y), c(v.z)}; };
     // V: towards the eye (perspective), or the constant view direction (orthographic, no work).
-    g.v = s.cam.orthographic() ? cv(r.view_dir) : normalize(cv(r.eye) - g.p);
+    g.v = s.cam.orthographic() ? cv(r.view_dir) : towards(r.eye);
     g.l.clear();
     g.h.clear();
     for (const auto& l : s.lights) {
         // L: a directional light's unit vector is a frame constant (normalised here, uncounted).
-        const cvec3 lv = l.type == light::kind::directional ? cv(glm::normalize(l.vector))
-                                                             : normalize(cv(l.vector) - g.p);
+        const cvec3 lv = l.type == light::kind::directional ? cv(glm::normalize(l.vector)) : towards(l.vector);
         g.l.push_back(lv);
         g.h.push_back(normalize(lv + g.v));
     }

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "scene/counted.h"
@@ -91,5 +92,9 @@ pixel_geometry geometry_at(const rasterised& r, unsigned x, unsigned y, op_count
 // a point): the per-pixel geometry and the scan-line stepper (scanline.h) share it, so both
 // baselines derive the shading vectors with the same counted operations.
 void add_view_and_lights(const rasterised& r, pixel_geometry& g, op_counts* ops);
+// The same with the unit vector from the point towards a world position e (the eye, a point light)
+// given by `towards(e)`, for a unit that forms it without P (scanline.h: from Q E - U_P).
+void add_view_and_lights(const rasterised& r, pixel_geometry& g, op_counts* ops,
+                         const std::function<cvec3(const glm::dvec3&)>& towards);
 
 }  // namespace shading::scene

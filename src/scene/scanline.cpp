@@ -46,6 +46,7 @@ void span_stepper::setup(int32_t t, op_counts* ops) {
 
 pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops, bool down) {
     const int32_t t = r_.tri[r_.index(x, y)];
+    if (stats_.points > 0 && !(y > y_ || (y == y_ && x > x_))) raster_ = false;
     if (!grad_[static_cast<std::size_t>(t)].ready) setup(t, ops);
     gradients& g = grad_[static_cast<std::size_t>(t)];
     auto c = [ops](double v) { return cnum(v, ops); };
@@ -72,9 +73,11 @@ pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops, bool dow
         if (perspective_) q_ = step(q_, g.q);
         ++stats_.steps;
     } else if (walk_ && g.visited) {
-        // Edge walking from the triangle's last point: + (y - y') b (an add a line; a subtraction a
-        // line upwards, where lines are not rendered top to bottom), + (x - x') a (popcount(|x - x'|)
-        // adds; a subtraction leftwards).
+        // Edge walking from the triangle's last point. In raster order a walker steps its live
+        // triangles line by line: + (y - y') b is an add a line, + (x - x') a popcount(|x - x'|) adds
+        // (a subtraction leftwards or upwards). Once the points leave raster order (the cells' bands
+        // and levels) the walker jumps: each of (y - y') b and (x - x') a is a multiplication by a
+        // small integer and an add.
         const int dy = int(y) - int(g.last_y);
         const unsigned lines = unsigned(dy < 0 ? -dy : dy);
         const int dx = int(x) - int(g.last_x);
@@ -82,12 +85,20 @@ pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops, bool dow
         auto walk = [&](double v, const plane3& pl) {
             cnum out = c(v);
             if (dy != 0) {
-                out = out + c(dy * pl.b);
-                if (ops) ops->add += lines - 1;
+                if (raster_) {
+                    out = out + c(dy * pl.b);
+                    if (ops) ops->add += lines - 1;
+                } else {
+                    out = out + c(double(dy)) * c(pl.b);
+                }
             }
             if (dx != 0) {
-                out = out + c(dx * pl.a);
-                if (ops) ops->add += ones - 1;
+                if (raster_) {
+                    out = out + c(dx * pl.a);
+                    if (ops) ops->add += ones - 1;
+                } else {
+                    out = out + c(double(dx)) * c(pl.a);
+                }
             }
             return out;
         };
@@ -124,8 +135,20 @@ pixel_geometry span_stepper::at(unsigned x, unsigned y, op_counts* ops, bool dow
     out.object = r_.setups[static_cast<std::size_t>(t)].object;
     // U_N is Q times the perspective-correct normal: normalising removes Q, so no division here.
     out.n = normalize(rb(un_));
-    if (need_p_) out.p = perspective_ ? (c(1.0) / rebind(q_)) * rb(up_) : rb(up_);
-    add_view_and_lights(r_, out, ops);  // V, L, H as the per-pixel geometry derives them
+    if (perspective_) {
+        // V and a point light's L from Q E - U_P = Q (E - P), Q > 0: the direction of E - P without
+        // forming P = U_P / Q (3 mul, 3 add instead of a division and 3 mul). P's value is kept,
+        // uncounted: no shading path reads it.
+        const double inv_q = 1.0 / q_.value();
+        out.p = {c(up_.x.value() * inv_q), c(up_.y.value() * inv_q), c(up_.z.value() * inv_q)};
+        const cnum q = rebind(q_);
+        const cvec3 up = rb(up_);
+        auto towards = [&](const glm::dvec3& e) { return normalize(q * cvec3{c(e.x), c(e.y), c(e.z)} - up); };
+        add_view_and_lights(r_, out, ops, towards);
+    } else {
+        if (need_p_) out.p = rb(up_);
+        add_view_and_lights(r_, out, ops);  // V, L, H as the per-pixel geometry derives them
+    }
     return out;
 }
 

@@ -1,6 +1,7 @@
-// Scan-line geometry: the interpolated attributes stepped along the raster line with additions, as a
-// scan-line Phong renderer does (Bishop and Weimer, "Fast Phong Shading", 1986; every textbook
-// scan-line Phong), instead of geometry_at's barycentrics from scratch at every pixel. Every
+// Scan-line geometry: the interpolated attributes stepped along the raster line with additions, as
+// Phong's own renderer does (B. T. Phong, "Illumination for Computer Generated Pictures", CACM 1975:
+// the normal interpolated along the span and normalised at every pixel), instead of geometry_at's
+// barycentrics from scratch at every pixel. Every
 // operation counted (counted.h), so the scan-line Phong reference and the hardware's geometry side
 // are charged what a stepping geometry unit does:
 //
@@ -19,13 +20,17 @@
 //    triangle's values from line to line, so only a triangle's first run starts from a x + b y + c;
 //    every later run start is reached from the triangle's last point (x', y') by additions:
 //    (y - y') b, one add a line per component (down, or up where lines are not rendered top to
-//    bottom), and (x - x') a, popcount(|x - x'|) adds. No long operation; the adds are a lower
-//    estimate of a walker that steps every active triangle on every line.
-//  - per point: perspective-correct P = U_P / Q (one division, 3 mul; orthographic Q = 1: none);
-//    N = normalize(U_N) (U_N / Q points the same way, so no division for N); V, L, H as geometry_at.
+//    bottom), and (x - x') a, popcount(|x - x'|) adds, while the points come in raster order (the
+//    adds are a lower estimate of a walker that steps every active triangle on every line); once
+//    they leave it (the cells' bands and levels), a jump: (y - y') b and (x - x') a a multiplication
+//    by a small integer and an add each.
+//  - per point: N = normalize(U_N) (U_N / Q points the same way, so no division for N); with a
+//    perspective camera V = normalize(Q E - U_P) (3 mul, 3 add: Q E - U_P = Q (E - P), so P = U_P / Q
+//    is never formed), a point light's L the same; H as geometry_at. Each normalize is one 1/sqrt
+//    pair (counted.h: a square root and a division, or one reciprocal square root).
 //
-// The values equal geometry_at's to rounding (different association): the scan-line Phong image
-// equals the per-pixel one within ~1e-12 levels. Positions, N, V, L and H as geometry_at.
+// The values equal geometry_at's to rounding (different association): the Phong 1975 image equals
+// the per-pixel one within ~1e-12 levels. Positions, N, V, L and H as geometry_at.
 #pragma once
 
 #include <array>
@@ -79,6 +84,7 @@ private:
     unsigned x_ = 0, y_ = 0;
     cnum q_;
     cvec3 un_, up_;
+    bool raster_ = true;  // every point so far came after the one before it in raster order
     stepping_stats stats_;
 };
 

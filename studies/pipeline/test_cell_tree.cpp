@@ -203,7 +203,8 @@ TEST_F(CellTreeHead, BookkeepingFromTheFrame) {
         EXPECT_EQ(cell_long_ops(r, f, dev, n, walk, true).long_ops(), emulated_long_ops(r, e, dev, n, walk).long_ops())
             << walk;
     }
-    EXPECT_EQ(cell_long_ops(r, f, dev, n, true, false).long_ops(), cell_long_ops(r, f, dev, n, true, true).long_ops());
+    // Walked in the scheme's order the walker jumps (a multiplication each, scanline.h): dearer than raster order.
+    EXPECT_GT(cell_long_ops(r, f, dev, n, true, false).long_ops(), cell_long_ops(r, f, dev, n, true, true).long_ops());
     // Not walked, the scheme's order starts more runs than raster order.
     EXPECT_GT(cell_long_ops(r, f, dev, n, false, false).long_ops(), cell_long_ops(r, f, dev, n, false, true).long_ops());
 }

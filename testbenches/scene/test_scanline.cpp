@@ -49,12 +49,14 @@ world one_triangle(bool perspective) {
     return s;
 }
 
+// Every square root in these cases is a normalisation's, so each is one 1/sqrt pair with a division.
 op_counts counts(uint64_t mul, uint64_t div, uint64_t sqrt, uint64_t add) {
     op_counts c;
     c.mul = mul;
     c.div = div;
     c.sqrt = sqrt;
     c.add = add;
+    c.rsqrt = sqrt;
     return c;
 }
 
@@ -129,10 +131,10 @@ TEST(ScanlinePhong, FourPixelSpanCountedByHand) {
 // U_N, U_P (3 components each) and Q = 1/w are stepped.
 //   scan-line: set-up U_N 27 mul 18 add, U_P 27 mul 18 add, Q 3 coefficients x 2 add = 6 add;
 //              run start 7 x (2 mul, 2 add) = 14 mul, 14 add; 3 steps x 7 add = 21 add;
-//              per pixel: normalise N (6 mul, 2 add, sqrt, div); P = U_P x (1/Q) (1 div, 3 mul);
-//              V = eye - P (3 add) normalised (6 mul, 2 add, sqrt, div); H (3 add; 6 mul, 2 add, sqrt,
-//              div) = 21 mul, 12 add, 3 sqrt, 4 div a pixel.
-//              Total: mul 54 + 14 + 84 = 152, add 42 + 14 + 21 + 48 = 125, sqrt 12, div 16 (180 long).
+//              per pixel: normalise N (6 mul, 2 add, sqrt, div); V = Q eye - U_P (3 mul, 3 add: no
+//              P = U_P / Q) normalised (6 mul, 2 add, sqrt, div); H (3 add; 6 mul, 2 add, sqrt,
+//              div) = 21 mul, 12 add, 3 sqrt, 3 div a pixel.
+//              Total: mul 54 + 14 + 84 = 152, add 42 + 14 + 21 + 48 = 125, sqrt 12, div 12 (176 long).
 //   from scratch, per pixel (test_scene's GeometryCountsHandCounted): mul 6 + 3 + 9 + 6 + 9 + 6 + 6 = 45,
 //              add 6 + 2 + 6 + 2 + 6 + 3 + 2 + 3 + 2 = 32, div 4, sqrt 3 (52 long); four: 180, 128, 16, 12.
 TEST(ScanlinePhong, PerspectiveSpanCountedByHand) {
@@ -154,7 +156,7 @@ TEST(ScanlinePhong, PerspectiveSpanCountedByHand) {
         const pixel_geometry b = geometry_at(r, x, y, &scratch);
         expect_same_geometry(a, b);
     }
-    EXPECT_EQ(stepped, counts(152, 16, 12, 125)) << stepped;
+    EXPECT_EQ(stepped, counts(152, 12, 12, 125)) << stepped;
     EXPECT_EQ(scratch, counts(180, 16, 12, 128)) << scratch;
 }
 
@@ -239,46 +241,51 @@ TEST(ScanlinePhong, HeadImageEqualsPerPixelPhong) {
     EXPECT_EQ(steps.points, a.pixels);
     EXPECT_EQ(steps.run_starts + steps.steps, steps.points);
     // Perspective camera, one directional light: per triangle set-up 2 x 27 mul, per run start
-    // 7 x 2 mul, per pixel 1 div + 3 mul (P) and three normalisations of 8 long operations each.
-    EXPECT_EQ(a.geometry.long_ops(), 54 * steps.triangle_setups + 14 * steps.run_starts + 28 * steps.points);
+    // 7 x 2 mul, per pixel 3 mul (Q eye) and three normalisations of 8 long operations each.
+    EXPECT_EQ(a.geometry.long_ops(), 54 * steps.triangle_setups + 14 * steps.run_starts + 27 * steps.points);
+    // With a reciprocal square root unit each normalisation is 7.
+    EXPECT_EQ(a.geometry.long_ops_rsqrt(), 54 * steps.triangle_setups + 14 * steps.run_starts + 24 * steps.points);
     EXPECT_EQ(b.geometry.long_ops(), 52 * b.pixels);
 }
 
 // ---- Edge walking (span_stepper with walk_edges) ----
 
-// The sparse points above with the triangle's values walked from its last point instead of a new
-// a x + b y + c. Line 0: points 0, 4, 6, then 1: the run start at 1 is walked from 6 (x - x' = -5:
-// popcount 2 adds per component, no multiplication).
-//   set-up 27 mul 18 add; run start at 0: 6 mul 6 add; steps 2 x 3 add; walk 3 x 2 add; per point
-//   12 mul, 7 add, 2 sqrt, 2 div x 4. mul 27 + 6 + 48 = 81, add 18 + 6 + 6 + 6 + 28 = 64, sqrt 8, div 8.
-// Line 1: 0 is walked from (1, 0) (one line down: 1 add; x - x' = -1: 1 add), then d = 3 (2 adds):
-//   3 x (2 + 2) add + 2 x (12 mul, 7 add, 2 sqrt, 2 div): mul 24, add 26, sqrt 4, div 4.
+// Sparse points in raster order with the triangle's values walked from its last point instead of a
+// new a x + b y + c. Line 0: points 0, 4, 6:
+//   set-up 27 mul 18 add; run start at 0: 6 mul 6 add; steps 2 x 3 add; per point 12 mul, 7 add,
+//   2 sqrt, 2 div x 3. mul 27 + 6 + 36 = 69, add 18 + 6 + 6 + 21 = 51, sqrt 6, div 6.
+// Line 1: 0 is walked from (6, 0) (one line down: 1 add; x - x' = -6: popcount 2 adds), then d = 3
+// (2 adds): 3 x (3 + 2) add + 2 x (12 mul, 7 add, 2 sqrt, 2 div): mul 24, add 29, sqrt 4, div 4.
 // Line 4 (x = 0..2): 0 walked from (3, 1), three lines down (3 adds) and x - x' = -3 (2 adds):
 //   3 x 5 add + 12 mul, 7 add, 2 sqrt, 2 div: mul 12, add 22, sqrt 2, div 2.
+// Then point 0 of line 2, behind (0, 4) in raster order: from there on the walker jumps, each of
+// (y - y') b and (x - x') a a multiplication by a small integer and an add per component:
+//   3 x (2 mul, 2 add) + 12 mul, 7 add, 2 sqrt, 2 div: mul 18, add 13.
 TEST(ScanlineEdgeWalk, SparseStepsCountedByHand) {
     const world s = one_triangle(false);
     const rasterised r = rasterise(s);
     span_stepper st(r, true);
-    EXPECT_EQ(step_through(st, r, 0, {0, 4, 6, 1}), counts(81, 8, 8, 64));
-    EXPECT_EQ(step_through(st, r, 1, {0, 3}), counts(24, 4, 4, 26));
+    EXPECT_EQ(step_through(st, r, 0, {0, 4, 6}), counts(69, 6, 6, 51));
+    EXPECT_EQ(step_through(st, r, 1, {0, 3}), counts(24, 4, 4, 29));
     EXPECT_EQ(step_through(st, r, 4, {0}), counts(12, 2, 2, 22));
+    EXPECT_EQ(step_through(st, r, 2, {1}), counts(18, 2, 2, 13));
     EXPECT_EQ(st.stats().triangle_setups, 1u);
     EXPECT_EQ(st.stats().run_starts, 4u);
     EXPECT_EQ(st.stats().walked_starts, 3u);
 }
 
 // Lines not rendered top to bottom (a scheme that renders the even lines first, then the odd ones)
-// walk upwards as cheaply: line 2's point 0 is a run start (6 mul, 6 add); line 1's point 0 is
-// walked one line up from it (1 add per component: - b); line 0's point 2 one line up and two
-// pixels right (x - x' = 2, a shift: 1 add), 2 adds per component. Each point 12 mul, 7 add,
-// 2 sqrt, 2 div; the values are geometry_at's (step_through).
+// leave raster order, so the walker jumps: line 2's point 0 is a run start (6 mul, 6 add); line 1's
+// point 0 is walked one line up from it ((y - y') b: 1 mul, 1 add per component); line 0's point 2
+// one line up and two pixels right (2 mul, 2 add per component). Each point 12 mul, 7 add, 2 sqrt,
+// 2 div; the values are geometry_at's (step_through).
 TEST(ScanlineEdgeWalk, UpwardsCountedByHand) {
     const world s = one_triangle(false);
     const rasterised r = rasterise(s);
     span_stepper st(r, true);
     EXPECT_EQ(step_through(st, r, 2, {0}), counts(27 + 6 + 12, 2, 2, 18 + 6 + 7));
-    EXPECT_EQ(step_through(st, r, 1, {0}), counts(12, 2, 2, 3 + 7));
-    EXPECT_EQ(step_through(st, r, 0, {2}), counts(12, 2, 2, 6 + 7));
+    EXPECT_EQ(step_through(st, r, 1, {0}), counts(3 + 12, 2, 2, 3 + 7));
+    EXPECT_EQ(step_through(st, r, 0, {2}), counts(6 + 12, 2, 2, 6 + 7));
     EXPECT_EQ(st.stats().run_starts, 3u);
     EXPECT_EQ(st.stats().walked_starts, 2u);
 }
@@ -328,8 +335,8 @@ TEST(ScanlineTransposed, HeadGeometryBitForBit) {
 }
 
 // On the head (perspective: U_N, U_P and Q walked) the walked values still give the per-pixel
-// image to rounding, and the walked run starts cost no long operation: set-ups 54, evaluated run
-// starts 14, per pixel 28, as the hand counts above split them.
+// image to rounding, and the walked run starts (raster order) cost no long operation: set-ups 54,
+// evaluated run starts 14, per pixel 27, as the hand counts above split them.
 TEST(ScanlineEdgeWalk, HeadImageEqualsPerPixelPhong) {
     const world s = builtin_scene("head", SHADING_SOURCE_DIR, 256, 256);
     const rasterised r = rasterise(s);
@@ -342,6 +349,6 @@ TEST(ScanlineEdgeWalk, HeadImageEqualsPerPixelPhong) {
     EXPECT_LT(d.worst, 1e-8);
     EXPECT_GT(steps.walked_starts, steps.triangle_setups);
     EXPECT_EQ(a.geometry.long_ops(),
-              54 * steps.triangle_setups + 14 * (steps.run_starts - steps.walked_starts) + 28 * steps.points);
+              54 * steps.triangle_setups + 14 * (steps.run_starts - steps.walked_starts) + 27 * steps.points);
     EXPECT_EQ(steps.run_starts - steps.walked_starts, steps.triangle_setups);  // one evaluated start a triangle
 }

@@ -398,6 +398,7 @@ TEST(SceneShade, GeometryCountsHandCounted) {
     hand.add = 6 + 2 + 6 + 2 + 6 + 3 + 2 + 3 + 2;
     hand.div = 1 + 1 + 1 + 1;
     hand.sqrt = 3;
+    hand.rsqrt = 3;  // N, V and H: each square root is a normalisation's, one 1/sqrt pair with a division
     EXPECT_EQ(ops, hand) << ops;
 }
 
