@@ -38,6 +38,8 @@ LABELS = {
     "trial_inflection": "trial law n'\u2208[2,4), inflection a (real)",
     "trial_fitted": "trial law n'\u2208[2,4), a fitted on the head (real)",
     "schlick": "Schlick",
+    "lyon": "Lyon, power 2^floor(log2 n)",
+    "lyon_g4": "Lyon, power 4",
     "cosk": "(cos k\u03b3)^(n/k) as printed",
     "cosk_k2": "(cos k\u03b3)^(n/k\u00b2) re-derived",
 }
@@ -53,6 +55,8 @@ STYLE = {
     "trial_inflection": dict(color="tab:brown", lw=1.0, ls="--"),
     "trial_fitted": dict(color="tab:pink", lw=1.0),
     "schlick": dict(color="tab:purple", lw=1.0),
+    "lyon": dict(color="teal", lw=1.0),
+    "lyon_g4": dict(color="teal", lw=1.0, ls="--"),
     "cosk": dict(color="tab:gray", lw=1.0, ls=":"),
     "cosk_k2": dict(color="tab:orange", lw=1.0),
 }

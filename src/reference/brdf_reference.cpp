@@ -25,6 +25,19 @@ double cos_k_gamma(double c, double n, double k) {
     return std::pow(std::cos(kg), n / k);
 }
 
+unsigned lyon_gamma(double n) {
+    unsigned g = 1;
+    while (g <= n / 2.0 && g < (1u << 30)) g *= 2;
+    return g;
+}
+
+double lyon_power(double cos_nh, double n, unsigned gamma) {
+    if (gamma == 0) gamma = lyon_gamma(n);
+    const double dd = 2.0 - 2.0 * cos_nh;  // D.D for unit N and H
+    const double base = std::max(0.0, 1.0 - (n / gamma) * dd / 2.0);
+    return std::pow(base, static_cast<double>(gamma));
+}
+
 double real_datapath_out(double a, double c, double ksi) {
     return std::clamp(quadratic(c, a), 0.0, 1.0) * ksi;
 }

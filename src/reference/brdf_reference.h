@@ -1,6 +1,6 @@
 // Real-valued references for the specular term: the exact BRDF, the quadratic
 // model with the exact a(n) (the quadratic-BRDF paper formula 7), the patent's linear a (UA 60553 formula 10),
-// and the prior approximations of the quadratic-BRDF paper (Schlick, (cos k*gamma)^(n/k)).
+// and the prior approximations of the quadratic-BRDF paper (Schlick, (cos k*gamma)^(n/k), Lyon).
 #pragma once
 
 namespace shading::ref {
@@ -11,6 +11,14 @@ double a_patent_formula(double n);                  // 0.786 n + 0.5 as printed 
 double quadratic(double c, double a);               // q(c) = c + a (c^2 - c)
 double schlick(double c, double n);                 // c / (n - n c + c)
 double cos_k_gamma(double c, double n, double k);   // cos(k * acos c)^(n/k), 0 beyond k*gamma = pi/2
+// Lyon (Apple Technical Report #43, 1993) as the quadratic-BRDF paper restates it: cos^n from the chord
+// D = N - H, N.H = 1 - D.D/2 (for unit vectors D.D = 2 - 2 cos), and the power as
+// max(0, 1 - (n/gamma) D.D/2)^gamma, gamma = 2^k reached by k squarings (the report's f_k(x) =
+// (1 - x/2^k)^(2^k) at x = (n/2) D.D). gamma = 0: lyon_gamma(n). Equals cos^n when gamma = n.
+double lyon_power(double cos_nh, double n, unsigned gamma);
+// gamma chosen from n: the largest power of two not above n (1 for n < 2), so n/gamma lies in [1, 2),
+// the lobe ends at cos = 1 - gamma/n >= 0 and floor(log2 n) squarings, as the squared-quadratic law's k.
+unsigned lyon_gamma(double n);
 
 // The UA 60553 datapath in real numbers for the same input codes: BRDF clamped to [0, 1]
 // (saturate mode) times k_s*I, no rounding anywhere.

@@ -68,6 +68,11 @@ std::vector<method> methods(const std::vector<double>& trial_a) {
          [c_of, &trial_a](unsigned n, uint64_t code) { return trial_law(c_of(code), trial_a[n], n); }},
         {"schlick", "Schlick c/(n - n c + c)",
          [c_of](unsigned n, uint64_t code) { return ref::schlick(c_of(code), n); }},
+        // Lyon's chord form (reference lyon_power): gamma from n, and a small fixed gamma = 4.
+        {"lyon", "Lyon max(0, 1 - (n/g) D.D/2)^g, g = 2^floor(log2 n)",
+         [c_of](unsigned n, uint64_t code) { return ref::lyon_power(c_of(code), n, 0); }},
+        {"lyon_g4", "Lyon max(0, 1 - (n/4) D.D/2)^4",
+         [c_of](unsigned n, uint64_t code) { return ref::lyon_power(c_of(code), n, 4); }},
         {"cosk", "(cos k gamma)^(n/k) as printed",
          [c_of](unsigned n, uint64_t code) { return ref::cos_k_gamma(c_of(code), n, cosk_k_for(n)); }},
         {"cosk_k2", "(cos k gamma)^(n/k^2) re-derived",
