@@ -230,20 +230,37 @@ std::vector<cvec3> fast_phong_renderer::directions(const triangle_setup& ts, con
     return out;
 }
 
-// The dropped third-order term bounded over the part's screen box, in 8-bit levels after lighting.
+// The error estimate, in 8-bit levels after lighting, per light: 255 max_c(k_d I) D + 255 max_c(k_s I)
+// n s^(n-1) S, with D and S the largest |third-order term| of the diffuse and specular expressions at
+// the part's vertices and edge midpoints (its farthest points from the centroid: a homogeneous cubic
+// grows as the cube of the distance along each ray), s the largest expanded N.H at those points and
+// the centroid (clamped to [0, 1]): the slope of s^n there.
 cnum fast_phong_renderer::error_estimate(const part& p, const material& m, const std::vector<expansion>& e) {
     op_counts* ops = &fs_.setup;
     auto c = [ops](double v) { return cnum(v, ops); };
-    const cnum xc = c(p.xc), yc = c(p.yc);
-    cnum radius = magnitude(c(p.v[0].x) - xc);
+    // Offsets from the centroid: the vertices' (2 add each), the midpoints' (2 add each and a shift).
+    std::array<cpoint, 6> at;
+    for (int i = 0; i < 3; ++i) at[static_cast<std::size_t>(i)] = {c(p.v[i].x) - c(p.xc), c(p.v[i].y) - c(p.yc)};
     for (int i = 0; i < 3; ++i) {
-        if (i > 0) radius = max(radius, magnitude(c(p.v[i].x) - xc));
-        radius = max(radius, magnitude(c(p.v[i].y) - yc));
+        const cpoint& a = at[static_cast<std::size_t>(i)];
+        const cpoint& b = at[static_cast<std::size_t>((i + 1) % 3)];
+        at[static_cast<std::size_t>(3 + i)] = {scaled(a.x + b.x, 0.5), scaled(a.y + b.y, 0.5)};
     }
-    const cnum r2 = radius * radius, r3 = r2 * radius;
-    auto third = [&](const expansion& x) {
-        return (magnitude(c(x.third[0])) + magnitude(c(x.third[1])) + magnitude(c(x.third[2])) +
-                magnitude(c(x.third[3]))) * r3;
+    std::array<cnum, 6> y2, y3;
+    for (std::size_t k = 0; k < 6; ++k) {
+        y2[k] = at[k].y * at[k].y;
+        y3[k] = y2[k] * at[k].y;
+    }
+    // The largest |c0 x^3 + c1 x^2 y + c2 x y^2 + c3 y^3| = |((c0 x + c1 y) x + c2 y^2) x + c3 y^3|
+    // over the six points: 6 mul, 3 add a point.
+    auto cubic = [&](const std::array<double, 4>& k) {
+        cnum worst = c(0.0);
+        for (std::size_t i = 0; i < 6; ++i) {
+            const cpoint& pt = at[i];
+            const cnum v = ((c(k[0]) * pt.x + c(k[1]) * pt.y) * pt.x + c(k[2]) * y2[i]) * pt.x + c(k[3]) * y3[i];
+            worst = i == 0 ? magnitude(v) : max(worst, magnitude(v));
+        }
+        return worst;
     };
     const auto& lights = r_.src->lights;
     cnum total = c(0.0);
@@ -251,12 +268,13 @@ cnum fast_phong_renderer::error_estimate(const part& p, const material& m, const
         // Frame constants: the largest channel's 255 k_d I and 255 k_s I.
         const rgb kdi = full_scale * m.k_d * lights[li].intensity, ksi = full_scale * m.k_s * lights[li].intensity;
         const quadratic& q = e[2 * li + 1].q;
-        const cnum s_max = smaller(magnitude(c(q.t0)) + (magnitude(c(q.t2)) + magnitude(c(q.t1))) * radius +
-                                       (magnitude(c(q.t5)) + magnitude(c(q.t4)) + magnitude(c(q.t3))) * r2,
-                                   c(1.0));
-        const cnum slope = m.n > 1 ? c(double(m.n)) * pow_int(s_max, m.n - 1) : c(1.0);  // d(s^n)/ds at s_max
-        total = total + c(std::max({kdi.x, kdi.y, kdi.z})) * third(e[2 * li]) +
-                c(std::max({ksi.x, ksi.y, ksi.z})) * slope * third(e[2 * li + 1]);
+        cnum s = c(q.t0);
+        for (const cpoint& pt : at)  // Horner's rule: 5 mul, 5 add a point
+            s = max(s, (c(q.t5) * pt.x + c(q.t4) * pt.y + c(q.t2)) * pt.x + (c(q.t3) * pt.y + c(q.t1)) * pt.y + c(q.t0));
+        s = smaller(max(s, c(0.0)), c(1.0));
+        const cnum slope = m.n > 1 ? c(double(m.n)) * pow_int(s, m.n - 1) : c(1.0);
+        total = total + c(std::max({kdi.x, kdi.y, kdi.z})) * cubic(e[2 * li].third) +
+                c(std::max({ksi.x, ksi.y, ksi.z})) * slope * cubic(e[2 * li + 1].third);
     }
     return total;
 }

@@ -39,15 +39,16 @@
 //    per frame) is counted in the shading counts and in fast_phong_stats::table_build.
 //
 // Split variant (budget > 0): a triangle's expansion misses the budget when the estimate of its
-// error, from what the set-up computes, exceeds `budget` 8-bit levels: the dropped third-order term
-// bounded over the part's screen box, sum |c_ijk| R^3 (R the largest |x| or |y| of a vertex from the
-// centroid), per expression, weighted after lighting by 255 max_c(k_d I) for the diffuse term and
-// 255 max_c(k_s I) n s_max^(n-1) for the specular argument (the slope of s^n at s_max, the quadratic's
-// own bound |T0| + (|T1| + |T2|) R + (|T3| + |T4| + |T5|) R^2 clamped to 1), summed over the lights.
-// Higher-order terms are not in the estimate. A part that misses is split into four through its
-// edge midpoints (corners 0, 1, 2, then the middle), recursively to max_depth; each part gets its
-// own expansion (its own centroid, U_N, H), and every part's set-up, judged or kept, is counted.
-// Pixels map to the leaf parts by their screen barycentrics; each part is a triangle to the
+// error, from what its set-up computes, exceeds `budget` 8-bit levels. The estimate, per light:
+//   255 max_c(k_d I) D + 255 max_c(k_s I) n s^(n-1) S,
+// D and S the largest |third-order term| (the first one the expansion drops) of the diffuse and
+// specular expressions at the part's three vertices and three edge midpoints (the cubic grows as the
+// cube of the distance from the centroid, so these far points carry it), and s the largest expanded
+// N.H at those points and the centroid, clamped to [0, 1] (n s^(n-1): the slope of the power there).
+// An estimate, not a bound: higher orders and the held H are not in it. A part that misses is split
+// into four through its edge midpoints (corners 0, 1, 2, then the middle), recursively to max_depth;
+// each part gets its own expansion (its own centroid, U_N, H), and every set-up, judged or kept, is
+// counted. Pixels map to the leaf parts by their screen barycentrics; each part is a triangle to the
 // rasteriser (its coverage not counted), so a span crossing parts pays a run start at each.
 #pragma once
 
