@@ -217,13 +217,13 @@ std::vector<cvec3> fast_phong_renderer::directions(const triangle_setup& ts, con
         p = (g[0] * inv) * cv(m.positions[tri[0]]) + (g[1] * inv) * cv(m.positions[tri[1]]) +
             (g[2] * inv) * cv(m.positions[tri[2]]);
     }
-    // Orthographic with directional lights: V, L and H are frame constants (uncounted).
+    // An orthographic V and a directional L are frame constants (uncounted), and so is H when both are;
+    // H is counted when either carries counts.
     auto frame = [](const glm::dvec3& v) { return cvec3{cnum(v.x, nullptr), cnum(v.y, nullptr), cnum(v.z, nullptr)}; };
-    const cvec3 v = perspective_ ? normalize(cv(r_.eye) - p) : (need_p_ ? cv(r_.view_dir) : frame(r_.view_dir));
+    const cvec3 v = perspective_ ? normalize(cv(r_.eye) - p) : frame(r_.view_dir);
     std::vector<cvec3> out;
     for (const auto& l : s.lights) {
-        const cvec3 lv = l.type == light::kind::point ? normalize(cv(l.vector) - p)
-                                                      : (need_p_ ? cv(glm::normalize(l.vector)) : frame(glm::normalize(l.vector)));
+        const cvec3 lv = l.type == light::kind::point ? normalize(cv(l.vector) - p) : frame(glm::normalize(l.vector));
         out.push_back(lv);
         out.push_back(normalize(lv + v));
     }
@@ -270,7 +270,8 @@ cnum fast_phong_renderer::error_estimate(const part& p, const material& m, const
         const quadratic& q = e[2 * li + 1].q;
         cnum s = c(q.t0);
         for (const cpoint& pt : at)  // Horner's rule: 5 mul, 5 add a point
-            s = max(s, (c(q.t5) * pt.x + c(q.t4) * pt.y + c(q.t2)) * pt.x + (c(q.t3) * pt.y + c(q.t1)) * pt.y + c(q.t0));
+            s = max(s, (c(q.t5) * pt.x + c(q.t4) * pt.y + c(q.t2)) * pt.x + (c(q.t3) * pt.y + c(q.t1)) * pt.y +
+                           c(q.t0));
         s = smaller(max(s, c(0.0)), c(1.0));
         const cnum slope = m.n > 1 ? c(double(m.n)) * pow_int(s, m.n - 1) : c(1.0);
         total = total + c(std::max({kdi.x, kdi.y, kdi.z})) * cubic(e[2 * li].third) +
@@ -319,7 +320,8 @@ int fast_phong_renderer::build_part(const triangle_setup& ts, const gradient_ter
     // Edge midpoints: an add per coordinate and a shift.
     auto mid = [](const cpoint& a, const cpoint& b) { return cpoint{scaled(a.x + b.x, 0.5), scaled(a.y + b.y, 0.5)}; };
     const cpoint m01 = mid(v[0], v[1]), m12 = mid(v[1], v[2]), m02 = mid(v[0], v[2]);
-    const std::array<std::array<cpoint, 3>, 4> kids{{{v[0], m01, m02}, {m01, v[1], m12}, {m02, m12, v[2]}, {m12, m02, m01}}};
+    const std::array<std::array<cpoint, 3>, 4> kids{
+        {{v[0], m01, m02}, {m01, v[1], m12}, {m02, m12, v[2]}, {m12, m02, m01}}};
     for (int k = 0; k < 4; ++k) {
         const int child = build_part(ts, grads, kids[static_cast<std::size_t>(k)], depth + 1, nodes);
         nodes[static_cast<std::size_t>(index)].child[static_cast<std::size_t>(k)] = child;
@@ -449,7 +451,8 @@ void validate(const fast_phong_config& c) {
         throw scene_error("fast Phong: table_bits must be 1..16 (a table of 2..65536 entries), not " +
                           std::to_string(c.table_bits));
     if (!(c.budget >= 0.0) || !std::isfinite(c.budget))
-        throw scene_error("fast Phong: the error budget must be a finite number of 8-bit levels >= 0 (0: no split), not " +
+        throw scene_error("fast Phong: the error budget must be a finite number of 8-bit levels >= 0 (0: no split), "
+                          "not " +
                           std::to_string(c.budget));
     if (c.max_depth > 8)
         throw scene_error("fast Phong: max_depth must be 0..8 (up to 4^8 parts a triangle), not " +
