@@ -108,6 +108,20 @@ void step_run(runner& s, op_counts* ops) {
 struct cpoint {
     cnum x, y;
 };
+// A part's vertex: screen x, y and, where the set-up needs positions, its world position and 1/w.
+struct cvertex {
+    cnum x, y;
+    cvec3 p;
+    cnum q;
+};
+// What the set-up derives at a part's centroid: P, per light L then H, and the inverse lengths it
+// normalised by (1/|eye - P|, per light 1/|light - P| and 1/|L + V|), which the estimate reuses.
+struct centroid_frame {
+    cvec3 p;
+    std::vector<cvec3> dirs;
+    cnum inv_eye;
+    std::vector<cnum> inv_light, inv_half;
+};
 }  // namespace
 
 std::vector<expansion> expand_normalised(const cvec3& u0, const cvec3& ux, const cvec3& uy,
@@ -181,10 +195,14 @@ public:
 
 private:
     void setup_triangle(int32_t t);
-    int build_part(const triangle_setup& ts, const gradient_terms& grads, const std::array<cpoint, 3>& v,
+    int build_part(const triangle_setup& ts, const gradient_terms& grads, const std::array<cvertex, 3>& v,
                    unsigned depth, std::vector<part>& nodes);
-    std::vector<cvec3> directions(const triangle_setup& ts, const std::array<cnum, 3>& g);
-    cnum error_estimate(const part& p, const material& m, const std::vector<expansion>& e);
+    cvertex midpoint(const cvertex& a, const cvertex& b);
+    centroid_frame directions(const triangle_setup& ts, const std::array<cnum, 3>& g);
+    cnum error_estimate(const part& p, const material& m, const std::vector<expansion>& e, const centroid_frame& f,
+                        const std::array<cvertex, 3>& v);
+    cnum held_directions(const centroid_frame& f, const std::array<cvertex, 3>& v, std::vector<cnum>& dl,
+                         std::vector<cnum>& dh);
     rgb shade(const material& m, const std::vector<runner>& run, op_counts* ops);
 
     const rasterised& r_;
@@ -203,39 +221,76 @@ void fast_phong_renderer::build_tables(op_counts* ops) {
 }
 
 // Per light: L, then H = normalize(L + V), at the part's centroid (g: the planes g_i there).
-std::vector<cvec3> fast_phong_renderer::directions(const triangle_setup& ts, const std::array<cnum, 3>& g) {
+centroid_frame fast_phong_renderer::directions(const triangle_setup& ts, const std::array<cnum, 3>& g) {
     op_counts* ops = &fs_.setup;
     auto c = [ops](double v) { return cnum(v, ops); };
     auto cv = [&c](const glm::dvec3& v) { return cvec3{c(v.x), c(v.y), c(v.z)}; };
+    // normalize(a) (counted as counted.h's: 3 mul, 2 add, sqrt, div, 3 mul), keeping 1/|a|.
+    auto unit = [](const cvec3& a, cnum& inv) {
+        inv = cnum(1.0, a.x.counts()) / sqrt(dot(a, a));
+        return inv * a;
+    };
     const world& s = *r_.src;
     const mesh& m = s.objects[ts.object].geometry;
     const auto& tri = m.triangles[ts.triangle];
-    cvec3 p;
+    centroid_frame f;
     if (need_p_) {
         // The perspective-correct position at the centroid: b_i = g_i / sum g, P = sum b_i P_i.
         const cnum inv = c(1.0) / (g[0] + g[1] + g[2]);
-        p = (g[0] * inv) * cv(m.positions[tri[0]]) + (g[1] * inv) * cv(m.positions[tri[1]]) +
-            (g[2] * inv) * cv(m.positions[tri[2]]);
+        f.p = (g[0] * inv) * cv(m.positions[tri[0]]) + (g[1] * inv) * cv(m.positions[tri[1]]) +
+              (g[2] * inv) * cv(m.positions[tri[2]]);
     }
     // An orthographic V and a directional L are frame constants (uncounted), and so is H when both are;
     // H is counted when either carries counts.
     auto frame = [](const glm::dvec3& v) { return cvec3{cnum(v.x, nullptr), cnum(v.y, nullptr), cnum(v.z, nullptr)}; };
-    const cvec3 v = perspective_ ? normalize(cv(r_.eye) - p) : frame(r_.view_dir);
-    std::vector<cvec3> out;
+    const cvec3 v = perspective_ ? unit(cv(r_.eye) - f.p, f.inv_eye) : frame(r_.view_dir);
     for (const auto& l : s.lights) {
-        const cvec3 lv = l.type == light::kind::point ? normalize(cv(l.vector) - p) : frame(glm::normalize(l.vector));
-        out.push_back(lv);
-        out.push_back(normalize(lv + v));
+        cnum inv_l, inv_h;
+        const cvec3 lv =
+            l.type == light::kind::point ? unit(cv(l.vector) - f.p, inv_l) : frame(glm::normalize(l.vector));
+        f.dirs.push_back(lv);
+        f.dirs.push_back(unit(lv + v, inv_h));
+        f.inv_light.push_back(inv_l);
+        f.inv_half.push_back(inv_h);
     }
-    return out;
+    return f;
 }
 
-// The error estimate, in 8-bit levels after lighting, per light: 255 max_c(k_d I) D + 255 max_c(k_s I)
-// n s^(n-1) S, with D and S the largest |third-order term| of the diffuse and specular expressions at
-// the part's vertices and edge midpoints (its farthest points from the centroid: a homogeneous cubic
-// grows as the cube of the distance along each ray), s the largest expanded N.H at those points and
-// the centroid (clamped to [0, 1]): the slope of s^n there.
-cnum fast_phong_renderer::error_estimate(const part& p, const material& m, const std::vector<expansion>& e) {
+// How far the held L and H stray at the part's vertices, to first order: a direction to a point
+// at distance D turns by at most |P_v - P_c| / D, so |dV| <= d / |eye - P_c|, |dL| <= d / |light - P_c|
+// (d = max_v |P_v - P_c|), and H = (L + V)/|L + V| by at most (|dV| + |dL|) / |L + V|. Per light in
+// dl and dh; zero where V and L are constant.
+cnum fast_phong_renderer::held_directions(const centroid_frame& f, const std::array<cvertex, 3>& v,
+                                          std::vector<cnum>& dl, std::vector<cnum>& dh) {
+    op_counts* ops = &fs_.setup;
+    const cnum zero(0.0, ops);
+    const auto& lights = r_.src->lights;
+    dl.assign(lights.size(), zero);
+    dh.assign(lights.size(), zero);
+    if (!need_p_) return zero;
+    cnum d2 = zero;
+    for (int i = 0; i < 3; ++i) {
+        const cvec3 dp = v[i].p - f.p;
+        d2 = i == 0 ? dot(dp, dp) : max(d2, dot(dp, dp));
+    }
+    const cnum d = sqrt(d2);
+    const cnum dv = perspective_ ? d * f.inv_eye : zero;
+    for (std::size_t li = 0; li < lights.size(); ++li) {
+        const bool point = lights[li].type == light::kind::point;
+        if (point) dl[li] = d * f.inv_light[li];
+        dh[li] = (point ? dv + dl[li] : dv) * f.inv_half[li];
+    }
+    return d;
+}
+
+// The error estimate, in 8-bit levels after lighting, per light: 255 max_c(k_d I) (D + |dL|) +
+// 255 max_c(k_s I) n s^(n-1) (S + |dH|), with D and S the largest |third-order term| of the diffuse
+// and specular expressions at the part's vertices and edge midpoints (its farthest points from the
+// centroid: a homogeneous cubic grows as the cube of the distance along each ray), dL and dH the
+// held directions' stray (held_directions), s the largest expanded N.H at those points and the
+// centroid (clamped to [0, 1]): the slope of s^n there.
+cnum fast_phong_renderer::error_estimate(const part& p, const material& m, const std::vector<expansion>& e,
+                                         const centroid_frame& f, const std::array<cvertex, 3>& v) {
     op_counts* ops = &fs_.setup;
     auto c = [ops](double v) { return cnum(v, ops); };
     // Offsets from the centroid: the vertices' (2 add each), the midpoints' (2 add each and a shift).
@@ -262,6 +317,8 @@ cnum fast_phong_renderer::error_estimate(const part& p, const material& m, const
         }
         return worst;
     };
+    std::vector<cnum> dl, dh;
+    held_directions(f, v, dl, dh);
     const auto& lights = r_.src->lights;
     cnum total = c(0.0);
     for (std::size_t li = 0; li < lights.size(); ++li) {
@@ -274,16 +331,28 @@ cnum fast_phong_renderer::error_estimate(const part& p, const material& m, const
                            c(q.t0));
         s = smaller(max(s, c(0.0)), c(1.0));
         const cnum slope = m.n > 1 ? c(double(m.n)) * pow_int(s, m.n - 1) : c(1.0);
-        total = total + c(std::max({kdi.x, kdi.y, kdi.z})) * cubic(e[2 * li].third) +
-                c(std::max({ksi.x, ksi.y, ksi.z})) * slope * cubic(e[2 * li + 1].third);
+        total = total + c(std::max({kdi.x, kdi.y, kdi.z})) * (cubic(e[2 * li].third) + dl[li]) +
+                c(std::max({ksi.x, ksi.y, ksi.z})) * slope * (cubic(e[2 * li + 1].third) + dh[li]);
     }
     return total;
+}
+
+// An edge's screen midpoint: an add per coordinate and a shift. Where positions are needed, its world
+// point, perspective-correct: P = (q_a P_a + q_b P_b) / (q_a + q_b) (6 mul, 4 add, div, 3 mul) and
+// 1/w there, (q_a + q_b) / 2.
+cvertex fast_phong_renderer::midpoint(const cvertex& a, const cvertex& b) {
+    cvertex m{scaled(a.x + b.x, 0.5), scaled(a.y + b.y, 0.5), {}, {}};
+    if (!need_p_) return m;
+    const cnum sum = a.q + b.q;
+    m.p = (cnum(1.0, sum.counts()) / sum) * (a.q * a.p + b.q * b.p);
+    m.q = scaled(sum, 0.5);
+    return m;
 }
 
 // One part's set-up (counted), judged against the budget and split through its edge midpoints when
 // it misses; returns its index in `nodes`.
 int fast_phong_renderer::build_part(const triangle_setup& ts, const gradient_terms& grads,
-                                    const std::array<cpoint, 3>& v, unsigned depth, std::vector<part>& nodes) {
+                                    const std::array<cvertex, 3>& v, unsigned depth, std::vector<part>& nodes) {
     op_counts* ops = &fs_.setup;
     auto c = [ops](double x) { return cnum(x, ops); };
     const int index = static_cast<int>(nodes.size());
@@ -302,25 +371,23 @@ int fast_phong_renderer::build_part(const triangle_setup& ts, const gradient_ter
     for (int i = 0; i < 3; ++i) g[i] = c(ts.plane[i].x) * xc + c(ts.plane[i].y) * yc + c(ts.plane[i].z);
     auto cv = [&c](const glm::dvec3& x) { return cvec3{c(x.x), c(x.y), c(x.z)}; };
     const cvec3 u0 = g[0] * cv(m.normals[tri[0]]) + g[1] * cv(m.normals[tri[1]]) + g[2] * cv(m.normals[tri[2]]);
-    const std::vector<cvec3> dirs = directions(ts, g);
+    const centroid_frame f = directions(ts, g);
     const bool judge = cfg_.budget > 0.0 && depth < cfg_.max_depth;
     const inverse_length s = expand_inverse_length(u0, grads, judge);
     std::vector<expansion> e;
-    for (const cvec3& a : dirs) {
+    for (const cvec3& a : f.dirs) {
         e.push_back(expand_one(s, a, u0, grads, judge));
         p.expr.push_back(e.back().q);
     }
     const material& mat = r_.src->objects[ts.object].mat;
-    const bool split = judge && error_estimate(p, mat, e) > c(cfg_.budget);
+    const bool split = judge && error_estimate(p, mat, e, f, v) > c(cfg_.budget);
     nodes[static_cast<std::size_t>(index)] = p;
     if (!split) {
         ++fs_.parts;
         return index;
     }
-    // Edge midpoints: an add per coordinate and a shift.
-    auto mid = [](const cpoint& a, const cpoint& b) { return cpoint{scaled(a.x + b.x, 0.5), scaled(a.y + b.y, 0.5)}; };
-    const cpoint m01 = mid(v[0], v[1]), m12 = mid(v[1], v[2]), m02 = mid(v[0], v[2]);
-    const std::array<std::array<cpoint, 3>, 4> kids{
+    const cvertex m01 = midpoint(v[0], v[1]), m12 = midpoint(v[1], v[2]), m02 = midpoint(v[0], v[2]);
+    const std::array<std::array<cvertex, 3>, 4> kids{
         {{v[0], m01, m02}, {m01, v[1], m12}, {m02, m12, v[2]}, {m12, m02, m01}}};
     for (int k = 0; k < 4; ++k) {
         const int child = build_part(ts, grads, kids[static_cast<std::size_t>(k)], depth + 1, nodes);
@@ -346,11 +413,14 @@ void fast_phong_renderer::setup_triangle(int32_t t) {
         return u;
     };
     const gradient_terms grads = products(grad(0), grad(1));
-    // The rasteriser's screen vertices: vertex i where g_j = g_k = 0 (uncounted, the rasteriser's).
-    std::array<cpoint, 3> v;
+    // The rasteriser's screen vertices, vertex i where g_j = g_k = 0, and 1/w there, g_i (uncounted,
+    // the rasteriser's); the world positions are the mesh's.
+    std::array<cvertex, 3> v;
     for (int i = 0; i < 3; ++i) {
         const glm::dvec3 h = glm::cross(ts.plane[(i + 1) % 3], ts.plane[(i + 2) % 3]);
-        v[i] = {c(h.x / h.z), c(h.y / h.z)};
+        const glm::dvec3 at(h.x / h.z, h.y / h.z, 1.0);
+        const glm::dvec3& pos = m.positions[tri[i]];
+        v[i] = {c(at.x), c(at.y), {c(pos.x), c(pos.y), c(pos.z)}, c(glm::dot(ts.plane[i], at))};
     }
     std::vector<part>& nodes = parts_[static_cast<std::size_t>(t)];
     const std::size_t leaves_before = fs_.parts;
