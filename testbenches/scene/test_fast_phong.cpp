@@ -267,6 +267,45 @@ TEST(FastPhong, PerspectiveSetupCountedByHand) {
     EXPECT_EQ(fs.run_starts + fs.steps, r.covered_pixels());
 }
 
+// The split variant's set-up on the same frame (orthographic, directional: V, L, H constant, so the
+// held directions cost nothing and stray by nothing). Judging the triangle (budget > 0, depth 0 < 1)
+// adds to the 104 mul, 70 add above:
+//   the third order of 1/|U|: (alpha x + beta y)(c x^2 + 2 delta x y + e y^2) 6 mul 2 add, alpha^2 beta
+//     and alpha beta^2 2 mul, alpha^3, beta^3 2 mul, 3 v = v + 2 v twice 2 add, 3/2 A - 5/2 B 4 x 3 add:
+//     10 mul, 16 add; per expression its four cubic coefficients (10 mul, 6 add): 20 mul, 12 add;
+//   the estimate: offsets of 3 vertices and 3 midpoints (12 add), y^2 and y^3 at the 6 points (12 mul);
+//     the expanded N.H at the 6 points (6 x (5 mul, 5 add), 6 cmp), clamped (2 cmp); its slope
+//     32 s^31 (pow_int: 4 squarings, 4 mul; x 32: 9 mul); two cubics at the 6 points (2 x (36 mul,
+//     18 add, 5 cmp)); (D + 0), (S + 0) 2 add, 255 k_d I D + 255 k_s I slope S and the sum 3 mul 2 add:
+//     mul 12 + 30 + 9 + 72 + 3 = 126, add 12 + 30 + 36 + 4 = 82, cmp 6 + 2 + 10 = 18;
+//   the comparison with the budget: 1 cmp.
+// With a budget far above the error (no split): mul 104 + 10 + 20 + 126 = 260, add 70 + 16 + 12 + 82
+// = 180, cmp 19. With a budget below it and max_depth 1: the midpoints (3 x 2 add) and four parts
+// not judged, each its centroid, U0, 1/|U| and two expressions (77 mul, 52 add, sqrt, div):
+// mul 260 + 308 = 568, add 180 + 6 + 208 = 394, 5 sqrt, 5 div, 19 cmp; five set-ups, four parts.
+TEST(FastPhong, SplitSetupCountedByHand) {
+    const world s = one_triangle(false);
+    const rasterised r = rasterise(s);
+    fast_phong_config c;
+    c.max_depth = 1;
+    c.budget = 1e9;
+    fast_phong_stats kept;
+    render_fast_phong(r, device_config{}, c, nullptr, nullptr, &kept);
+    EXPECT_EQ(kept.setup, counts(260, 1, 1, 180, 19)) << kept.setup;
+    EXPECT_EQ(kept.parts, 1u);
+    c.budget = 1e-9;
+    fast_phong_stats split;
+    scheme_state state;
+    render_fast_phong(r, device_config{}, c, nullptr, &state, &split);
+    EXPECT_EQ(split.setup, counts(568, 5, 5, 394, 19)) << split.setup;
+    EXPECT_EQ(split.setups, 5u);
+    EXPECT_EQ(split.parts, 4u);
+    EXPECT_EQ(split.split_triangles, 1u);
+    EXPECT_EQ(split.max_parts, 4u);
+    EXPECT_EQ(split.run_starts + split.steps, 28u);
+    EXPECT_EQ(state.per_triangle_words, 4u * 18u);  // the live triangle holds its four parts
+}
+
 // ---- Whole frames: images where the expansion is exact ----
 
 // Equal vertex normals, orthographic: every expression is constant, so the expansion is exact and the
