@@ -48,11 +48,10 @@
 // light's L, their sum over |L + V| for H, d the largest world distance of a vertex from the centroid's
 // P_c: zero when orthographic with directional lights); s the largest expanded N.H at those points and
 // the centroid, clamped to [0, 1] (n s^(n-1): the slope of the power there). An estimate, not a bound:
-// higher orders are not in it (on the built-in scenes it runs 2 to 8 times above the largest error
-// against render_device). A part that misses is split into four through its edge midpoints (corners
-// 0, 1, 2, then the middle; a midpoint's world position perspective-correct), recursively to
-// max_depth; each part gets its own expansion (its own centroid, U_N, H), and every set-up, judged or
-// kept, is counted. Pixels map to the leaf parts by their screen barycentrics; each part is a
+// higher orders are not in it, and max_depth caps the splitting. A part that misses is split into
+// four through its edge midpoints (corners 0, 1, 2, then the middle; a midpoint's world position
+// perspective-correct), recursively to max_depth; each part gets its own expansion (its own centroid,
+// U_N, H), and every set-up, judged or kept, is counted. Pixels map to the leaf parts by their screen barycentrics; each part is a
 // triangle to the rasteriser (its coverage not counted), so a span crossing parts pays a run start at
 // each.
 #pragma once
