@@ -51,9 +51,9 @@
 // higher orders are not in it, and max_depth caps the splitting. A part that misses is split into
 // four through its edge midpoints (corners 0, 1, 2, then the middle; a midpoint's world position
 // perspective-correct), recursively to max_depth; each part gets its own expansion (its own centroid,
-// U_N, H), and every set-up, judged or kept, is counted. Pixels map to the leaf parts by their screen barycentrics; each part is a
-// triangle to the rasteriser (its coverage not counted), so a span crossing parts pays a run start at
-// each.
+// U_N, H), and every set-up, judged or kept, is counted. Pixels map to the leaf parts by their
+// screen barycentrics; each part is a triangle to the rasteriser (its coverage not counted), so a
+// span crossing parts pays a run start at each.
 #pragma once
 
 #include <array>
