@@ -516,7 +516,7 @@ shaded_image fast_phong_renderer::render(render_stats& st) {
     return img;
 }
 
-void validate(const fast_phong_config& c) {
+void validate_config(const fast_phong_config& c) {
     if (c.table_bits < 1 || c.table_bits > 16)
         throw scene_error("fast Phong: table_bits must be 1..16 (a table of 2..65536 entries), not " +
                           std::to_string(c.table_bits));
@@ -532,7 +532,7 @@ void validate(const fast_phong_config& c) {
 
 shaded_image render_fast_phong(const rasterised& r, const device_config& dev, const fast_phong_config& c,
                                render_stats* stats, scheme_state* state, fast_phong_stats* fs) {
-    validate(c);
+    validate_config(c);
     const auto t0 = std::chrono::steady_clock::now();
     fast_phong_stats f;
     render_stats st;
