@@ -1,4 +1,4 @@
-// A built-in scene's frame, its reference and its baselines (frame_setup.h).
+// A scene's frame, its reference and its baselines (frame_setup.h).
 #include "golden_pipeline/frame_setup.h"
 
 #include "scene/shade.h"
@@ -19,11 +19,20 @@ scene::world with(scene::world w, const std::vector<double>& light, unsigned n) 
     return w;
 }
 
+bool ends_with_obj(const std::string& s) { return s.size() > 4 && s.compare(s.size() - 4, 4, ".obj") == 0; }
+
 }  // namespace
+
+scene::world scene_of(const std::string& scene, const std::string& data_dir, unsigned size,
+                      const std::vector<double>& light, unsigned n) {
+    return with(ends_with_obj(scene) ? scene::obj_scene(scene, size, size)
+                                     : scene::builtin_scene(scene, data_dir, size, size),
+                light, n);
+}
 
 frame_setup::frame_setup(const std::string& scene, const std::string& data_dir, unsigned size,
                          const std::string& device, bool walk_edges, const std::vector<double>& light, unsigned n)
-    : w(with(scene::builtin_scene(scene, data_dir, size, size), light, n)),
+    : w(scene_of(scene, data_dir, size, light, n)),
       r(scene::rasterise(w)),
       k(frame_constants_of(w)) {
     dev.device = scene::parse_device(device);

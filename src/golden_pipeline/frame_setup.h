@@ -1,4 +1,4 @@
-// What a render of a built-in scene starts from, shared by render_cells and the studies that render
+// What a render of a built-in scene or an OBJ file starts from, shared by render_cells and the studies that render
 // one: the scene rasterised, its frame constants, the device, per-pixel shading through the device
 // (the interpolation reference, per_pixel_frame) and the two baselines a pixel's long operations are
 // held against, the scan-line Phong and the from-scratch Phong (scene/shade.h). As render_pipeline's
@@ -13,8 +13,13 @@
 
 namespace shading::pipeline {
 
+// A built-in scene by name, or an OBJ file (a name ending in .obj, framed as scene::obj_scene frames
+// it), size x size; light and n as frame_setup takes them. Throws what builtin_scene and obj_scene throw.
+scene::world scene_of(const std::string& scene, const std::string& data_dir, unsigned size,
+                      const std::vector<double>& light = {}, unsigned n = 0);
+
 struct frame_setup {
-    // Throws what builtin_scene, parse_device and frame_constants_of throw. walk_edges: the scan-line
+    // Throws what scene_of, parse_device and frame_constants_of throw. walk_edges: the scan-line
     // Phong walks each triangle's values from line to line (render_pipeline's --walk-edges). light:
     // {azimuth, elevation} in degrees of one directional light instead of the scene's (empty: the
     // scene's); n: every material's exponent (0: the scene's).

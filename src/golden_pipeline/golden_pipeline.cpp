@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "arith/sqmul_arith.h"
-#include "arith/squared_arith.h"
 #include "golden_pipeline/pipeline.h"
 #include "scene/scene.h"
 
@@ -129,11 +127,9 @@ namespace shading::pipeline {
 
 namespace {
 
-// The sample stage per colour sample (one N.H, N.L pair): the specular device's datapath, shared by
-// every device (modules/specular/specular_device.h: MUL7 cos^2, MUL10 a x (cos^2 - cos), MUL12..14
-// times k_s*I; ADD9 cos^2 - cos, ADD11 + cos; the a generator works once per frame on RG1's n), then
-// per channel the diffuse multiplier (k_d*I x N.L) and two adders (ambient + diffuse + specular).
-constexpr scene::op_counts device_per_sample{5, 0, 0, 2, 0};
+// The sample stage per colour sample (one N.H, N.L pair): the specular device's datapath
+// (scene::device_sample_ops), then per channel the diffuse multiplier (k_d*I x N.L) and two adders
+// (ambient + diffuse + specular).
 constexpr scene::op_counts diffuse_per_sample{3, 0, 0, 6, 0};
 
 // The coefficient units per interval and channel, adders of their shift-and-add networks
@@ -169,20 +165,8 @@ using scene::times;
 
 }  // namespace
 
-scene::op_counts device_sample_ops(const scene::device_config& dev, unsigned n) {
-    scene::op_counts ops = device_per_sample;
-    if (dev.device == scene::specular_device::squared) ops.mul += golden_squared_a(n).k;  // MUL_SQ, k times
-    if (dev.device == scene::specular_device::sqmul) {
-        // MUL_P once per square and per multiplication, then MUL12..14: no MUL7, MUL10, ADD9, ADD11.
-        const auto g = golden_sqmul(n, 0, {0, 0, 0}, dev.mode);
-        ops = scene::op_counts{};
-        ops.mul = g.squares + g.multiplies + 3;
-    }
-    return ops;
-}
-
 scene::op_counts colour_sample_ops(const scene::device_config& dev, unsigned n) {
-    scene::op_counts ops = device_sample_ops(dev, n);
+    scene::op_counts ops = scene::device_sample_ops(dev, n);
     ops += diffuse_per_sample;
     return ops;
 }

@@ -279,13 +279,9 @@ struct hardware_counts {
         return t;
     }
 };
-// A device's operations per colour sample (the sample stage's specular part): Fig. 1's datapath for
-// UA 60553, UA 22802 and the tuned generators (MUL7, MUL10, MUL12..14; ADD9, ADD11: 5 mul, 2 add);
-// the squared-quadratic device adds one multiplication per squaring, k = floor(log2 n) for the
-// frame's n (its generator, like the others', works once per frame on RG1); the square-and-multiply
-// device has MUL_P once per square and per multiplication (floor(log2 n) + popcount(n) - 1) and
-// MUL12..14, no adder.
-scene::op_counts device_sample_ops(const scene::device_config& dev, unsigned n);
+// A device's operations per colour sample: scene::device_sample_ops (shade.h), the scene layer's, as
+// every scheme that calls a device is charged them.
+using scene::device_sample_ops;
 // The sample stage's operations for one colour: the device's (device_sample_ops), then per channel
 // the diffuse multiplier k_d*I x N.L and the two adders of ambient + diffuse + specular.
 scene::op_counts colour_sample_ops(const scene::device_config& dev, unsigned n);

@@ -462,6 +462,7 @@ rgb fast_phong_renderer::shade(const material& m, const std::vector<runner>& run
             const rgb ks_i = m.k_s * lights[li].intensity;  // frame constants: the device's 8-bit codes
             const std::array<uint64_t, 3> ksi{ksi_code(ks_i.x), ksi_code(ks_i.y), ksi_code(ks_i.z)};
             const auto out = device_specular(dev_, m.n, cos_code(s.value()), ksi);
+            if (ops) *ops += device_sample_ops(dev_, m.n);  // the device's multipliers and adders
             for (int ch = 0; ch < 3; ++ch) spec[ch] = c(device_out_value(out[ch]));
         } else {
             const cnum power = c(tables_.at(m.n).value(s.value()));

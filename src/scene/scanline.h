@@ -58,6 +58,9 @@ public:
     // component, d lines down (the same adds, the other gradient; for runs read down a column).
     pixel_geometry at(unsigned x, unsigned y, op_counts* ops, bool down = false);
     const stepping_stats& stats() const { return stats_; }
+    // The words a live triangle holds (scheme_state.h): per stepped component (U_N, and U_P and Q
+    // where a position is needed) its plane a, b, c and its stepped value: 28 with a perspective camera.
+    unsigned words_per_triangle() const { return 4u * (3u + (need_p_ ? 3u : 0u) + (perspective_ ? 1u : 0u)); }
 
 private:
     // Per stepped component: the plane a x + b y + c.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "arith/sqmul_arith.h"
+#include "arith/squared_arith.h"
 #include "scene/scene.h"
 
 namespace shading::scene {
@@ -90,6 +92,20 @@ specular_device parse_device(const std::string& name) {
     throw scene_error("unknown specular device '" + name + "' (patent, minimax, rom_matched, ua22802, squared, sqmul)");
 }
 
+op_counts device_sample_ops(const device_config& dev, unsigned n) {
+    op_counts ops;
+    if (dev.device == specular_device::sqmul) {
+        // MUL_P once per square and per multiplication, then MUL12..14: no MUL7, MUL10, ADD9, ADD11.
+        const auto g = golden_sqmul(n, 0, {0, 0, 0}, dev.mode);
+        ops.mul = g.squares + g.multiplies + 3;
+        return ops;
+    }
+    ops.mul = 5;
+    ops.add = 2;
+    if (dev.device == specular_device::squared) ops.mul += golden_squared_a(n).k;  // MUL_SQ, k times
+    return ops;
+}
+
 cnum pow_int(cnum x, unsigned n) {
     if (n == 0) return cnum(1.0, x.counts());
     unsigned top = 31;
@@ -125,7 +141,9 @@ rgb shade_specular(const pixel_geometry& g, const material& m, const std::vector
 
 rgb shade_device(const pixel_geometry& g, const material& m, const std::vector<light>& lights,
                  const device_config& dev) {
-    return shade_specular(g, m, lights, [&dev](unsigned n, uint32_t code, const std::array<uint64_t, 3>& ksi) {
+    op_counts* ops = g.n.x.counts();
+    return shade_specular(g, m, lights, [&dev, ops](unsigned n, uint32_t code, const std::array<uint64_t, 3>& ksi) {
+        if (ops) *ops += device_sample_ops(dev, n);  // the device's multipliers and adders
         return device_specular(dev, n, code, ksi);
     });
 }
@@ -154,6 +172,14 @@ shaded_image render_phong_scanline(const rasterised& r, render_stats* stats, ste
         [&r](const pixel_geometry& g, const material& m) { return shade_phong(g, m, r.src->lights); });
     if (steps) *steps = st.stats();
     return img;
+}
+
+shaded_image render_device_scanline(const rasterised& r, const device_config& dev, render_stats* stats,
+                                    bool walk_edges) {
+    span_stepper st(r, walk_edges);
+    return render(
+        r, stats, [&st](unsigned x, unsigned y, op_counts* o) { return st.at(x, y, o); },
+        [&r, &dev](const pixel_geometry& g, const material& m) { return shade_device(g, m, r.src->lights, dev); });
 }
 
 }  // namespace shading::scene

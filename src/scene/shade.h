@@ -35,6 +35,13 @@ std::vector<std::string> device_names();
 using specular_fn =
     std::function<std::array<uint64_t, 3>(unsigned n, uint32_t cos_code, const std::array<uint64_t, 3>& ksi)>;
 
+// A device's operations per specular sample: Fig. 1's datapath for UA 60553, UA 22802 and the tuned
+// generators (MUL7, MUL10, MUL12..14; ADD9, ADD11: 5 mul, 2 add); the squared-quadratic device adds
+// one multiplication per squaring, k = floor(log2 n) (its generator, like the others', works once per
+// frame on RG1); the square-and-multiply device has MUL_P once per square and per multiplication
+// (floor(log2 n) + popcount(n) - 1) and MUL12..14, no adder. shade_device charges them per call.
+op_counts device_sample_ops(const device_config& dev, unsigned n);
+
 // x^n for an integer n >= 1 by left-to-right binary exponentiation: floor(log2 n) squarings and
 // popcount(n) - 1 further multiplications, all counted; exact to double rounding.
 cnum pow_int(cnum x, unsigned n);
@@ -74,6 +81,9 @@ shaded_image render_phong(const rasterised& r, render_stats* stats = nullptr);
 shaded_image render_phong_scanline(const rasterised& r, render_stats* stats = nullptr,
                                    stepping_stats* steps = nullptr, bool walk_edges = false);
 shaded_image render_device(const rasterised& r, const device_config& dev, render_stats* stats = nullptr);
+// Phong 1975's stepped geometry with the specular term through the device (render_device's shading).
+shaded_image render_device_scanline(const rasterised& r, const device_config& dev, render_stats* stats = nullptr,
+                                    bool walk_edges = false);
 shaded_image render_specular(const rasterised& r, const specular_fn& unit, render_stats* stats = nullptr);
 
 }  // namespace shading::scene

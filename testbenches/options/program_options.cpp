@@ -398,6 +398,37 @@ std::optional<int> parse_render_cells(int argc, char** argv, render_cells_option
     return std::nullopt;
 }
 
+std::optional<int> parse_render_race(int argc, char** argv, render_race_options& o) {
+    CLI::App app{"the race: Phong 1975, Gouraud, Bishop-Weimer, Lyon, the interpolation paper's lines and the cells on "
+                 "one frame, against exact Phong"};
+    app.add_option("--scene", o.scene, "built-in scene (head, sphere, torus) or an OBJ file (a path ending in .obj)");
+    app.add_option("--size", o.size, "image width and height")->check(CLI::Range(16u, 2048u));
+    app.add_option("--data-dir", o.data_dir, "repository root holding data/head/");
+    app.add_option("--device", o.device, "specular device")->check(CLI::IsMember(device_names()));
+    app.add_option("--light", o.light, "one directional light instead of the scene's: azimuth,elevation in degrees")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(-360.0, 360.0))
+        ->check(not_nan());
+    app.add_option("--n", o.n, "the specular exponent (1..1000)")->check(CLI::Range(1u, 1000u));
+    app.add_option("--out", o.out, "folder for race.md, race.csv and race_sheet.png");
+    app.add_option("--error-scale", o.error_scale, "levels at white on the error maps")
+        ->check(CLI::PositiveNumber)
+        ->check(not_nan());
+    app.add_flag("!--no-sim", o.sim, "skip the cells' SystemC run");
+    auto* tuned = app.add_option_group("not frozen", "a setting other than the frozen one: an extra row, marked");
+    tuned->add_option("--cells-tol", o.cells_tol, "the cells' tolerance (levels)")->check(CLI::Range(1e-3, 64.0));
+    tuned->add_option("--line-tol", o.line_tol, "the lines' length tolerance (levels)")->check(CLI::Range(1e-3, 64.0));
+    tuned->add_option("--fast-phong-budget", o.fast_phong_budget, "the split fast Phong's budget (levels)")
+        ->check(CLI::Range(1e-3, 64.0));
+    SHADING_CLI_PARSE(app, argc, argv);
+    if (!o.light.empty() && (o.light.size() != 2 || !(std::abs(o.light[1]) <= 90.0))) {
+        std::fprintf(stderr, "render_race: --light needs azimuth,elevation with the elevation in -90..90\n");
+        return 2;
+    }
+    return std::nullopt;
+}
+
 std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o) {
     CLI::App app{"a quadtree of biquadratic cells decided from its lattices' differences, the lines for the rest"};
     add_study_scene(app, o.scene, o.size, o.data_dir, o.device);

@@ -149,6 +149,18 @@ struct render_cells_options {
     bool walk_edges = false;
 };
 
+// render_race: a built-in scene or an OBJ file, its size, exponent and light, the device; where the
+// table and the sheet go; settings other than the frozen configuration's, each shown as an extra row.
+struct render_race_options {
+    std::string scene = "head", data_dir = default_data_dir(), device = "sqmul", out = "out/race";
+    unsigned size = 512;        // 16..2048
+    std::vector<double> light;  // two values, -360..360 and -90..90
+    unsigned n = 20;            // 1..1000
+    double error_scale = 8.0;   // levels at white on the error maps, > 0
+    bool sim = true;            // the cells' SystemC frame against their golden model
+    double cells_tol = -1.0, line_tol = -1.0, fast_phong_budget = -1.0;  // < 0: the frozen one only
+};
+
 std::optional<int> parse_interp_study(int argc, char** argv, interp_study_options& o);
 std::optional<int> parse_soak(int argc, char** argv, soak_options& o);
 std::optional<int> parse_render_reference(int argc, char** argv, render_reference_options& o);
@@ -163,5 +175,6 @@ std::optional<int> parse_edge_study(int argc, char** argv, edge_study_options& o
 std::optional<int> parse_two_line_study(int argc, char** argv, two_line_study_options& o);
 std::optional<int> parse_cell_study(int argc, char** argv, cell_study_options& o);
 std::optional<int> parse_render_cells(int argc, char** argv, render_cells_options& o);
+std::optional<int> parse_render_race(int argc, char** argv, render_race_options& o);
 
 }  // namespace shading::tb

@@ -26,6 +26,16 @@ if(TARGET shading_pipeline_sim)
   set_tests_properties(pipeline.render_cells PROPERTIES TIMEOUT 300 LABELS render_cells
                        PASS_REGULAR_EXPRESSION "the frame is the golden model's")
   shading_add_usage_test(render_cells ARGS --size 8)
+  # The race (render_race.cpp): every scheme on one frame; exit 0 when the cells' SystemC frame is
+  # their golden one. A small head here; a sphere given as an OBJ file the program has never seen.
+  add_executable(render_race ${CMAKE_CURRENT_SOURCE_DIR}/render_race.cpp)
+  target_link_libraries(render_race PRIVATE shading_pipeline_sim shading_pipeline shading_options shading_tb_common)
+  set_target_properties(render_race PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  add_test(NAME pipeline.render_race COMMAND render_race --size 96 --out ${CMAKE_BINARY_DIR}/out/race_test
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  set_tests_properties(pipeline.render_race PROPERTIES TIMEOUT 300 LABELS render_race
+                       PASS_REGULAR_EXPRESSION "is the golden model's")
+  shading_add_usage_test(render_race ARGS --size 8)
 endif()
 # The soak of the fast pipeline (scripts/soak.sh; opt-in, no ctest entry: 1000 renders take minutes).
 if(TARGET shading_pipeline_sim)
