@@ -17,7 +17,7 @@ const char* usage =
     "Usage: make_test_obj [--shape blob|cluster] [--segments N] [--out PATH]\n"
     "  --shape     blob: one sphere displaced by products of sines (folds, many small triangles);\n"
     "              cluster: six such blobs of different sizes at different depths (default blob)\n"
-    "  --segments  longitudes of each blob, even, 4..4096; half as many latitude bands (default 64)\n"
+    "  --segments  longitudes of each blob, even, 4..2048; half as many latitude bands (default 64)\n"
     "  --out       the file to write (default test.obj)\n";
 
 int bad(const std::string& why) {
@@ -47,8 +47,8 @@ int main(int argc, char* argv[]) {
         } else {
             char* end = nullptr;
             segments = std::strtoul(v.c_str(), &end, 10);
-            if (v.empty() || v[0] == '-' || *end != '\0' || segments < 4 || segments > 4096 || segments % 2)
-                return bad("--segments '" + v + "' is not an even number in 4..4096");
+            if (v.empty() || v[0] == '-' || *end != '\0' || segments < 4 || segments > 2048 || segments % 2)
+                return bad("--segments '" + v + "' is not an even number in 4..2048");
         }
     }
     bool known = false;
