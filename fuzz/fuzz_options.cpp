@@ -298,6 +298,20 @@ std::optional<int> render_cells(int argc, char** argv) {
     return std::nullopt;
 }
 
+std::optional<int> render_race(int argc, char** argv) {
+    render_race_options o;
+    if (auto rc = parse_render_race(argc, argv, o)) return rc;
+    FUZZ_CHECK(device(o.device), "--device '%s'", o.device.c_str());
+    FUZZ_CHECK(within(o.size, 16u, 2048u), "--size %u", o.size);
+    FUZZ_CHECK(o.light.empty() || (o.light.size() == 2 && std::abs(o.light[0]) <= 360.0 && std::abs(o.light[1]) <= 90.0),
+               "--light of %zu values", o.light.size());
+    FUZZ_CHECK(within(o.n, 1u, 1000u), "--n %u", o.n);
+    FUZZ_CHECK(positive(o.error_scale), "--error-scale %g", o.error_scale);
+    for (double t : {o.cells_tol, o.line_tol, o.fast_phong_budget})
+        FUZZ_CHECK(t == -1.0 || (t >= 1e-3 && t <= 64.0), "a setting %g", t);
+    return std::nullopt;
+}
+
 std::optional<int> render_pipeline(int argc, char** argv) {
 #if SHADING_FUZZ_RENDER_OPTIONS
     namespace rp = shading::render_program;
@@ -344,7 +358,7 @@ const program programs[] = {
     {"head_study", head_study},             {"render_pipeline", render_pipeline},
     {"bench_line_tlm", bench_line_tlm},     {"components_study", components_study},
     {"edge_study", edge_study},             {"two_line_study", two_line_study},
-    {"cell_study", cell_study},             {"render_cells", render_cells},
+    {"cell_study", cell_study},             {"render_cells", render_cells}, {"render_race", render_race},
     {"sqmul_tb", sqmul},
 };
 

@@ -158,6 +158,9 @@ std::vector<race_row> run_race(const scene::rasterised& r, const scene::device_c
     validate(c.lines);
     validate(c.cell_lines);
     validate(c.cells);
+    for (const std::string& s : only)
+        if (std::find(race_schemes().begin(), race_schemes().end(), s) == race_schemes().end())
+            throw scene::scene_error("race: no scheme '" + s + "'");
     const race_frame f(r, dev);
     auto wanted = [&only](const char* s) { return only.empty() || std::find(only.begin(), only.end(), s) != only.end(); };
     std::vector<race_row> rows;

@@ -207,7 +207,8 @@ TEST(FastPhong, PowerTableEqualsHandValues) {
 //   run starts: 7 x (2 add + 2 x (5 mul, 7 add)) = 70 mul, 112 add;  steps: 21 x 2 x 2 add = 84 add;
 //   geometry: mul 174, add 266, sqrt 1, div 1 (176 long: 6.3 a pixel, against 18.5 for the
 //     scan-line Phong geometry of test_scanline);
-//   shading, per pixel (N.L > 0 everywhere): 2 cmp, 3 x (1 mul, 2 add): 84 mul, 168 add, 56 cmp.
+//   shading, per pixel (N.L > 0 everywhere): 2 cmp, 3 x (1 mul, 2 add), and the device (UA 60553's
+//     Fig. 1: 5 mul, 2 add): 28 x (8 mul, 8 add): 224 mul, 224 add, 56 cmp.
 TEST(FastPhong, SingleTriangleFrameCountedByHand) {
     const world s = one_triangle(false);
     const rasterised r = rasterise(s);
@@ -220,7 +221,7 @@ TEST(FastPhong, SingleTriangleFrameCountedByHand) {
     EXPECT_EQ(fs.run_start, counts(70, 0, 0, 112)) << fs.run_start;
     EXPECT_EQ(fs.step, counts(0, 0, 0, 84)) << fs.step;
     EXPECT_EQ(st.geometry, counts(174, 1, 1, 266)) << st.geometry;
-    EXPECT_EQ(st.shading, counts(84, 0, 0, 168, 56)) << st.shading;
+    EXPECT_EQ(st.shading, counts(224, 0, 0, 224, 56)) << st.shading;
     EXPECT_EQ(st.pixels, 28u);
     EXPECT_EQ(fs.triangles, 1u);
     EXPECT_EQ(fs.setups, 1u);
