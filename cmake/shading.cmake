@@ -87,6 +87,15 @@ endfunction()
 set(SHADING_TEST_OPT_FLAGS "-Og" CACHE STRING
     "Optimisation flags of the GoogleTest suites in a Release build (empty: the build type's -O3)")
 
+# The same as compile options, for the suites and for their precompiled header (cmake/pch.cmake).
+set(SHADING_GTEST_OPT)
+if(SHADING_TEST_OPT_FLAGS)
+  separate_arguments(_opt UNIX_COMMAND "${SHADING_TEST_OPT_FLAGS}")
+  foreach(_o IN LISTS _opt)
+    list(APPEND SHADING_GTEST_OPT $<$<CONFIG:Release>:${_o}>)
+  endforeach()
+endif()
+
 function(shading_add_gtest name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
   if(NOT ARG_TIMEOUT)
@@ -97,11 +106,9 @@ function(shading_add_gtest name)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   # Tests read committed files (traces/*.gtkw) from the source tree.
   target_compile_definitions(${name} PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  if(SHADING_TEST_OPT_FLAGS)
-    separate_arguments(_opt UNIX_COMMAND "${SHADING_TEST_OPT_FLAGS}")
-    # After the build type's -O3 on the command line, so it wins (g++: the last -O counts).
-    target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:${_opt}>)
-  endif()
+  # After the build type's -O3 on the command line, so it wins (g++: the last -O counts).
+  target_compile_options(${name} PRIVATE ${SHADING_GTEST_OPT})
+  set_target_properties(${name} PROPERTIES SHADING_PCH_KIND gtest)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60
