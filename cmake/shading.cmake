@@ -76,8 +76,8 @@ endfunction()
 
 # SHADING_TEST_OPT_FLAGS: the GoogleTest suites' optimisation in a Release build. A cold build is
 # dominated by the suites' code generation, not by parsing (user seconds, g++ 12: test_ua60553.cpp
-# -O3 25.4, -O1 15.6-17.5, -Og 13.0, -O0 12.6; test_interp_line.cpp -O3 36.6, -Og 13.9; a
-# precompiled <systemc> + <gtest/gtest.h> saved 0.5 s of the 17 at -O1, so there is none). The
+# -O3 25.4, -O1 15.6-17.5, -Og 13.0, -O0 12.6; test_interp_line.cpp -O3 36.6, -Og 13.9; the
+# headers' share, which the precompiled headers of cmake/pch.cmake take away, is 1-3 s a unit). The
 # suites check results, never speed, and run as fast at -Og (mostly process start-up; the sanitizer
 # build runs them at -Og too): they get this level in place of -O3. The libraries (shading_floor,
 # shading_golden, ...), the bench, render and perf programs keep -O3, as their speed figures are
