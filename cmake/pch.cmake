@@ -1,9 +1,11 @@
-# Precompiled headers (SHADING_PCH, default ON): the heavy system headers every translation unit
-# parses again (<systemc> and <gtest/gtest.h> are about 2 CPU s each a unit, a loaded precompiled
-# header about half a second) are compiled once per build into a small donor library, and each
-# program, suite and library with the same compile flags reuses it (REUSE_FROM). Only system
-# headers go in, never the project's, so an edit never rebuilds the precompiled header. The layer
-# check reads the sources' own #include lines, which a precompiled header does not change.
+# Precompiled headers (SHADING_PCH; default ON, but OFF in the sanitizer build): the heavy system
+# headers every translation unit parses again (<systemc>, <gtest/gtest.h>: 1-3 CPU s of a unit's
+# compile) are compiled once per build into a small donor library, and each program, suite and
+# library with the same compile flags reuses it (REUSE_FROM). Release, user+sys CPU s a unit
+# without/with: test_interp_line.cpp 15.4/12.6, test_blocks.cpp 5.5/4.3, program_options.cpp
+# 18.0/15.7, frame_setup.cpp 1.8/1.2; the three headers cost 21 s to make. Only system headers go
+# in, never the project's, so an edit never rebuilds one. The layer check reads the sources' own
+# #include lines, which a precompiled header does not change.
 #
 # g++ takes a precompiled header only when the flags match: it refuses one compiled without a macro
 # the consumer defines and the header tests (SC_INCLUDE_DYNAMIC_PROCESSES), and g++ 12 has crashed
@@ -16,7 +18,16 @@
 # ccache (the scripts' launcher) caches a unit that uses a precompiled header only with the
 # sloppiness below (ccache(1), PRECOMPILED HEADERS); the targets that use one get it through their
 # launcher, so a ccache run elsewhere keeps its own settings.
-option(SHADING_PCH "Precompile the system headers (<systemc>, <gtest/gtest.h>, the standard library)" ON)
+# Off by default in the sanitizer build: there the instrumented code generation dominates and a
+# unit using the precompiled header took as long or up to 3 CPU s longer (test_blocks.cpp 11.1 s
+# without, 13.5 s with; test_interp_fd.cpp 27.9 and 30.9).
+if(SHADING_SANITIZE)
+  set(_shading_pch_default OFF)
+else()
+  set(_shading_pch_default ON)
+endif()
+option(SHADING_PCH "Precompile the system headers (<systemc>, <gtest/gtest.h>, the standard library)"
+       ${_shading_pch_default})
 
 set(_shading_pch_std <algorithm> <array> <cmath> <cstdint> <cstdlib> <functional> <iostream> <map>
                      <memory> <sstream> <string> <utility> <vector>)
