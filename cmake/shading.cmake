@@ -76,8 +76,8 @@ endfunction()
 
 # SHADING_TEST_OPT_FLAGS: the GoogleTest suites' optimisation in a Release build. A cold build is
 # dominated by the suites' code generation, not by parsing (user seconds, g++ 12: test_ua60553.cpp
-# -O3 25.4, -O1 15.6-17.5, -Og 13.0, -O0 12.6; test_interp_line.cpp -O3 36.6, -Og 13.9; a
-# precompiled <systemc> + <gtest/gtest.h> saved 0.5 s of the 17 at -O1, so there is none). The
+# -O3 25.4, -O1 15.6-17.5, -Og 13.0, -O0 12.6; test_interp_line.cpp -O3 36.6, -Og 13.9; the
+# headers' share, which the precompiled headers of cmake/pch.cmake take away, is 1-3 s a unit). The
 # suites check results, never speed, and run as fast at -Og (mostly process start-up; the sanitizer
 # build runs them at -Og too): they get this level in place of -O3. The libraries (shading_floor,
 # shading_golden, ...), the bench, render and perf programs keep -O3, as their speed figures are
@@ -86,6 +86,15 @@ endfunction()
 # Empty: -O3 for the suites too.
 set(SHADING_TEST_OPT_FLAGS "-Og" CACHE STRING
     "Optimisation flags of the GoogleTest suites in a Release build (empty: the build type's -O3)")
+
+# The same as compile options, for the suites and for their precompiled header (cmake/pch.cmake).
+set(SHADING_GTEST_OPT)
+if(SHADING_TEST_OPT_FLAGS)
+  separate_arguments(_opt UNIX_COMMAND "${SHADING_TEST_OPT_FLAGS}")
+  foreach(_o IN LISTS _opt)
+    list(APPEND SHADING_GTEST_OPT $<$<CONFIG:Release>:${_o}>)
+  endforeach()
+endif()
 
 function(shading_add_gtest name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
@@ -97,11 +106,9 @@ function(shading_add_gtest name)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   # Tests read committed files (traces/*.gtkw) from the source tree.
   target_compile_definitions(${name} PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  if(SHADING_TEST_OPT_FLAGS)
-    separate_arguments(_opt UNIX_COMMAND "${SHADING_TEST_OPT_FLAGS}")
-    # After the build type's -O3 on the command line, so it wins (g++: the last -O counts).
-    target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:${_opt}>)
-  endif()
+  # After the build type's -O3 on the command line, so it wins (g++: the last -O counts).
+  target_compile_options(${name} PRIVATE ${SHADING_GTEST_OPT})
+  set_target_properties(${name} PROPERTIES SHADING_PCH_KIND gtest)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60

@@ -89,6 +89,7 @@ target_compile_definitions(shading_verilated PRIVATE VM_COVERAGE=0 VM_SC=1 VM_TR
 target_compile_features(shading_verilated PRIVATE cxx_std_11)
 target_link_libraries(shading_verilated PUBLIC Verilator::systemc Threads::Threads)
 target_compile_options(shading_verilated PRIVATE -Wno-unused-parameter)
+set_target_properties(shading_verilated PROPERTIES SHADING_PCH_SKIP ON)  # Verilator's sources, its own way
 if(SHADING_SANITIZE)  # not ours: uninstrumented, as shading_verilate_rtl says
   target_compile_options(shading_verilated PRIVATE -fno-sanitize=all -g0)
 endif()
