@@ -1,8 +1,9 @@
 // Build-time generator of the RTL twin's (rtl/) generated Verilog, from the same definitions as
 // the SystemC model, so no width or constant is typed twice:
 //   gen_rtl formats <out.vh>                 every bus format of src/floor/formats as `define macros
-//                                            (<NAME>_W, <NAME>_FRAC, <NAME>_SIGNED) and the
-//                                            generators' hardwired constants;
+//                                            (<NAME>_W, <NAME>_FRAC, <NAME>_SIGNED), the
+//                                            generators' hardwired constants and the shading
+//                                            pipeline's sample-stage formats (PIPELINE_*);
 //   gen_rtl formats <out.vh> <p_frac>        the same with the square-and-multiply designs' P
 //                                            word at Q1.p_frac (sqmul::p_word), for the synthesis
 //                                            rows of the word-length study (studies/accuracy);
@@ -22,6 +23,7 @@
 #include <string>
 
 #include "formats/interp_formats.h"
+#include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
 #include "formats/sqmul_formats.h"
 #include "formats/squared_formats.h"
@@ -168,6 +170,16 @@ int write_formats(const std::string& path, unsigned sqmul_frac) {
     define(os, "INTERP_M_MIN", interp::m_min);
     define(os, "INTERP_M_MAX", interp::m_max);
     define_fmt(os, "INTERP_FD", interp::fd_fmt);
+
+    os << "\n// pipeline_formats.h: the shading pipeline's sample stage and output (ours)\n";
+    define_fmt(os, "PIPELINE_KDI", pipeline::kdi_fmt);
+    define_fmt(os, "PIPELINE_DIFFUSE", pipeline::diffuse_fmt);
+    define(os, "PIPELINE_DIFFUSE_DROP", pipeline::diffuse_drop);
+    define_fmt(os, "PIPELINE_AMBIENT", pipeline::ambient_fmt);
+    define_fmt(os, "PIPELINE_AD", pipeline::ad_fmt);
+    define_fmt(os, "PIPELINE_COLOUR", pipeline::colour_fmt);
+    define(os, "PIPELINE_COLOUR_SAT_HI", pipeline::colour_fmt.mask());  // add_colour's saturation bound
+    define_fmt(os, "PIPELINE_PIXEL", pipeline::pixel_fmt);
     os << "\n`endif\n";
     return os ? 0 : 1;
 }
