@@ -7,7 +7,8 @@
 // clk, each fed by a multiplexer on fd_sel: hold (its own output), load (the set-up), step (the
 // adder). Formats (interp_formats.h): A..D Q16.16 signed in; set-up, registers and adders Q22.34
 // signed (exact for M <= 6); the output drops the 18 low wires (floor) -> Q16.16.
-// The controller ctrl is fd_ctrl.v. This module only instantiates and wires.
+// The controller ctrl is fd_ctrl.v. This module only instantiates and wires; the SystemC model's
+// clock-phase monitor chk_clock is not hardware and has no counterpart here.
 `include "shading_formats.vh"
 `include "interp_terms.vh"
 module fd_eval #(

@@ -6,7 +6,8 @@
 // model's setup_d1_m<m> ... ), and per difference a multiplexer mx_setup_d1..3 on setup_sel =
 // m - MMIN (fd_ctrl_var.v, which latches m with len at acceptance) feeding the register's load
 // input. Pins: fd_eval's plus m (codes 0..MMAX; 0 is an exact pixel, len 1). Formats as fd_eval.v.
-// This module only instantiates and wires.
+// This module only instantiates and wires; the SystemC model's clock-phase monitor chk_clock is not
+// hardware and has no counterpart here.
 `include "shading_formats.vh"
 `include "interp_terms.vh"
 module fd_eval_var #(

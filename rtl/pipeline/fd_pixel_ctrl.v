@@ -52,8 +52,7 @@ module fd_pixel_ctrl #(
     reg [WN-1:0] cap_len = ZERO;
     reg [WMI-1:0] cap_m = {WMI{1'b0}};
     reg [WX-1:0] cur_x0 = {WX{1'b0}};
-    // With a validated len (1..2^m) these never wrap; the SystemC model's unsigned counters would
-    // behave alike for any len below 2^WN.
+    // As the SystemC model's unsigned counters for every len but 0 (the sample stage drops len 0).
     reg [WN-1:0] next = ZERO, left = ZERO;
 
     // Next state.

@@ -55,6 +55,7 @@ module horner_pixel_ctrl #(
     // flag always 1 where it is read: neither is a register.
     reg cur_active = 1'b0, cur_deg2 = 1'b0;
     reg [WX-1:0] cur_y = {WX{1'b0}}, cur_x0 = {WX{1'b0}};
+    // cur_issued counts as the SystemC model's unsigned for every len but 0 (dropped before).
     reg [WN-1:0] cur_len = {WN{1'b0}}, cur_issued = {WN{1'b0}};
     reg [WM-1:0] cur_m = {WM{1'b0}};
     reg pend_active = 1'b0, pend_deg2 = 1'b0;
