@@ -53,6 +53,7 @@ file(MAKE_DIRECTORY ${SHADING_RTL_GENERATED})
 file(COPY_FILE ${_interp_gen_dir}/interp_terms.vh ${SHADING_RTL_GENERATED}/interp_terms.vh ONLY_IF_DIFFERENT)
 set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_interp_gen_src}
              ${PROJECT_SOURCE_DIR}/modules/interp/coef_unit_cubic.h ${PROJECT_SOURCE_DIR}/modules/interp/horner_ctrl.h
+             ${PROJECT_SOURCE_DIR}/modules/interp/coef_unit_quad.h
              ${PROJECT_SOURCE_DIR}/modules/blocks/shift_add_network.h ${PROJECT_SOURCE_DIR}/modules/interp/fd_ctrl.h
              ${PROJECT_SOURCE_DIR}/modules/interp/fd_count.h ${PROJECT_SOURCE_DIR}/modules/interp/fd_setup.h
              ${PROJECT_SOURCE_DIR}/modules/interp/horner_steps.h ${PROJECT_SOURCE_DIR}/modules/pipeline/pipeline_pins.h
