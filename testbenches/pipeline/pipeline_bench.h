@@ -211,12 +211,25 @@ private:
     uint64_t frame_edge_ = 0;
 };
 
-// A pipeline's input pins (D: shading_pipeline or shading_pipeline_fast) and the geometry source's
-// outputs bound to a bench's signals of the same names (pipeline_bench; test_pipeline_fast's pair).
+// in_deg2: our sc_uint<1> pin on the bench's deg2, or a Verilated model's bool pin (verilator
+// --pins-sc-uint makes 1-wire pins bool) on its deg2_bit (pipeline_pair.h's bit_to_bool).
+template <class B>
+void bind_deg2(sc_core::sc_in<sc_dt::sc_uint<1>>& pin, B& b) {
+    pin(b.deg2);
+}
+template <class B>
+void bind_deg2(sc_core::sc_in<bool>& pin, B& b) {
+    pin(b.deg2_bit);
+}
+
+// A pipeline's input pins (D: shading_pipeline, shading_pipeline_fast or the Verilog twin) and the
+// geometry source's outputs bound to a bench's signals of the same names (pipeline_bench; the
+// pairs of pipeline_pair.h).
 template <class D, class B>
 void bind_pipeline_inputs(D& d, B& b) {
     d.clk(b.clk); d.start(b.start); d.load_frame(b.load_frame);
-    d.in_y(b.y); d.in_x0(b.x0); d.in_len(b.len); d.in_m(b.m); d.in_deg2(b.deg2);
+    d.in_y(b.y); d.in_x0(b.x0); d.in_len(b.len); d.in_m(b.m);
+    bind_deg2(d.in_deg2, b);
     d.in_nh1(b.nh[0]); d.in_nh2(b.nh[1]); d.in_nh3(b.nh[2]); d.in_nh4(b.nh[3]);
     d.in_nl1(b.nl[0]); d.in_nl2(b.nl[1]); d.in_nl3(b.nl[2]); d.in_nl4(b.nl[3]);
     d.in_n(b.n);

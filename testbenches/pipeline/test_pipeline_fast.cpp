@@ -21,6 +21,7 @@
 #include "core/report_ids.h"
 #include "pipeline/shading_pipeline_fast.h"
 #include "pipeline_bench.h"
+#include "pipeline_pair.h"
 #include "pipeline_sim.h"
 #include "pipeline_test.h"
 #include "tuned/a_gen_tuned.h"
@@ -36,180 +37,9 @@ using namespace shading::pipeline;
 
 namespace {
 
-// ---- Random jobs ----
-
-// A random plan on a frame `w` wide: jobs placed left to right, line after line, never overlapping;
-// about one in `bad_every` invalid (len 0, len > 2^m, m 1 or 7, an exact quadratic; refused and
-// reported by both pipelines), the rest valid for the evaluator (fd_m != 0: that m or exact pixels).
-// chain: about half the jobs start at the codes of the job before's last sample, as a planned line's
-// do (the carry's case).
-plan random_plan(uint64_t seed, std::size_t jobs, unsigned w, unsigned fd_m, unsigned bad_every, bool chain = false) {
-    plan p;
-    p.width = w;
-    unsigned x = 0, y = 0;
-    pipeline::sample_geometry last{};
-    for (std::size_t i = 0; i < jobs; ++i) {
-        tb::split_rng r(seed, i);
-        interval_job j;
-        const uint64_t kind = r.range(0, 9);
-        if (kind < 2) j.m = 0;
-        else if (fd_m != 0) j.m = fd_m;
-        else j.m = static_cast<unsigned>(r.range(interp::m_min, interp::m_max));
-        j.len = j.m == 0 ? 1 : static_cast<unsigned>(r.range(1, 1u << j.m));
-        j.deg2 = j.m != 0 && r.range(0, 2) == 0;
-        for (auto& s : j.s) {
-            // Q1.15 codes in [0, 1] (above 1.0 the device's input checker reports them).
-            const uint64_t one = uint64_t{1} << spec::cos_fmt.frac;
-            s.cos_nl = static_cast<uint32_t>(r.range(0, one));
-            s.cos_nh = s.cos_nl == 0 ? 0 : static_cast<uint32_t>(r.range(0, one));
-        }
-        if (chain && r.range(0, 1) == 0) j.s[0] = last;
-        if (j.m == 0) j.s[1] = j.s[2] = j.s[3] = j.s[0];
-        if (j.deg2) j.s[3] = j.s[2];
-        last = j.s[j.m == 0 ? 0 : (j.deg2 ? 2 : 3)];
-        if (bad_every != 0 && r.range(0, bad_every - 1) == 0) {
-            switch (r.range(0, 3)) {
-                case 0: j.len = 0; break;
-                case 1: j.m = r.range(0, 1) ? 1 : 7; break;
-                case 2: j.m = 0; j.len = 1; j.deg2 = true; break;
-                default: j.len = (1u << j.m) + 1; break;
-            }
-        }
-        const unsigned span = std::max(1u, j.len);
-        if (x + span > w) {
-            x = 0;
-            ++y;
-        }
-        j.x0 = x;
-        j.y = y;
-        x += span;
-        p.jobs.push_back(j);
-        p.pixels += j.len;
-    }
-    p.height = y + 1;
-    return p;
-}
-
-frame_constants random_constants(uint64_t seed) {
-    tb::split_rng r(seed, 1u << 30);
-    frame_constants k;
-    k.n = static_cast<unsigned>(r.range(1, 1000));
-    for (int c = 0; c < 3; ++c) {
-        k.ksi[c] = r.range(0, 255);
-        k.kdi[c] = r.range(0, pipeline::kdi_fmt.mask());
-        k.ambient[c] = r.range(0, 255 * 256);
-    }
-    return k;
-}
-
-// ---- Side by side ----
-
-// Compares the two pipelines' pins at every edge (samples taken after the edge's writes settle:
-// at the next opposite edge, which reads the values both held through the phase).
-class pin_comparator : public sc_core::sc_module {
-public:
-    using coord_t = sc_dt::sc_uint<16>;
-    sc_core::sc_in<bool> clk{"clk"};
-    sc_core::sc_in<bool> ready_b{"ready_b"}, ready_f{"ready_f"}, valid_b{"valid_b"}, valid_f{"valid_f"};
-    sc_core::sc_in<coord_t> x_b{"x_b"}, x_f{"x_f"}, y_b{"y_b"}, y_f{"y_f"};
-    sc_core::sc_vector<sc_core::sc_in<pipeline::sample_t>> px_b{"px_b", 3}, px_f{"px_f", 3};
-
-    SC_HAS_PROCESS(pin_comparator);
-    explicit pin_comparator(const sc_core::sc_module_name& name) : sc_module(name) {
-        SC_METHOD(on_edge);
-        sensitive << clk;
-        dont_initialize();
-    }
-    std::size_t differences() const { return diffs_; }
-    std::size_t edges() const { return edges_; }
-    std::size_t valid_edges() const { return valid_edges_; }
-
-private:
-    void on_edge() {
-        ++edges_;
-        // Values held through the phase that this edge ends.
-        bool same = ready_b.read() == ready_f.read();
-        if (clk.read()) {
-            same = same && valid_b.read() == valid_f.read() && x_b.read() == x_f.read() && y_b.read() == y_f.read();
-            if (valid_b.read()) {
-                ++valid_edges_;
-                for (int c = 0; c < 3; ++c) same = same && px_b[c].read() == px_f[c].read();
-            }
-        }
-        if (!same && diffs_++ < 5) {
-            std::printf("pins differ at %s (%s edge): ready %d/%d valid %d/%d x %u/%u y %u/%u r %x/%x\n",
-                        sc_core::sc_time_stamp().to_string().c_str(), clk.read() ? "rising" : "falling",
-                        int(ready_b.read()), int(ready_f.read()), int(valid_b.read()), int(valid_f.read()),
-                        x_b.read().to_uint(), x_f.read().to_uint(), y_b.read().to_uint(), y_f.read().to_uint(),
-                        px_b[0].read().to_uint(), px_f[0].read().to_uint());
-        }
-    }
-    std::size_t diffs_ = 0, edges_ = 0, valid_edges_ = 0;
-};
-
+// random_plan, random_constants, pin_comparator and pair_bench: pipeline_pair.h.
 template <class AGen, evaluator EVAL>
-class pair_bench : public sc_core::sc_module {
-public:
-    using coord_t = sc_dt::sc_uint<16>;
-    using block_t = shading_pipeline<AGen, EVAL>;
-    using fast_t = shading_pipeline_fast<EVAL>;
-    struct outs {
-        sc_core::sc_signal<bool> ready, valid;
-        sc_core::sc_signal<coord_t> x, y;
-        sc_core::sc_signal<pipeline::sample_t> r, g, b;
-    };
-
-    sc_core::sc_clock clk{"clk", pipeline_period()};
-    sc_core::sc_signal<bool> start{"start"}, load_frame{"load_frame"};
-    sc_core::sc_signal<coord_t> y{"y"}, x0{"x0"};
-    sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::len_bits>> len{"len"};
-    sc_core::sc_signal<sc_dt::sc_uint<sample_ctrl::m_bits>> m{"m"};
-    sc_core::sc_signal<sc_dt::sc_uint<1>> deg2{"deg2"};
-    sc_core::sc_vector<sc_core::sc_signal<pipeline::cos_t>> nh{"nh", 4}, nl{"nl", 4};
-    sc_core::sc_signal<sc_dt::sc_uint<ua60553::n_fmt.width>> n{"n"};
-    sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipeline::kdi_t>> kdi{"kdi", 3};
-    sc_core::sc_vector<sc_core::sc_signal<pipeline::sample_t>> amb{"amb", 3};
-    outs ob, of;
-
-    block_t blk;
-    fast_t fst;
-    frame_buffer fb_b, fb_f;
-    geometry_source src;
-    pipeline_checker chk_b, chk_f;
-    pin_comparator cmp{"cmp"};
-
-    pair_bench(const sc_core::sc_module_name& name, const plan& p, const frame_constants& k,
-               const scene::device_config& dev, const plan_config& c, const typename AGen::config& gen,
-               interp::sample_set fast_set)
-        : sc_module(name), blk("blk", dev.mode, gen, c.set, c.div, fd_m(c), {}, {}, c.carry_samples),
-          fst("fst", dev, fast_set, c.div, fd_m(c), c.carry_samples),
-          fb_b("fb_b", p.width, p.height), fb_f("fb_f", p.width, p.height),
-          src("src", p, k, [this] { return blk.idle() && fst.idle(); }),
-          chk_b(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0), chk_f(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0) {
-        bind(blk, ob);
-        bind(fst, of);
-        fb_b.clk(clk); fb_b.valid(ob.valid); fb_b.x(ob.x); fb_b.y(ob.y); fb_b.r(ob.r); fb_b.g(ob.g); fb_b.b(ob.b);
-        fb_f.clk(clk); fb_f.valid(of.valid); fb_f.x(of.x); fb_f.y(of.y); fb_f.r(of.r); fb_f.g(of.g); fb_f.b(of.b);
-        fb_b.on_write([this](unsigned px, unsigned py, const frame_buffer::rgb& v) { chk_b.check(px, py, v); });
-        fb_f.on_write([this](unsigned px, unsigned py, const frame_buffer::rgb& v) { chk_f.check(px, py, v); });
-        bind_geometry_source(src, *this, ob.ready);
-        cmp.clk(clk);
-        cmp.ready_b(ob.ready); cmp.ready_f(of.ready); cmp.valid_b(ob.valid); cmp.valid_f(of.valid);
-        cmp.x_b(ob.x); cmp.x_f(of.x); cmp.y_b(ob.y); cmp.y_f(of.y);
-        cmp.px_b[0](ob.r); cmp.px_b[1](ob.g); cmp.px_b[2](ob.b);
-        cmp.px_f[0](of.r); cmp.px_f[1](of.g); cmp.px_f[2](of.b);
-    }
-    bool finished() const { return src.finished(); }
-
-private:
-    template <class D>
-    void bind(D& d, outs& o) {
-        bind_pipeline_inputs(d, *this);
-        d.ready(o.ready);
-        d.px_valid(o.valid); d.px_x(o.x); d.px_y(o.y); d.px_r(o.r); d.px_g(o.g); d.px_b(o.b);
-    }
-};
+using fast_pair = pair_bench<AGen, EVAL, shading_pipeline_fast<EVAL>>;
 
 struct pair_case {
     const char* name;
@@ -240,13 +70,14 @@ void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_
     c.div = pc.seed % 5 ? interp::div3_mode::shift_add : interp::div3_mode::exact;
     const auto fast_set = !other_set ? c.set
                           : c.set == interp::sample_set::case1 ? interp::sample_set::case2 : interp::sample_set::case1;
-    auto bench = std::make_unique<pair_bench<AGen, EVAL>>("tb", p, k, dev, c, gen, fast_set);
-    uint64_t clocks = 100;  // a watchdog far beyond the plan (pipeline_sim_run.h's, doubled)
-    for (const auto& j : p.jobs) clocks += 2 * (14 + 14 * 4 + 6ull * std::min(j.len, 64u));
-    sc_core::sc_start(pipeline_period() * static_cast<double>(clocks));
+    const auto fast_idle = [](const shading_pipeline_fast<EVAL>& f) { return f.idle(); };
+    auto bench = std::make_unique<fast_pair<AGen, EVAL>>("tb", p, k, dev, c, gen, fast_idle, "fst", dev, fast_set,
+                                                         c.div, fd_m(c), c.carry_samples);
+    const auto& fst = bench->other;
+    sc_core::sc_start(pipeline_period() * static_cast<double>(pair_watchdog_clocks(p)));
     ASSERT_TRUE(bench->finished());
     bench->chk_b.finish();
-    bench->chk_f.finish();
+    bench->chk_o.finish();
     if (other_set) {
         EXPECT_GT(bench->cmp.differences(), 10u);
         EXPECT_EQ(bench->chk_b.mismatches(), 0u);
@@ -256,21 +87,21 @@ void run_pair(const pair_case& pc, const typename AGen::config& gen, bool other_
     EXPECT_EQ(bench->cmp.differences(), 0u);
     EXPECT_GT(bench->cmp.valid_edges(), 500u);
     EXPECT_EQ(bench->chk_b.mismatches(), 0u);
-    EXPECT_EQ(bench->chk_f.mismatches(), 0u);
-    EXPECT_EQ(bench->chk_f.order(), bench->chk_b.order());
-    EXPECT_EQ(bench->fst.dropped(), bench->chk_f.dropped());
-    EXPECT_GT(bench->fst.dropped(), 5u);
-    EXPECT_EQ(bench->fst.samples(), bench->blk.samples());
-    EXPECT_EQ(bench->fst.carried(), bench->blk.carried());
+    EXPECT_EQ(bench->chk_o.mismatches(), 0u);
+    EXPECT_EQ(bench->chk_o.order(), bench->chk_b.order());
+    EXPECT_EQ(fst.dropped(), bench->chk_o.dropped());
+    EXPECT_GT(fst.dropped(), 5u);
+    EXPECT_EQ(fst.samples(), bench->blk.samples());
+    EXPECT_EQ(fst.carried(), bench->blk.carried());
     if (pc.carry) {
         EXPECT_GT(bench->blk.carried(), 50u);
     } else {
         EXPECT_EQ(bench->blk.carried(), 0u);
     }
     // Each invalid job is reported once by each pipeline.
-    EXPECT_EQ(tb::report_log::get().count(msg::input), 2 * bench->chk_f.dropped());
+    EXPECT_EQ(tb::report_log::get().count(msg::input), 2 * bench->chk_o.dropped());
     std::printf("%s: %zu pins compared over %zu edges, %zu pixels, %zu jobs dropped\n", pc.name,
-                bench->cmp.valid_edges(), bench->cmp.edges(), bench->chk_f.written(), bench->chk_f.dropped());
+                bench->cmp.valid_edges(), bench->cmp.edges(), bench->chk_o.written(), bench->chk_o.dropped());
     bench.release();  // elaborated for the process's life
 }
 
