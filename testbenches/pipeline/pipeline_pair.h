@@ -205,7 +205,8 @@ public:
           fb_b("fb_b", p.width, p.height), fb_o("fb_o", p.width, p.height),
           src("src", p, k, [this, other_idle] { return blk.idle() && (!other_idle || other_idle(other)); }),
           chk_b(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0), chk_o(p, k, dev, c, EVAL == evaluator::fd ? fd_m(c) : 0) {
-        if constexpr (std::is_same_v<decltype(other.in_deg2), sc_core::sc_in<bool>>) {
+        // (A Verilated model's ports are references: decltype gives sc_in<bool>&.)
+        if constexpr (std::is_same_v<std::remove_reference_t<decltype(other.in_deg2)>, sc_core::sc_in<bool>>) {
             deg2_wire = std::make_unique<bit_to_bool>("deg2_wire");
             deg2_wire->x(deg2);
             deg2_wire->y(deg2_bit);

@@ -1,0 +1,168 @@
+// The shading pipeline's Verilog twin (rtl/pipeline/shading_pipeline.v with the square-and-multiply
+// device, verilated with --sc) co-simulated with the SystemC block model shading_pipeline<sqmul_device,
+// EVAL> on the same input pins and clock, with the side-by-side bench of pipeline_pair.h: random jobs
+// (every m, lengths, degrees, exact pixels, invalid jobs) and frame constants; every pin of the two
+// compared at every edge (ready at every edge, px_valid / px_x / px_y at rising edges, px_r/g/b
+// where px_valid = 1); each frame buffer's pixels against golden_interval.
+// Three verilated variants spread the parameters (testbenches/rtl/pipeline.cmake): every one takes
+// both values in some variant, and so does the device's overflow mode.
+//   Horner    EVAL 0          SET 0 (case 1)  DIV 0 (shift-add)  CARRY 1  SATURATE 1
+//   FdAnyM    EVAL 1, FD_M 0  SET 1 (case 2)  DIV 1 (exact)      CARRY 0  SATURATE 0
+//   FdM4      EVAL 1, FD_M 4  SET 0 (case 1)  DIV 1 (exact)      CARRY 1  SATURATE 0
+// Each variant on a plan of independent jobs and on one whose jobs chain (half start at the job
+// before's last sample: the carry's case). A negative test: the model built with the other sample
+// set than the RTL must differ at the pins. One elaboration per test (gtest_discover_tests runs
+// each in its own process). SHADING_TRACE=<dir>: <dir>/<Suite.Test>.vcd (the bench's SystemC
+// signals, the model's nets) and <dir>/<Suite.Test>_rtl.vcd (every net inside the RTL).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include "testbenches/common/report_log.h"
+#include "testbenches/common/sim_guard.h"
+#include "testbenches/pipeline/pipeline_pair.h"
+#include "core/report_ids.h"
+#include "core/trace.h"
+#include "sqmul/sqmul_device.h"
+#include "verilated.h"
+#include "verilated_vcd_sc.h"
+
+// The verilated pipelines (testbenches/rtl/pipeline.cmake).
+#include "Vrtl_pipeline_fd_any.h"
+#include "Vrtl_pipeline_fd_m4.h"
+#include "Vrtl_pipeline_horner.h"
+
+using namespace shading;
+using namespace shading::pipeline;
+
+namespace {
+
+// One verilated variant and the SystemC configuration that matches its parameters.
+template <class Rtl, evaluator EVAL, unsigned FD_M, interp::sample_set SET, interp::div3_mode DIV, bool CARRY,
+          overflow_mode MODE>
+struct variant {
+    using rtl = Rtl;
+    static constexpr evaluator eval = EVAL;
+    static constexpr unsigned fd_m = FD_M;  // forward differences: 0 any m per interval
+    static constexpr interp::sample_set set = SET;
+    static constexpr interp::div3_mode div = DIV;
+    static constexpr bool carry = CARRY;
+    static constexpr overflow_mode mode = MODE;
+};
+
+using horner = variant<Vrtl_pipeline_horner, evaluator::horner, 0, interp::sample_set::case1,
+                       interp::div3_mode::shift_add, true, overflow_mode::saturate>;
+using fd_any = variant<Vrtl_pipeline_fd_any, evaluator::fd, 0, interp::sample_set::case2, interp::div3_mode::exact,
+                       false, overflow_mode::wrap>;
+using fd_m4 = variant<Vrtl_pipeline_fd_m4, evaluator::fd, 4, interp::sample_set::case1, interp::div3_mode::exact,
+                      true, overflow_mode::wrap>;
+
+template <class V>
+using rtl_pair = pair_bench<sqmul_device, V::eval, typename V::rtl>;
+
+// Runs the bench to its end; with SHADING_TRACE=<dir> it writes the test's two VCDs (as
+// rtl_cosim_tb.h's run_cosim: a Verilated model's internals are not SystemC signals).
+template <class Bench>
+bool run_traced(Bench& bench, const sc_core::sc_time& limit) {
+    const char* dir = std::getenv("SHADING_TRACE");
+    const std::string stem = dir && *dir ? std::string(dir) + "/" + tb::current_test_name() : std::string();
+    std::unique_ptr<vcd_file> vcd;
+    std::unique_ptr<VerilatedVcdSc> rtl_vcd;
+    if (!stem.empty()) {
+        vcd = std::make_unique<vcd_file>(stem);
+        vcd->trace(bench);
+    }
+    sc_core::sc_start(sc_core::SC_ZERO_TIME);  // Verilator traces an elaborated, initialised model
+    if (!stem.empty()) {
+        rtl_vcd = std::make_unique<VerilatedVcdSc>();
+        bench.other.trace(rtl_vcd.get(), 99);
+        rtl_vcd->open((stem + "_rtl.vcd").c_str());
+    }
+    sc_core::sc_start(limit);
+    if (rtl_vcd) rtl_vcd->close();
+    return bench.finished();
+}
+
+// chain: a plan whose jobs chain (the carry's case); other_set: the model built with the cubic
+// sample set the RTL was not (the comparison must then see differences: it can fail).
+template <class V>
+void run_rtl(uint64_t seed, bool chain, bool other_set = false) {
+    tb::report_log::get().expect(msg::input);  // the invalid jobs, reported by the model
+    Verilated::traceEverOn(true);
+    const plan p = random_plan(seed, 400, 64, V::fd_m, 12, chain);
+    const frame_constants k = random_constants(seed);
+    scene::device_config dev;
+    dev.device = scene::specular_device::sqmul;
+    dev.mode = V::mode;
+    plan_config c;
+    c.carry_samples = V::carry;
+    c.eval = V::eval;
+    c.length = V::fd_m == 0 ? length_policy::adaptive : length_policy::fixed;
+    c.m = V::fd_m == 0 ? 4 : V::fd_m;
+    using interp::sample_set;
+    c.set = !other_set ? V::set : V::set == sample_set::case1 ? sample_set::case2 : sample_set::case1;
+    c.div = V::div;
+    auto bench = std::make_unique<rtl_pair<V>>("tb", p, k, dev, c, sqmul_device::default_config(),
+                                               std::function<bool(const typename V::rtl&)>{}, "rtl");
+    const bool finished = run_traced(*bench, pipeline_period() * static_cast<double>(pair_watchdog_clocks(p)));
+    ASSERT_TRUE(finished);
+    bench->chk_b.finish();
+    bench->chk_o.finish();
+    std::printf("%zu pins compared over %zu edges, %zu differences; %zu pixels (RTL), %zu jobs dropped, "
+                "%zu samples carried\n",
+                bench->cmp.valid_edges(), bench->cmp.edges(), bench->cmp.differences(), bench->chk_o.written(),
+                bench->chk_b.dropped(), bench->blk.carried());
+    if (other_set) {
+        EXPECT_GT(bench->cmp.differences(), 10u);
+        EXPECT_EQ(bench->chk_b.mismatches(), 0u);  // the model against its own golden configuration
+        EXPECT_GT(bench->chk_o.mismatches(), 10u);  // the RTL against the model's
+        bench.release();
+        return;
+    }
+    EXPECT_EQ(bench->cmp.differences(), 0u);
+    EXPECT_GT(bench->cmp.valid_edges(), 500u);
+    EXPECT_EQ(bench->chk_b.mismatches(), 0u) << "SystemC model against golden_interval";
+    EXPECT_EQ(bench->chk_o.mismatches(), 0u) << "RTL against golden_interval";
+    EXPECT_EQ(bench->chk_o.written(), bench->chk_o.pixels());
+    EXPECT_EQ(bench->chk_o.order(), bench->chk_b.order());
+    // The invalid jobs: dropped by the model (each reported once) and by the RTL (no pixel of theirs
+    // written: the checker counts such a write as a mismatch).
+    EXPECT_EQ(bench->blk.ctl_sample.dropped(), bench->chk_b.dropped());
+    EXPECT_GT(bench->chk_b.dropped(), 5u);
+    EXPECT_EQ(tb::report_log::get().count(msg::input), bench->chk_b.dropped());
+    if (V::carry && chain) {
+        EXPECT_GT(bench->blk.carried(), 50u);
+    } else if (!V::carry) {
+        EXPECT_EQ(bench->blk.carried(), 0u);
+    }
+    bench.release();  // elaborated for the process's life
+}
+
+template <class V>
+class RtlPipeline : public ::testing::Test {};
+
+struct names {
+    template <class V>
+    static std::string GetName(int) {
+        if (V::eval == evaluator::horner) return "Horner";
+        return V::fd_m == 0 ? "FdAnyM" : "FdM" + std::to_string(V::fd_m);
+    }
+};
+
+using variants = ::testing::Types<horner, fd_any, fd_m4>;
+
+}  // namespace
+
+TYPED_TEST_SUITE(RtlPipeline, variants, names);
+
+TYPED_TEST(RtlPipeline, RandomJobsSameAtEveryEdge) { run_rtl<TypeParam>(21, false); }
+TYPED_TEST(RtlPipeline, ChainedJobsSameAtEveryEdge) { run_rtl<TypeParam>(22, true); }
+
+// The comparison can fail: the model built with the other cubic sample set than the Horner RTL.
+TEST(RtlPipelineVerdict, AnotherSampleSetIsSeen) {
+    tb::report_log::get().expect(msg::mismatch);  // the RTL's frame buffer checker
+    run_rtl<horner>(23, false, true);
+}
