@@ -27,9 +27,10 @@ namespace shading::pipeline {
 // about one in `bad_every` invalid (len 0, len > 2^m, m 1 or 7, an exact quadratic; refused and
 // reported by the SystemC pipelines), the rest valid for the evaluator (fd_m != 0: that m or
 // exact pixels). chain: about half the jobs start at the codes of the job before's last sample, as a
-// planned line's do (the carry's case).
+// planned line's do (the carry's case). nh_above_one: about one N.H code in four above 1.0 (the
+// device's input checker reports them; its overflow mode decides what it makes of them).
 inline plan random_plan(uint64_t seed, std::size_t jobs, unsigned w, unsigned fd_m, unsigned bad_every,
-                        bool chain = false) {
+                        bool chain = false, bool nh_above_one = false) {
     plan p;
     p.width = w;
     unsigned x = 0, y = 0;
@@ -44,10 +45,12 @@ inline plan random_plan(uint64_t seed, std::size_t jobs, unsigned w, unsigned fd
         j.len = j.m == 0 ? 1 : static_cast<unsigned>(r.range(1, 1u << j.m));
         j.deg2 = j.m != 0 && r.range(0, 2) == 0;
         for (auto& s : j.s) {
-            // Q1.15 codes in [0, 1] (above 1.0 the device's input checker reports them).
+            // Q1.15 codes in [0, 1].
             const uint64_t one = uint64_t{1} << spec::cos_fmt.frac;
             s.cos_nl = static_cast<uint32_t>(r.range(0, one));
             s.cos_nh = s.cos_nl == 0 ? 0 : static_cast<uint32_t>(r.range(0, one));
+            if (nh_above_one && r.range(0, 3) == 0)
+                s.cos_nh = static_cast<uint32_t>(r.range(one + 1, spec::cos_fmt.mask()));
         }
         if (chain && r.range(0, 1) == 0) j.s[0] = last;
         if (j.m == 0) j.s[1] = j.s[2] = j.s[3] = j.s[0];

@@ -36,6 +36,15 @@ foreach(_m 2 3 5 6)
   shading_rtl_lint(pipeline.fd_m${_m} -GEVAL=1 -GFD_M=${_m} --top-module shading_pipeline
                    ${SHADING_RTL_DIR}/pipeline/shading_pipeline.v ${_pipe_ydirs})
 endforeach()
+# The parts at the parameter values the top does not reach: the sample channel's fourth cubic unit
+# (case 2, shift-add) and the sample controller for UA 60553's unclocked device (output 29 =
+# strobe 17), with and without the carry, for any m and for fixed m = 4.
+shading_rtl_lint(pipeline.sample_channel.c2sa -GSET=1 -GDIV=0 --top-module sample_channel
+                 ${SHADING_RTL_DIR}/pipeline/sample_channel.v ${_pipe_ydirs})
+shading_rtl_lint(pipeline.sample_ctrl.unclocked -GCLOCKED=0 -GCARRY=1 --top-module sample_ctrl
+                 ${SHADING_RTL_DIR}/pipeline/sample_ctrl.v ${_pipe_ydirs})
+shading_rtl_lint(pipeline.sample_ctrl.unclocked_fd_m4 -GCLOCKED=0 -GFD_M=4 --top-module sample_ctrl
+                 ${SHADING_RTL_DIR}/pipeline/sample_ctrl.v ${_pipe_ydirs})
 
 if(NOT SHADING_RTL)
   shading_add_skipped(rtl.cosim.pipeline test_rtl_pipeline "${SHADING_RTL_SKIP_REASON}")

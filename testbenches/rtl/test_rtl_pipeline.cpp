@@ -5,15 +5,17 @@
 // compared at every edge (ready at every edge, px_valid / px_x / px_y at rising edges, px_r/g/b
 // where px_valid = 1); each frame buffer's pixels against golden_interval.
 // Three verilated variants spread the parameters (testbenches/rtl/pipeline.cmake): every one takes
-// both values in some variant, and so does the device's overflow mode.
-//   Horner    EVAL 0          SET 0 (case 1)  DIV 0 (shift-add)  CARRY 1  SATURATE 1
-//   FdAnyM    EVAL 1, FD_M 0  SET 1 (case 2)  DIV 1 (exact)      CARRY 0  SATURATE 0
-//   FdM4      EVAL 1, FD_M 4  SET 0 (case 1)  DIV 1 (exact)      CARRY 1  SATURATE 0
-// Each variant on a plan of independent jobs and on one whose jobs chain (half start at the job
-// before's last sample: the carry's case). A negative test: the model built with the other sample
-// set than the RTL must differ at the pins. One elaboration per test (gtest_discover_tests runs
-// each in its own process). SHADING_TRACE=<dir>: <dir>/<Suite.Test>.vcd (the bench's SystemC
-// signals, the model's nets) and <dir>/<Suite.Test>_rtl.vcd (every net inside the RTL).
+// both its values in some variant.
+//   horner    EVAL 0          SET 0 (case 1)  DIV 0 (shift-add)  CARRY 1  SATURATE 1
+//   fd_any_m  EVAL 1, FD_M 0  SET 1 (case 2)  DIV 1 (exact)      CARRY 0  SATURATE 0
+//   fd_m4     EVAL 1, FD_M 4  SET 0 (case 1)  DIV 1 (exact)      CARRY 1  SATURATE 0
+// Each variant on a plan of independent jobs, on one whose jobs chain (half start at the job
+// before's last sample: the carry's case), and on one with N.H codes above 1.0 (the only inputs
+// where the device's overflow mode shows: saturated to 1.0 or kept). Negative tests: the model
+// built with the other sample set, or the other overflow mode, than the RTL must differ at the pins. One elaboration per test
+// (gtest_discover_tests runs each in its own process). SHADING_TRACE=<dir>: <dir>/<Suite.Test>.vcd
+// (the bench's SystemC signals, the model's nets) and <dir>/<Suite.Test>_rtl.vcd (every net inside
+// the RTL).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -86,24 +88,31 @@ bool run_traced(Bench& bench, const sc_core::sc_time& limit) {
     return bench.finished();
 }
 
-// chain: a plan whose jobs chain (the carry's case); other_set: the model built with the cubic
-// sample set the RTL was not (the comparison must then see differences: it can fail).
+// What a run varies: chain, a plan whose jobs chain (the carry's case); above_one, N.H codes above
+// 1.0 too (what the device makes of them is its overflow mode's: SATURATE); other_set, other_mode:
+// the model built with the cubic sample set or the overflow mode the RTL was not (the comparison must
+// then see differences).
+struct run_kind {
+    bool chain = false, above_one = false, other_set = false, other_mode = false;
+};
+
 template <class V>
-void run_rtl(uint64_t seed, bool chain, bool other_set = false) {
-    tb::report_log::get().expect(msg::input);  // the invalid jobs, reported by the model
+void run_rtl(uint64_t seed, run_kind rk) {
+    tb::report_log::get().expect(msg::input);  // the invalid jobs (and N.H above 1.0), reported by the model
     Verilated::traceEverOn(true);
-    const plan p = random_plan(seed, 400, 64, V::fd_m, 12, chain);
+    const plan p = random_plan(seed, 400, 64, V::fd_m, 12, rk.chain, rk.above_one);
     const frame_constants k = random_constants(seed);
     scene::device_config dev;
     dev.device = scene::specular_device::sqmul;
-    dev.mode = V::mode;
+    const overflow_mode flipped = V::mode == overflow_mode::wrap ? overflow_mode::saturate : overflow_mode::wrap;
+    dev.mode = rk.other_mode ? flipped : V::mode;
     plan_config c;
     c.carry_samples = V::carry;
     c.eval = V::eval;
     c.length = V::fd_m == 0 ? length_policy::adaptive : length_policy::fixed;
     c.m = V::fd_m == 0 ? 4 : V::fd_m;
     using interp::sample_set;
-    c.set = !other_set ? V::set : V::set == sample_set::case1 ? sample_set::case2 : sample_set::case1;
+    c.set = !rk.other_set ? V::set : V::set == sample_set::case1 ? sample_set::case2 : sample_set::case1;
     c.div = V::div;
     auto bench = std::make_unique<rtl_pair<V>>("tb", p, k, dev, c, sqmul_device::default_config(),
                                                std::function<bool(const typename V::rtl&)>{}, "rtl");
@@ -115,7 +124,7 @@ void run_rtl(uint64_t seed, bool chain, bool other_set = false) {
                 "%zu samples carried\n",
                 bench->cmp.valid_edges(), bench->cmp.edges(), bench->cmp.differences(), bench->chk_o.written(),
                 bench->chk_b.dropped(), bench->blk.carried());
-    if (other_set) {
+    if (rk.other_set || rk.other_mode) {
         EXPECT_GT(bench->cmp.differences(), 10u);
         EXPECT_EQ(bench->chk_b.mismatches(), 0u);  // the model against its own golden configuration
         EXPECT_GT(bench->chk_o.mismatches(), 10u);  // the RTL against the model's
@@ -132,8 +141,12 @@ void run_rtl(uint64_t seed, bool chain, bool other_set = false) {
     // written: the checker counts such a write as a mismatch).
     EXPECT_EQ(bench->blk.ctl_sample.dropped(), bench->chk_b.dropped());
     EXPECT_GT(bench->chk_b.dropped(), 5u);
-    EXPECT_EQ(tb::report_log::get().count(msg::input), bench->chk_b.dropped());
-    if (V::carry && chain) {
+    if (rk.above_one) {
+        EXPECT_GT(tb::report_log::get().count(msg::input), bench->chk_b.dropped() + 50);  // and the codes above 1.0
+    } else {
+        EXPECT_EQ(tb::report_log::get().count(msg::input), bench->chk_b.dropped());
+    }
+    if (V::carry && rk.chain) {
         EXPECT_GT(bench->blk.carried(), 50u);
     } else if (!V::carry) {
         EXPECT_EQ(bench->blk.carried(), 0u);
@@ -141,28 +154,43 @@ void run_rtl(uint64_t seed, bool chain, bool other_set = false) {
     bench.release();  // elaborated for the process's life
 }
 
-template <class V>
-class RtlPipeline : public ::testing::Test {};
-
-struct names {
-    template <class V>
-    static std::string GetName(int) {
-        if (V::eval == evaluator::horner) return "Horner";
-        return V::fd_m == 0 ? "FdAnyM" : "FdM" + std::to_string(V::fd_m);
-    }
+struct rtl_case {
+    const char* name;
+    void (*run)(uint64_t, run_kind);  // run_rtl<variant>
+    uint64_t seed;
+    run_kind kind;
 };
+void PrintTo(const rtl_case& c, std::ostream* os) { *os << c.name; }
 
-using variants = ::testing::Types<horner, fd_any, fd_m4>;
+class RtlPipeline : public ::testing::TestWithParam<rtl_case> {};
 
 }  // namespace
 
-TYPED_TEST_SUITE(RtlPipeline, variants, names);
+TEST_P(RtlPipeline, SameAsModelAtEveryEdge) {
+    const rtl_case rc = GetParam();
+    rc.run(rc.seed, rc.kind);
+}
 
-TYPED_TEST(RtlPipeline, RandomJobsSameAtEveryEdge) { run_rtl<TypeParam>(21, false); }
-TYPED_TEST(RtlPipeline, ChainedJobsSameAtEveryEdge) { run_rtl<TypeParam>(22, true); }
+INSTANTIATE_TEST_SUITE_P(
+    Random, RtlPipeline,
+    ::testing::Values(rtl_case{"horner", run_rtl<horner>, 21, {}},
+                      rtl_case{"horner_chained", run_rtl<horner>, 22, {true}},
+                      rtl_case{"horner_above_one", run_rtl<horner>, 24, {false, true}},
+                      rtl_case{"fd_any_m", run_rtl<fd_any>, 21, {}},
+                      rtl_case{"fd_any_m_chained", run_rtl<fd_any>, 22, {true}},
+                      rtl_case{"fd_any_m_above_one", run_rtl<fd_any>, 24, {false, true}},
+                      rtl_case{"fd_m4", run_rtl<fd_m4>, 21, {}},
+                      rtl_case{"fd_m4_chained", run_rtl<fd_m4>, 22, {true}},
+                      rtl_case{"fd_m4_above_one", run_rtl<fd_m4>, 24, {true, true}}),
+    [](const ::testing::TestParamInfo<rtl_case>& i) { return std::string(i.param.name); });
 
-// The comparison can fail: the model built with the other cubic sample set than the Horner RTL.
+// The comparison can fail: the model built with the other cubic sample set than the Horner RTL, or
+// (N.H above 1.0) with the other overflow mode than the forward-difference RTL's wrap.
 TEST(RtlPipelineVerdict, AnotherSampleSetIsSeen) {
     tb::report_log::get().expect(msg::mismatch);  // the RTL's frame buffer checker
-    run_rtl<horner>(23, false, true);
+    run_rtl<horner>(23, {false, false, true});
+}
+TEST(RtlPipelineVerdict, AnotherOverflowModeIsSeen) {
+    tb::report_log::get().expect(msg::mismatch);
+    run_rtl<fd_any>(24, {false, true, false, true});
 }
