@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <string>
 #include <systemc>
 #include <type_traits>
 #include <utility>
@@ -171,7 +172,12 @@ class pair_bench : public sc_core::sc_module {
 public:
     using coord_t = sc_dt::sc_uint<16>;
     using block_t = shading_pipeline<AGen, EVAL>;
+    // One pipeline's outputs, named <pin>_<side> in a trace (side b: the block level, o: the other).
     struct outs {
+        explicit outs(const std::string& side)
+            : ready(("ready_" + side).c_str()), valid(("px_valid_" + side).c_str()), x(("px_x_" + side).c_str()),
+              y(("px_y_" + side).c_str()), r(("px_r_" + side).c_str()), g(("px_g_" + side).c_str()),
+              b(("px_b_" + side).c_str()) {}
         sc_core::sc_signal<bool> ready, valid;
         sc_core::sc_signal<coord_t> x, y;
         sc_core::sc_signal<pipeline::sample_t> r, g, b;
@@ -189,7 +195,7 @@ public:
     sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_uint<spec::ksi_fmt.width>>> ksi{"ksi", 3};
     sc_core::sc_vector<sc_core::sc_signal<pipeline::kdi_t>> kdi{"kdi", 3};
     sc_core::sc_vector<sc_core::sc_signal<pipeline::sample_t>> amb{"amb", 3};
-    outs ob, oo;
+    outs ob{"b"}, oo{"o"};
 
     block_t blk;
     Other other;
