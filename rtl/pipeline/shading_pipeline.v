@@ -19,7 +19,8 @@
 // The evaluators and the pixel controller sit in the generate block `evaluator` (Verilog scopes
 // an if-generate): evaluator.horner_r, evaluator.ctl_pixel where the SystemC model has horner_r,
 // ctl_pixel. Only instantiates and wires; every width from shading_formats.vh and interp_terms.vh
-// (the job registers' widths: pipeline_pins.h).
+// (the job registers' widths: pipeline_pins.h). Co-simulated pin for pin with the SystemC pipeline
+// (testbenches/rtl/test_rtl_pipeline.cpp).
 `include "shading_formats.vh"
 `include "interp_terms.vh"
 module shading_pipeline #(
