@@ -1,0 +1,31 @@
+# The cell unit's RTL twin (rtl/pipeline/cell_unit.v with cell_channel.v, cell_ctrl.v and
+# rtl/blocks/ram.v) co-simulated with the SystemC cell unit (test_rtl_cell_unit.cpp), and lint of the
+# top and its parts. Included by testbenches/rtl/CMakeLists.txt after interp.cmake (interp_terms.vh
+# generated); without Verilator or its SystemC trace file the co-simulation is registered as
+# skipped, with the reason.
+set(SHADING_RTL_CELL_DIRS ${SHADING_RTL_DIR}/pipeline ${SHADING_RTL_DIR}/interp ${SHADING_RTL_DIR}/blocks
+    ${SHADING_RTL_GENERATED})
+set(_cell_ydirs)
+foreach(_d IN LISTS SHADING_RTL_CELL_DIRS)
+  list(APPEND _cell_ydirs -y ${_d})
+endforeach()
+
+# Lint: the top, its parts, and the memory block at a depth that leaves addresses naming no word.
+foreach(_top cell_unit cell_channel cell_ctrl)
+  shading_rtl_lint(cell.${_top} --top-module ${_top} ${SHADING_RTL_DIR}/pipeline/${_top}.v ${_cell_ydirs})
+endforeach()
+shading_rtl_lint(blocks.ram -GDEPTH=64 --top-module ram ${SHADING_RTL_DIR}/blocks/ram.v)
+shading_rtl_lint(blocks.ram_partial -GDEPTH=48 --top-module ram ${SHADING_RTL_DIR}/blocks/ram.v)
+
+if(NOT SHADING_RTL)
+  shading_add_skipped(rtl.cosim.cell_unit test_rtl_cell_unit "${SHADING_RTL_SKIP_REASON}")
+  return()
+elseif(NOT SHADING_RTL_TRACE)
+  shading_add_skipped(rtl.cosim.cell_unit test_rtl_cell_unit "${SHADING_RTL_TRACE_SKIP_REASON}")
+  return()
+endif()
+
+shading_add_gtest(test_rtl_cell_unit SOURCES test_rtl_cell_unit.cpp LIBS shading_pipeline_sim shading_pipeline
+                  TIMEOUT 300)
+shading_verilate_rtl(test_rtl_cell_unit Vrtl_cell_unit TOP cell_unit SOURCE ${SHADING_RTL_DIR}/pipeline/cell_unit.v
+                     DIRS ${SHADING_RTL_CELL_DIRS})
