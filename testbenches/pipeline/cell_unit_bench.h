@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <systemc>
 #include <vector>
 
@@ -20,6 +21,9 @@
 #include "pipeline/cell_unit.h"
 #include "pipeline/frame_buffer.h"
 #include "pipeline_sim.h"
+#include "scene/raster.h"
+#include "scene/shade.h"
+#include "scene/world.h"
 
 namespace shading::tb {
 
@@ -184,6 +188,26 @@ inline std::vector<cell_input> cell_inputs(const pipeline::cell_plan& p, const p
     }
     return out;
 }
+
+// The head at size x size with the squared device (its scene read from source_dir), planned into
+// cells (forward differences; the pipeline's channel built for any m per interval, as simulate_frame
+// takes the rest): test_cell_unit's and test_rtl_cell_unit's real cells.
+struct head_cells {
+    head_cells(unsigned size, const std::string& source_dir)
+        : w(scene::builtin_scene("head", source_dir, size, size)), r(scene::rasterise(w)),
+          k(pipeline::frame_constants_of(w)) {
+        dev.device = scene::parse_device("squared");
+        c.eval = pipeline::evaluator::fd;
+        c.length = pipeline::length_policy::adaptive;
+        p = pipeline::make_cell_plan(r, k, dev, c, pipeline::cell_config{});
+    }
+    scene::world w;
+    scene::rasterised r;  // points at w
+    pipeline::frame_constants k;
+    scene::device_config dev;
+    pipeline::plan_config c;
+    pipeline::cell_plan p;
+};
 
 // The scheme's whole frame in SystemC (one elaboration: call once per process): the plan's cells
 // through the cell unit, its intervals and the cells' points through the shading pipeline

@@ -39,25 +39,6 @@ tb::cell_unit_bench& run(const std::vector<cell_input>& cells, unsigned width, u
     return *bench;
 }
 
-// The head at size x size with the squared device, planned into cells (forward differences; the
-// pipeline's channel built for any m per interval, as simulate_frame takes the rest).
-struct head_cells {
-    explicit head_cells(unsigned size)
-        : w(scene::builtin_scene("head", SHADING_SOURCE_DIR, size, size)), r(scene::rasterise(w)),
-          k(frame_constants_of(w)) {
-        dev.device = scene::parse_device("squared");
-        c.eval = evaluator::fd;
-        c.length = length_policy::adaptive;
-        p = make_cell_plan(r, k, dev, c, cell_config{});
-    }
-    scene::world w;
-    scene::rasterised r;  // points at w
-    frame_constants k;
-    scene::device_config dev;
-    plan_config c;
-    cell_plan p;
-};
-
 // Cells of 4, 8, 16, 32 and 64 pixels side by side (one row of the frame each), three of each size,
 // lattices over the whole code range: the biquadratic overshoots and the clamps are exercised.
 TEST(CellUnit, RandomLatticesBitExact) {
@@ -116,7 +97,7 @@ TEST(CellUnit, RampByHand) {
 // The cells the bit-accurate plan sends on the head at 256: the unit's frame equals the golden
 // frame's pixels there, except where a point's own colour replaces the biquadratic's.
 TEST(CellUnit, HeadPlanCells) {
-    const head_cells h(256);
+    const tb::head_cells h(256, SHADING_SOURCE_DIR);
     const scene::rasterised& r = h.r;
     const cell_plan& p = h.p;
     ASSERT_GT(p.cells.size(), 20u);
@@ -145,7 +126,7 @@ TEST(CellUnit, HeadPlanCells) {
 // per interval), the pipeline's frame buffer folded back over the cell unit's: code for code the
 // golden model's frame.
 TEST(CellUnit, HeadFrameEndToEnd) {
-    const head_cells h(192);
+    const tb::head_cells h(192, SHADING_SOURCE_DIR);
     const cell_plan& p = h.p;
     ASSERT_GT(p.cells.size(), 50u);
     ASSERT_GT(p.jobs.size(), 1000u);
