@@ -5,9 +5,10 @@
 // cell_pixels, and pipeline_pair.h's pin_comparator compares every output of the two at every edge
 // (ready at every edge, px_valid / px_x / px_y at rising edges, px_r/g/b where px_valid = 1). Random
 // full-range lattices in cells of every size (clamps included), in size order and shuffled (a cell of
-// one size after another of any size), and the sizes outside 2^2..2^6, taken as the nearest. The
-// negative test wires one lattice pin of the RTL to another cell position: the comparison must see
-// it. One elaboration per test (gtest_discover_tests runs each in its own process).
+// one size after another of any size), the head's planned cells at 256, and the sizes outside
+// 2^2..2^6, taken as the nearest. The negative test wires one lattice pin of the RTL to another
+// lattice position: the comparison must see it. One elaboration per test (gtest_discover_tests runs
+// each in its own process).
 // SHADING_TRACE=<dir>: <dir>/<Suite.Test>.vcd (the bench's SystemC signals, the model's nets) and
 // <dir>/<Suite.Test>_rtl.vcd (every net inside the RTL).
 #include <gtest/gtest.h>
@@ -214,6 +215,18 @@ TEST(RtlCellUnit, RandomLatticesEverySize) {
 // Four cells of each size in a random order: every hand-over from one size to another.
 TEST(RtlCellUnit, RandomLatticesShuffled) {
     const cell_set s = random_cells(7, 4, true);
+    expect_same(run_pair(s), s);
+}
+
+// The cells the bit-accurate plan sends on the head at 256 (squared device), with the lattice colours
+// the sample stage forms: real cells, back to back in the planner's order.
+TEST(RtlCellUnit, HeadPlanCells) {
+    const tb::head_cells h(256, SHADING_SOURCE_DIR);
+    ASSERT_GT(h.p.cells.size(), 20u);
+    cell_set s;
+    s.cells = tb::cell_inputs(h.p, h.k, h.dev);
+    s.width = h.r.width;
+    s.height = h.r.height;
     expect_same(run_pair(s), s);
 }
 
