@@ -37,7 +37,7 @@ def parse_stat(path):
             m = re.match(r"\s+\$_(S?DFF\w*|DFFE\w*|SR\w*|DLATCH\w*)_\s+(\d+)", line)
             if m:
                 r["ffs"] += int(m.group(2))
-            m = re.match(r"\s+(ua22802_a_rom\w*)\s+(\d+)", line)
+            m = re.match(r"\s+(ua22802_a_rom\w*|ram|\$paramod\S*\\ram)\s+(\d+)", line)
             if m:
                 r["blackboxes"] += int(m.group(2))
             m = re.search(r"Estimated number of transistors:\s+(\d+)", line)
@@ -112,6 +112,18 @@ DESCRIPTIONS = {
     "squared_series": "squared-quadratic device (ours), series stage (9 squarers), saturating",
     "sqmul_saturate": "square-and-multiply baseline (one multiplier over the bits of n), saturating",
     "sqmul_r2l_saturate": "square-and-multiply, right to left (a squarer and a multiplier per bit of n), saturating",
+    "pipe_sample_channel": "pipeline: sample channel (diffuse, ambient, colour, I1..I4, E1..E4, cubic case 1 with "
+                           "the shift-and-add /3 and quadratic coefficient units)",
+    "coef_quad": "quadratic coefficient unit",
+    "pipe_sample_ctrl": "pipeline: sample controller (clocked device, no carry)",
+    "pipe_horner_channel": "pipeline: Horner channel (degree multiplexers, the Fig. 4 unit with its controller, clamp)",
+    "pipe_fd_channel_m4": "pipeline: forward-difference channel, fixed m = 4",
+    "pipe_fd_channel_var": "pipeline: forward-difference channel, any m per interval",
+    "pipe_horner_pixel_ctrl": "pipeline: pixel controller for Horner",
+    "pipe_fd_pixel_ctrl": "pipeline: pixel controller for forward differences",
+    "pipeline_horner": "shading pipeline, Horner, square-and-multiply device (saturating)",
+    "pipeline_fd_var": "shading pipeline, forward differences for any m, square-and-multiply device (saturating)",
+    "cell_unit": "cell unit (ours), column buffers as memory (logic outside them)",
 }
 for _f in range(15, 21):
     DESCRIPTIONS["sqmul_p%d" % _f] = "square-and-multiply baseline at a Q1.%d P word, saturating" % _f
@@ -178,6 +190,15 @@ PATHS = {
     "loop_x": "register to register (right to left): RG_X -> MUL_X -> MX_X -> RG_X",
     "x_to_p": "register to register (right to left): RG_X -> MUL_P -> MX_P -> RG_P",
     "rg1_to_outputs": "strobe 15 to output: RG1 -> generator -> MUL10 -> ... -> 9 squarers -> output 25",
+    "nl_to_sample": "pipeline, into a sample register: RG_NL1 -> MX_NL -> the diffuse multiplier -> the ambient and "
+                    "colour adders -> MX_CARRY -> I1 (channel R)",
+    "specular_to_sample": "pipeline, into a sample register: the device's RG_P -> its colour multiplier -> the colour "
+                          "adder -> MX_CARRY -> I1 (channel R)",
+    "coef_to_eval": "pipeline: the coefficient units' registers -> their networks (/3) -> the degree multiplexers -> "
+                    "the evaluator's registers (Horner: MUL, Sm; forward differences: the set-up network) (channel R)",
+    "eval_loop": "pipeline: the evaluator's registers to themselves (Horner: RG -> MUL -> Sm -> RG; forward "
+                 "differences: the recurrence's adders) (channel R)",
+    "eval_to_pixels": "pipeline: the evaluator's registers -> the clamp -> px_r",
 }
 
 
@@ -288,6 +309,55 @@ def write_sqmul_designs(out, by, paths):
                 "%.1f (%s)" % (bound, by_path) if bound else "—",
                 " / ".join(str(k) for k in c), mean, times))
 
+
+
+# The pipeline's tops and their units (variant, instances): three sample and three evaluator
+# channels, one of each controller, the square-and-multiply device (its own row, sqmul_saturate).
+PIPELINE_PARTS = {
+    "pipeline_horner": (("pipe_sample_channel", 3), ("pipe_horner_channel", 3), ("pipe_sample_ctrl", 1),
+                        ("pipe_horner_pixel_ctrl", 1), ("sqmul_saturate", 1)),
+    "pipeline_fd_var": (("pipe_sample_channel", 3), ("pipe_fd_channel_var", 3), ("pipe_sample_ctrl", 1),
+                        ("pipe_fd_pixel_ctrl", 1), ("sqmul_saturate", 1)),
+}
+
+
+def write_pipeline(out, by, paths):
+    """The shading pipeline's tops beside the sum of their units' rows (each synthesized alone), and
+    the tops' paths of each kind (appended to synth.md)."""
+    tops = [t for t in PIPELINE_PARTS if t in by]
+    if not tops:
+        return
+    with open(os.path.join(out, "synth.md"), "a") as f:
+        f.write("\n## The shading pipeline, unit by unit\n\n")
+        f.write("Each unit synthesized alone (its row above) times its instances, beside the whole top. The top adds "
+                "its own registers (the job, the descriptor, the frame constants, N.H / N.L of the four samples) and "
+                "the sample multiplexers; synthesis of the whole drops what the top leaves unused (without the carry: "
+                "rg_last, rg_lnh, rg_lnl, the comparators) and merges logic the channels share (their evaluators' "
+                "controllers run in step).\n\n")
+        f.write("| top | unit | instances | transistors | flip-flops | depth (gates) |\n|---|---|---|---|---|---|\n")
+        for t in tops:
+            tr = ff = 0
+            complete = True
+            for unit, k in PIPELINE_PARTS[t]:
+                r = by.get(unit)
+                if r is None:
+                    complete = False
+                    f.write("| %s | %s | %d | — | — | — |\n" % (t, unit, k))
+                    continue
+                tr += k * r["transistors"]
+                ff += k * r["flip_flops"]
+                f.write("| %s | %s | %d | %d | %d | %d |\n" % (t, unit, k, r["transistors"], r["flip_flops"],
+                                                             r["depth_gates"]))
+            r = by[t]
+            if complete:
+                f.write("| %s | sum of the units | | %d | %d | |\n" % (t, tr, ff))
+            f.write("| %s | **the whole top** | 1 | %d | %d | %d |\n" % (t, r["transistors"], r["flip_flops"],
+                                                                      r["depth_gates"]))
+            if complete:
+                f.write("| %s | top - sum | | %+d (%+.1f %%) | %+d | |\n" % (
+                    t, r["transistors"] - tr, 100.0 * (r["transistors"] - tr) / tr, r["flip_flops"] - ff))
+        f.write("\nPaths of each kind (gates, `ltp -noff` between the nets named, paths.csv): %s.\n" % "; ".join(
+            "%s: %s" % (t, ", ".join("%s %s" % (k, d) for k, d in paths.get(t, {}).items()) or "—") for t in tops))
 
 
 def write_differences(out, by, fmt):
@@ -406,6 +476,7 @@ def main():
     paths = read_paths(args.out, names)
     write_comparison(args.out, by, paths)
     write_sqmul_designs(args.out, by, paths)
+    write_pipeline(args.out, by, paths)
 
     # Every ROM read as a memory must hold exactly words x word bits of the format tables
     # (ua22802_formats.h via shading_formats.vh): the device's ROM (F = 6) is UA22802_ROM_BITS.
@@ -422,6 +493,16 @@ def main():
             bad.append(name)
             print("synth: %s: the ROM read as a memory has %s bits, the format tables say %d" % (name, got, want),
                   file=sys.stderr)
+    # The cell unit's memories: rtl/blocks/ram.v's column buffers, each CELL_BUF_DEPTH words of a
+    # sample (interp_terms.vh, interp_formats.h), as many as the black boxes in its logic row.
+    if "cell_unit_bits" in names and "cell_unit" in by:
+        boxes = parse_stat(os.path.join(args.out, "logs", "cell_unit.stat"))["blackboxes"]
+        want = boxes * int(terms["CELL_BUF_DEPTH"]) * int(fmt["INTERP_SAMPLE_W"])
+        got = by["cell_unit"]["memory_bits"]
+        if got != want:
+            bad.append("cell_unit_bits")
+            print("synth: cell_unit_bits: %s memory bits, %d column buffers of %s words x %s bits say %d" % (
+                got, boxes, terms["CELL_BUF_DEPTH"], fmt["INTERP_SAMPLE_W"], want), file=sys.stderr)
     for name in failed:
         print("synth: no result for %s (see logs/%s.log)" % (name, name), file=sys.stderr)
     print("synth: wrote %s/synth.csv and synth.md (%d variants)" % (args.out, len(rows)))
