@@ -59,6 +59,20 @@ unsigned select_wires(unsigned max_code) {
     return w;
 }
 
+// pipeline_formats.h: the shading pipeline's sample stage and output.
+void write_pipeline_formats(std::ostream& os) {
+    using namespace shading;
+    os << "\n// pipeline_formats.h: the shading pipeline's sample stage and output (ours)\n";
+    define_fmt(os, "PIPELINE_KDI", pipeline::kdi_fmt);
+    define_fmt(os, "PIPELINE_DIFFUSE", pipeline::diffuse_fmt);
+    define(os, "PIPELINE_DIFFUSE_DROP", pipeline::diffuse_drop);
+    define_fmt(os, "PIPELINE_AMBIENT", pipeline::ambient_fmt);
+    define_fmt(os, "PIPELINE_AD", pipeline::ad_fmt);
+    define_fmt(os, "PIPELINE_COLOUR", pipeline::colour_fmt);
+    define(os, "PIPELINE_COLOUR_SAT_HI", pipeline::colour_fmt.mask());  // add_colour's saturation bound
+    define_fmt(os, "PIPELINE_PIXEL", pipeline::pixel_fmt);
+}
+
 int write_formats(const std::string& path, unsigned sqmul_frac) {
     using namespace shading;
     std::ofstream os(path);
@@ -170,16 +184,7 @@ int write_formats(const std::string& path, unsigned sqmul_frac) {
     define(os, "INTERP_M_MIN", interp::m_min);
     define(os, "INTERP_M_MAX", interp::m_max);
     define_fmt(os, "INTERP_FD", interp::fd_fmt);
-
-    os << "\n// pipeline_formats.h: the shading pipeline's sample stage and output (ours)\n";
-    define_fmt(os, "PIPELINE_KDI", pipeline::kdi_fmt);
-    define_fmt(os, "PIPELINE_DIFFUSE", pipeline::diffuse_fmt);
-    define(os, "PIPELINE_DIFFUSE_DROP", pipeline::diffuse_drop);
-    define_fmt(os, "PIPELINE_AMBIENT", pipeline::ambient_fmt);
-    define_fmt(os, "PIPELINE_AD", pipeline::ad_fmt);
-    define_fmt(os, "PIPELINE_COLOUR", pipeline::colour_fmt);
-    define(os, "PIPELINE_COLOUR_SAT_HI", pipeline::colour_fmt.mask());  // add_colour's saturation bound
-    define_fmt(os, "PIPELINE_PIXEL", pipeline::pixel_fmt);
+    write_pipeline_formats(os);
     os << "\n`endif\n";
     return os ? 0 : 1;
 }
