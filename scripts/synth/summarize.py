@@ -332,8 +332,9 @@ def write_pipeline(out, by, paths):
         f.write("Each unit synthesized alone (its row above) times its instances, beside the whole top. The top adds "
                 "its own registers (the job, the descriptor, the frame constants, N.H / N.L of the four samples) and "
                 "the sample multiplexers; synthesis of the whole drops what the top leaves unused (without the carry: "
-                "rg_last, rg_lnh, rg_lnl, the comparators) and merges logic the channels share (their evaluators' "
-                "controllers run in step).\n\n")
+                "rg_last, rg_lnh, rg_lnl, the comparators) and narrows what a unit's driver makes redundant, which free "
+                "pins hide from the unit alone (the forward differences' set-up and D3 register, fed by the "
+                "coefficient units).\n\n")
         f.write("| top | unit | instances | transistors | flip-flops | depth (gates) |\n|---|---|---|---|---|---|\n")
         for t in tops:
             tr = ff = 0
