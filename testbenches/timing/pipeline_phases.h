@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "monitors/phase_checker.h"
+#include "pipeline/cell_unit.h"
 #include "pipeline/shading_pipeline.h"
 #include "sqmul/sqmul_device.h"
 
@@ -73,6 +74,26 @@ private:
             (*amb[c])(amb_net[c]);
         }
     }
+};
+
+// The cell unit (ours) with every pin on a net of its own, as bound_pipeline.
+struct bound_cell : sc_core::sc_module {
+    cell_unit dut{"dut"};
+
+    explicit bound_cell(const sc_core::sc_module_name& name) : sc_module(name) {
+        dut.clk(clk_net); dut.start(start_net); dut.ready(ready_net);
+        dut.in_x0(x0_net); dut.in_y0(y0_net); dut.in_m(m_net);
+        dut.in_lat_r.bind(lat_r); dut.in_lat_g.bind(lat_g); dut.in_lat_b.bind(lat_b);
+        dut.px_valid(px_valid_net); dut.px_x(px_x_net); dut.px_y(px_y_net);
+        dut.px_r(px_r_net); dut.px_g(px_g_net); dut.px_b(px_b_net);
+    }
+
+private:
+    sc_core::sc_signal<bool> clk_net, start_net, ready_net, px_valid_net;
+    sc_core::sc_signal<cell_unit::coord_t> x0_net, y0_net, px_x_net, px_y_net;
+    sc_core::sc_signal<cell_unit::m_t> m_net;
+    sc_core::sc_vector<sc_core::sc_signal<cell_unit::sample_t>> lat_r{"lat_r", 9}, lat_g{"lat_g", 9}, lat_b{"lat_b", 9};
+    sc_core::sc_signal<cell_unit::sample_t> px_r_net, px_g_net, px_b_net;
 };
 
 // One clocked unit's requirements: the unit (the checker's parent, by hierarchical name) and the
