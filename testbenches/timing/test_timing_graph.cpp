@@ -3,6 +3,8 @@
 // multiplier 3 ns; blocks/rom.h: ROM 4 ns). Each TEST elaborates its own design (own process).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <memory>
 #include <string>
 #include <systemc>
@@ -17,6 +19,8 @@
 #include "core/report_ids.h"
 #include "core/timing_graph.h"
 #include "monitors/timing_checker.h"
+#include "pipeline_phases.h"
+#include "testbenches/pipeline/pipeline_bench.h"
 #include "tuned/ua60553_tuned.h"
 #include "ua22802/ua22802.h"
 #include "ua60553/ua60553.h"
@@ -291,4 +295,34 @@ TEST(TimingGraph, ReadingAPathBeforeElaborationIsReported) {
     (void)b.top.chk.path(0);
     EXPECT_EQ(tb::report_log::get().count(msg::config), before + 1);
     elaborate();
+}
+
+// The shading pipeline's clock (square-and-multiply device, Horner evaluator): the largest phase
+// requirements of its clocked units against hand sums of the default delays (core/comb_delay.h:
+// adder 1 ns, multiplier 3 ns, mux 0.3 ns, register 0.2 ns, inverter bank 0.1 ns; setup 0).
+TEST(PipelinePhases, HornerPipelineClockIsTheHandSumOfItsSlowestUnits) {
+    timing::bound_pipeline<sqmul_device, pipeline::evaluator::horner> top("tb", 0);
+    elaborate();
+    std::vector<timing::unit_phases> units;
+    timing::collect(top, units);
+    // 3 channels x (coef_quad, coef_cubic, horner) + the device's stage.
+    ASSERT_EQ(units.size(), 10u);
+    const auto b = timing::shortest_clock(units);
+    // Low: coef_cubic's rg_i1 -> net_c -> div3_c (case 1). net_c: C's 3 positive terms, a 2-adder
+    // tree (2 ns); its 4 negative ones, a 2-adder tree + inverter bank (2.1 ns); the last adder:
+    // 2.1 + 1 = 3.1 ns. div3_c (x/2 - x/8 - x/32 - x/128): 3 negative terms, 2 adders + inverter
+    // bank, then the last adder: 3.1 ns. 0.2 + 3.1 + 3.1 = 6.4 ns.
+    EXPECT_EQ(b.low, sc_time(6400, SC_PS));
+    const auto low_at = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.chk->min_low() == b.low; });
+    ASSERT_NE(low_at, units.end());
+    EXPECT_EQ(low_at->unit, "tb.dut.smp_r.coef_cubic");
+    EXPECT_EQ(low_at->chk->output_path().to_string(), "rg_i1 -> net_c -> div3_c = 6.4 ns");
+    // High: the Horner unit's coefficient pin a -> MX1 -> MUL -> MX2 -> SM into its accumulator:
+    // 0.3 + 3 + 0.3 + 1 = 4.6 ns.
+    EXPECT_EQ(b.high, sc_time(4600, SC_PS));
+    EXPECT_EQ(b.best_duty(), sc_time(11000, SC_PS));  // 4.6 + 6.4
+    EXPECT_EQ(b.half_duty(), sc_time(12800, SC_PS));  // 2 x 6.4
+    // The benches' 20 ns clock at 50 % duty gives each phase 10 ns: longer than both.
+    EXPECT_GT(pipeline::pipeline_period() / 2, b.low);
+    EXPECT_GT(pipeline::pipeline_period() / 2, b.high);
 }

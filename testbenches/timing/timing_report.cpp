@@ -1,12 +1,20 @@
 // Prints the timing paths derived from the elaborated specular devices (core/timing_graph.h):
 // for each device, each strobe's checked path (the longest path from the registers it latches to
 // the outputs) with the blocks on it, at the default delays of core/comb_delay.h and blocks/rom.h.
+// Then the shading pipeline (square-and-multiply device, Horner and forward-difference evaluators)
+// and the cell unit: each clocked unit's shortest high and low phases (its phase_checker's, derived
+// from its elaborated structure), the shortest clock period they allow, and the benches' clock
+// (pipeline_bench.h, cell_unit_bench.h) against it.
 //   build/bin/timing_report
 // Run by ctest (timing.report), so it keeps building and elaborating.
+#include <algorithm>
 #include <cstdio>
 #include <systemc>
 
 #include "core/timing_graph.h"
+#include "pipeline_phases.h"
+#include "testbenches/pipeline/cell_unit_bench.h"
+#include "testbenches/pipeline/pipeline_bench.h"
 #include "tuned/ua60553_tuned.h"
 #include "ua22802/ua22802.h"
 #include "ua60553/ua60553.h"
@@ -40,6 +48,35 @@ struct bound : sc_core::sc_module {
     }
 };
 
+double ns(const sc_core::sc_time& t) { return t.to_seconds() * 1e9; }
+
+// Prints each clocked unit's phases and the clock they allow; false if the bench's clock `bench`
+// at 50 % duty leaves a phase too short.
+bool print_pipeline(const sc_core::sc_object& top, const char* title, const sc_core::sc_time& bench) {
+    std::vector<shading::timing::unit_phases> units;
+    shading::timing::collect(top, units);
+    std::printf("%s: required phases per clocked unit (high, low)\n", title);
+    for (const auto& u : units)
+        std::printf("  %-40s %6.2f ns %6.2f ns\n", u.unit.c_str(), ns(u.chk->min_high()), ns(u.chk->min_low()));
+    const auto b = shading::timing::shortest_clock(units);
+    const bool ok = bench / 2 > b.high && bench / 2 > b.low;
+    std::printf("  largest high %.2f ns, largest low %.2f ns\n", ns(b.high), ns(b.low));
+    // The paths behind the two largest requirements (the first unit holding each).
+    const auto high_at = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.chk->min_high() == b.high; });
+    const auto low_at = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.chk->min_low() == b.low; });
+    if (high_at != units.end())
+        std::printf("    high: %s: %s\n", high_at->unit.c_str(), high_at->chk->high_path().to_string().c_str());
+    if (low_at != units.end())
+        std::printf("    low: %s: %s\n", low_at->unit.c_str(), low_at->chk->output_path().to_string().c_str());
+    std::printf("  shortest period: 50 %% duty %.2f ns (%.1f MHz), best duty %.2f ns (%.1f MHz; high %.0f %%)\n",
+                ns(b.half_duty()), 1e3 / ns(b.half_duty()), ns(b.best_duty()), 1e3 / ns(b.best_duty()),
+                100 * ns(b.high) / ns(b.best_duty()));
+    std::printf("  (a phase must be strictly longer than its requirement)\n");
+    std::printf("  bench's clock %.0f ns at 50 %% duty (%.0f MHz): %s\n", ns(bench), 1e3 / ns(bench),
+                ok ? "satisfies it" : "TOO SHORT");
+    return ok;
+}
+
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
@@ -50,13 +87,21 @@ int sc_main(int argc, char* argv[]) {
     bound<shading::device_ua60553> ua60553("ua60553", "UA 60553 (a_gen_linear: MUL6, ADD15)");
     bound<shading::device_ua60553_tuned> tuned("tuned", "UA 60553 tuned (a_gen_tuned: MUL6, ADD15, OR, key block)");
     bound<shading::device_ua22802> ua22802("ua22802", "UA 22802 (a_gen_rom: ROM)");
+    using shading::pipeline::evaluator;
+    shading::timing::bound_pipeline<shading::sqmul_device, evaluator::horner> horner("pipe_horner", 0);
+    shading::timing::bound_pipeline<shading::sqmul_device, evaluator::fd> fd("pipe_fd", 0);
+    shading::timing::bound_cell cell("cell");
     sc_core::sc_start(sc_core::SC_ZERO_TIME);  // end of elaboration: the checkers derive their paths
     ua60553.print();
     tuned.print();
     ua22802.print();
-    return sc_core::sc_report_handler::get_count(sc_core::SC_WARNING) +
-                       sc_core::sc_report_handler::get_count(sc_core::SC_ERROR) ==
-                   0
+    const auto pipe_clock = shading::pipeline::pipeline_period();
+    bool ok = print_pipeline(horner, "shading_pipeline<sqmul_device, horner>", pipe_clock);
+    ok = print_pipeline(fd, "shading_pipeline<sqmul_device, fd> (fd_m 0: any m per interval)", pipe_clock) && ok;
+    ok = print_pipeline(cell, "cell_unit", shading::tb::cell_period()) && ok;
+    return ok && sc_core::sc_report_handler::get_count(sc_core::SC_WARNING) +
+                             sc_core::sc_report_handler::get_count(sc_core::SC_ERROR) ==
+                         0
                ? 0
                : 1;
 }
