@@ -55,6 +55,8 @@ elseif(NOT SHADING_RTL_TRACE)
 endif()
 
 shading_add_gtest(test_rtl_pipeline SOURCES test_rtl_pipeline.cpp LIBS shading_pipeline TIMEOUT 300)
+# The head's planned frame (AnotherSampleSetIsSeenOnAFrame): the scan in this tree's data/head/.
+target_compile_definitions(test_rtl_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 foreach(_v IN LISTS _pipe_variants)
   _shading_pipe_variant(${_v})
   shading_verilate_rtl(test_rtl_pipeline Vrtl_pipeline_${_name} TOP shading_pipeline
