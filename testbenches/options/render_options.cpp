@@ -148,4 +148,17 @@ std::optional<int> parse_render_pipeline(int argc, char** argv, options& o) {
     return std::nullopt;
 }
 
+std::optional<int> parse_render_pipeline_rtl(int argc, char** argv, rtl_frame_options& o) {
+    CLI::App app{"A scene's planned frame through the shading pipeline's Verilog twin beside the SystemC model, "
+                 "every pin compared at every edge and both frames against the golden model"};
+    add_scene_options(app, o.scene);
+    app.add_option("--variant", o.variant,
+                   "the verilated variant and its plan: horner (case 1, shift-add, carry, saturate), fd_any (forward "
+                   "differences, any m, case 2, exact, wrap) or fd_m4 (forward differences, m = 4, case 1, exact, "
+                   "carry, wrap); default fd_any")
+        ->check(CLI::IsMember({"horner", "fd_any", "fd_m4"}));
+    SHADING_CLI_PARSE(app, argc, argv);  // help 0, a bad option 2 (common/exit_status.h)
+    return std::nullopt;
+}
+
 }  // namespace shading::render_program

@@ -72,4 +72,14 @@ void add_sweep_options(CLI::App& app, options& o);
 // What a parse leaves to set once it succeeded: the command line (--emit-jobs), whether --device was given.
 void record_command_line(const CLI::App& app, int argc, char** argv, options& o);
 
+// render_pipeline_rtl (testbenches/rtl/): a scene's planned frame through the shading pipeline's
+// Verilog twin beside the SystemC model. The scene options are render_pipeline's (add_scene_options:
+// --scene, --size, --data-dir, --light and the material, in `scene`); variant: the verilated
+// variant, horner, fd_any or fd_m4 (testbenches/rtl/rtl_pipeline_variants.h).
+struct rtl_frame_options {
+    options scene;
+    std::string variant = "fd_any";
+};
+std::optional<int> parse_render_pipeline_rtl(int argc, char** argv, rtl_frame_options& o);
+
 }  // namespace shading::render_program

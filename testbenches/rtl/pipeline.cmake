@@ -46,18 +46,86 @@ shading_rtl_lint(pipeline.sample_ctrl.unclocked -GCLOCKED=0 -GCARRY=1 --top-modu
 shading_rtl_lint(pipeline.sample_ctrl.unclocked_fd_m4 -GCLOCKED=0 -GFD_M=4 --top-module sample_ctrl
                  ${SHADING_RTL_DIR}/pipeline/sample_ctrl.v ${_pipe_ydirs})
 
+# Whole planned frames through the RTL beside the model (render_pipeline_rtl): the head at 128 with
+# each variant, a sphere, the head at 512 and an OBJ model written at test time (make_test_obj).
+# Each case: name, variant, scene, size.
+set(_frame_cases "head128.horner|horner|head|128" "head128.fd_any|fd_any|head|128" "head128.fd_m4|fd_m4|head|128"
+    "sphere96|horner|sphere|96" "head512|fd_any|head|512" "obj_blob|fd_m4|${CMAKE_BINARY_DIR}/out/rtl_frame/blob.obj|128")
+set(_frame_tests)
+foreach(_c IN LISTS _frame_cases)
+  string(REPLACE "|" ";" _f "${_c}")
+  list(GET _f 0 _name)
+  list(APPEND _frame_tests rtl.frame.${_name})
+endforeach()
+
 if(NOT SHADING_RTL)
   shading_add_skipped(rtl.cosim.pipeline test_rtl_pipeline "${SHADING_RTL_SKIP_REASON}")
+  foreach(_t IN LISTS _frame_tests)
+    shading_add_skipped(${_t} render_pipeline_rtl "${SHADING_RTL_SKIP_REASON}")
+  endforeach()
   return()
 elseif(NOT SHADING_RTL_TRACE)
   shading_add_skipped(rtl.cosim.pipeline test_rtl_pipeline "${SHADING_RTL_TRACE_SKIP_REASON}")
+  foreach(_t IN LISTS _frame_tests)
+    shading_add_skipped(${_t} render_pipeline_rtl "${SHADING_RTL_TRACE_SKIP_REASON}")
+  endforeach()
   return()
 endif()
 
 shading_add_gtest(test_rtl_pipeline SOURCES test_rtl_pipeline.cpp LIBS shading_pipeline TIMEOUT 300)
+# The head's planned frame (AnotherSampleSetIsSeenOnAFrame): the scan in this tree's data/head/.
+target_compile_definitions(test_rtl_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 foreach(_v IN LISTS _pipe_variants)
   _shading_pipe_variant(${_v})
   shading_verilate_rtl(test_rtl_pipeline Vrtl_pipeline_${_name} TOP shading_pipeline
                        SOURCE ${SHADING_RTL_DIR}/pipeline/shading_pipeline.v DIRS ${SHADING_RTL_PIPELINE_DIRS}
                        ARGS ${_args})
 endforeach()
+
+# render_pipeline_rtl: render_pipeline's scene options and setup (shading_render, which needs
+# nlohmann-json), the three variants verilated into it.
+if(NOT TARGET shading_render)
+  foreach(_t IN LISTS _frame_tests)
+    shading_add_skipped(${_t} render_pipeline_rtl "render_pipeline's library (shading_render) is not built")
+  endforeach()
+  return()
+endif()
+add_executable(render_pipeline_rtl ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline_rtl.cpp)
+target_link_libraries(render_pipeline_rtl PRIVATE shading_render)
+set_target_properties(render_pipeline_rtl PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+foreach(_v IN LISTS _pipe_variants)
+  _shading_pipe_variant(${_v})
+  shading_verilate_rtl(render_pipeline_rtl Vrtl_pipeline_${_name} TOP shading_pipeline
+                       SOURCE ${SHADING_RTL_DIR}/pipeline/shading_pipeline.v DIRS ${SHADING_RTL_PIPELINE_DIRS}
+                       ARGS ${_args})
+endforeach()
+add_test(NAME rtl.frame.obj_blob.make
+         COMMAND sh -c "mkdir -p \"$(dirname \"$1\")\" && \"$0\" --shape blob --segments 64 --out \"$1\""
+                 $<TARGET_FILE:make_test_obj> ${CMAKE_BINARY_DIR}/out/rtl_frame/blob.obj)
+set_tests_properties(rtl.frame.obj_blob.make PROPERTIES TIMEOUT 60 LABELS render_pipeline_rtl FIXTURES_SETUP rtl_frame_obj)
+# Exit 0 and the verdict line, both required (the program's output printed either way).
+foreach(_c IN LISTS _frame_cases)
+  string(REPLACE "|" ";" _f "${_c}")
+  list(GET _f 0 _name)
+  list(GET _f 1 _variant)
+  list(GET _f 2 _scene)
+  list(GET _f 3 _size)
+  add_test(NAME rtl.frame.${_name}
+           COMMAND sh -c "log=$(\"$0\" \"$@\" 2>&1); rc=$?; printf '%s\\n' \"$log\"; test $rc -eq 0 && printf '%s' \"$log\" | grep -q '^PASS: '"
+                   $<TARGET_FILE:render_pipeline_rtl> --scene ${_scene} --size ${_size} --variant ${_variant}
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  set_tests_properties(rtl.frame.${_name} PROPERTIES TIMEOUT 300 LABELS render_pipeline_rtl
+                       ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+endforeach()
+set_tests_properties(rtl.frame.obj_blob PROPERTIES FIXTURES_REQUIRED rtl_frame_obj)
+# Bad input: a clear message and exit 2 (an unknown scene, an OBJ file that is not there, a size out of range).
+foreach(_bad "unknown_scene|--scene teapot" "missing_obj|--scene ${CMAKE_BINARY_DIR}/no_such_file.obj"
+        "too_large|--size 100000")
+  string(REPLACE "|" ";" _f "${_bad}")
+  list(GET _f 0 _name)
+  list(GET _f 1 _args)
+  separate_arguments(_args)
+  add_test(NAME rtl.frame.bad.${_name} COMMAND sh -c "\"$0\" \"$@\"; test $? -eq 2" $<TARGET_FILE:render_pipeline_rtl> ${_args})
+  set_tests_properties(rtl.frame.bad.${_name} PROPERTIES TIMEOUT 60 LABELS render_pipeline_rtl)
+endforeach()
+shading_add_usage_test(render_pipeline_rtl)

@@ -25,45 +25,20 @@
 
 #include "testbenches/common/report_log.h"
 #include "testbenches/common/sim_guard.h"
-#include "testbenches/pipeline/pipeline_pair.h"
 #include "core/report_ids.h"
 #include "core/trace.h"
-#include "sqmul/sqmul_device.h"
+#include "golden_pipeline/frame_setup.h"
+#include "scene/raster.h"
+#include "testbenches/rtl/rtl_pipeline_variants.h"
 #include "verilated.h"
 #include "verilated_vcd_sc.h"
-
-// The verilated pipelines (testbenches/rtl/pipeline.cmake).
-#include "Vrtl_pipeline_fd_any.h"
-#include "Vrtl_pipeline_fd_m4.h"
-#include "Vrtl_pipeline_horner.h"
 
 using namespace shading;
 using namespace shading::pipeline;
 
 namespace {
 
-// One verilated variant and the SystemC configuration that matches its parameters.
-template <class Rtl, evaluator EVAL, unsigned FD_M, interp::sample_set SET, interp::div3_mode DIV, bool CARRY,
-          overflow_mode MODE>
-struct variant {
-    using rtl = Rtl;
-    static constexpr evaluator eval = EVAL;
-    static constexpr unsigned fd_m = FD_M;  // forward differences: 0 any m per interval
-    static constexpr interp::sample_set set = SET;
-    static constexpr interp::div3_mode div = DIV;
-    static constexpr bool carry = CARRY;
-    static constexpr overflow_mode mode = MODE;
-};
-
-using horner = variant<Vrtl_pipeline_horner, evaluator::horner, 0, interp::sample_set::case1,
-                       interp::div3_mode::shift_add, true, overflow_mode::saturate>;
-using fd_any = variant<Vrtl_pipeline_fd_any, evaluator::fd, 0, interp::sample_set::case2, interp::div3_mode::exact,
-                       false, overflow_mode::wrap>;
-using fd_m4 = variant<Vrtl_pipeline_fd_m4, evaluator::fd, 4, interp::sample_set::case1, interp::div3_mode::exact,
-                      true, overflow_mode::wrap>;
-
-template <class V>
-using rtl_pair = pair_bench<sqmul_device, V::eval, typename V::rtl>;
+using namespace shading::pipeline::rtl_variants;
 
 // Runs the bench to its end; with SHADING_TRACE=<dir> it writes the test's two VCDs (as
 // rtl_cosim_tb.h's run_cosim: a Verilated model's internals are not SystemC signals).
@@ -102,18 +77,11 @@ void run_rtl(uint64_t seed, run_kind rk) {
     Verilated::traceEverOn(true);
     const plan p = random_plan(seed, 400, 64, V::fd_m, 12, rk.chain, rk.above_one);
     const frame_constants k = random_constants(seed);
-    scene::device_config dev;
-    dev.device = scene::specular_device::sqmul;
-    const overflow_mode flipped = V::mode == overflow_mode::wrap ? overflow_mode::saturate : overflow_mode::wrap;
-    dev.mode = rk.other_mode ? flipped : V::mode;
-    plan_config c;
-    c.carry_samples = V::carry;
-    c.eval = V::eval;
-    c.length = V::fd_m == 0 ? length_policy::adaptive : length_policy::fixed;
-    c.m = V::fd_m == 0 ? 4 : V::fd_m;
+    scene::device_config dev = V::device();
+    if (rk.other_mode) dev.mode = V::mode == overflow_mode::wrap ? overflow_mode::saturate : overflow_mode::wrap;
+    plan_config c = V::plan_config_of();
     using interp::sample_set;
-    c.set = !rk.other_set ? V::set : V::set == sample_set::case1 ? sample_set::case2 : sample_set::case1;
-    c.div = V::div;
+    if (rk.other_set) c.set = V::set == sample_set::case1 ? sample_set::case2 : sample_set::case1;
     auto bench = std::make_unique<rtl_pair<V>>("tb", p, k, dev, c, sqmul_device::default_config(),
                                                std::function<bool(const typename V::rtl&)>{}, "rtl");
     const bool finished = run_traced(*bench, pipeline_period() * static_cast<double>(pair_watchdog_clocks(p)));
@@ -193,4 +161,29 @@ TEST(RtlPipelineVerdict, AnotherSampleSetIsSeen) {
 TEST(RtlPipelineVerdict, AnotherOverflowModeIsSeen) {
     tb::report_log::get().expect(msg::mismatch);
     run_rtl<fd_any>(24, {false, true, false, true});
+}
+
+// On a planned frame too (the head at 64, make_plan's plan as render_pipeline_rtl runs it): the model
+// and its golden frame built with the case-2 samples beside the Horner RTL's case 1 must differ.
+TEST(RtlPipelineVerdict, AnotherSampleSetIsSeenOnAFrame) {
+    tb::report_log::get().expect(msg::mismatch);
+    const plan_config c = horner::plan_config_of();
+    plan_config other = c;
+    other.set = interp::sample_set::case2;
+    const scene::device_config dev = horner::device();
+    const scene::world w = scene_of("head", SHADING_SOURCE_DIR, 64);
+    const frame_constants k = frame_constants_of(w);
+    const plan p = make_plan(scene::rasterise(w), k, dev, c);
+    auto bench = std::make_unique<rtl_pair<horner>>("tb", p, k, dev, other, sqmul_device::default_config(),
+                                                    std::function<bool(const Vrtl_pipeline_horner&)>{}, "rtl");
+    ASSERT_TRUE(run_traced(*bench, pipeline_period() * static_cast<double>(pair_watchdog_clocks(p))));
+    bench->chk_b.finish();
+    bench->chk_o.finish();
+    std::printf("%zu pixels planned, %zu valid edges, %zu differences\n", bench->chk_o.pixels(),
+                bench->cmp.valid_edges(), bench->cmp.differences());
+    EXPECT_GT(p.pixels, 1000u);
+    EXPECT_GT(bench->cmp.differences(), 10u);
+    EXPECT_EQ(bench->chk_b.mismatches(), 0u);   // the model against its own golden configuration
+    EXPECT_GT(bench->chk_o.mismatches(), 10u);  // the RTL against the model's
+    bench.release();  // elaborated for the process's life
 }
