@@ -38,6 +38,13 @@ if(TARGET shading_pipeline_sim)
   set_tests_properties(pipeline.render_race PROPERTIES TIMEOUT 300 LABELS render_race
                        ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
   shading_add_usage_test(render_race ARGS --size 8)
+  # An empty argument beside a good line: bad usage (CLI11 alone would drop it and run the race).
+  add_test(NAME usage.render_race.empty_argument
+           COMMAND sh -c "\"$0\" --size 96 --out \"$1\" ''; test $? -eq 2"
+                   $<TARGET_FILE:render_race> ${CMAKE_BINARY_DIR}/out/race_empty_argument
+           WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  set_tests_properties(usage.render_race.empty_argument PROPERTIES TIMEOUT 60 LABELS render_race
+                       ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
   # The race on models no program was tuned on, written at test time (make_test_obj): a folded blob
   # and a cluster of six blobs at different depths. Exit 0 and the cells' SystemC frame the golden
   # model's, both required (the program's output printed either way).
