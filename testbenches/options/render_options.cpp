@@ -157,6 +157,8 @@ std::optional<int> parse_render_pipeline_rtl(int argc, char** argv, rtl_frame_op
                    "differences, any m, case 2, exact, wrap) or fd_m4 (forward differences, m = 4, case 1, exact, "
                    "carry, wrap); default fd_any")
         ->check(CLI::IsMember({"horner", "fd_any", "fd_m4"}));
+    app.add_option("--degree", o.degree, "the plan's degree: cubic or quadratic along every segment; default cubic")
+        ->check(CLI::IsMember({"cubic", "quadratic"}));
     SHADING_CLI_PARSE(app, argc, argv);  // help 0, a bad option 2 (common/exit_status.h)
     return std::nullopt;
 }

@@ -79,6 +79,7 @@ void record_command_line(const CLI::App& app, int argc, char** argv, options& o)
 struct rtl_frame_options {
     options scene;
     std::string variant = "fd_any";
+    std::string degree = "cubic";  // the plan's degree policy: cubic or quadratic
 };
 std::optional<int> parse_render_pipeline_rtl(int argc, char** argv, rtl_frame_options& o);
 

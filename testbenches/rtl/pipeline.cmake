@@ -47,10 +47,12 @@ shading_rtl_lint(pipeline.sample_ctrl.unclocked_fd_m4 -GCLOCKED=0 -GFD_M=4 --top
                  ${SHADING_RTL_DIR}/pipeline/sample_ctrl.v ${_pipe_ydirs})
 
 # Whole planned frames through the RTL beside the model (render_pipeline_rtl): the head at 128 with
-# each variant, a sphere, the head at 512 and an OBJ model written at test time (make_test_obj).
-# Each case: name, variant, scene, size.
-set(_frame_cases "head128.horner|horner|head|128" "head128.fd_any|fd_any|head|128" "head128.fd_m4|fd_m4|head|128"
-    "sphere96|horner|sphere|96" "head512|fd_any|head|512" "obj_blob|fd_m4|${CMAKE_BINARY_DIR}/out/rtl_frame/blob.obj|128")
+# each variant and both degrees, a sphere, the head at 512 and an OBJ model written at test time
+# (make_test_obj). Each case: name, variant, scene, size, degree.
+set(_frame_cases "head128.horner|horner|head|128|cubic" "head128.fd_any|fd_any|head|128|cubic"
+    "head128.fd_m4|fd_m4|head|128|cubic" "head128.horner.quadratic|horner|head|128|quadratic"
+    "head128.fd_any.quadratic|fd_any|head|128|quadratic" "sphere96|horner|sphere|96|cubic"
+    "head512|fd_any|head|512|cubic" "obj_blob|fd_m4|${CMAKE_BINARY_DIR}/out/rtl_frame/blob.obj|128|cubic")
 set(_frame_tests)
 foreach(_c IN LISTS _frame_cases)
   string(REPLACE "|" ";" _f "${_c}")
@@ -110,9 +112,11 @@ foreach(_c IN LISTS _frame_cases)
   list(GET _f 1 _variant)
   list(GET _f 2 _scene)
   list(GET _f 3 _size)
+  list(GET _f 4 _degree)
   add_test(NAME rtl.frame.${_name}
            COMMAND sh -c "log=$(\"$0\" \"$@\" 2>&1); rc=$?; printf '%s\\n' \"$log\"; test $rc -eq 0 && printf '%s' \"$log\" | grep -q '^PASS: '"
                    $<TARGET_FILE:render_pipeline_rtl> --scene ${_scene} --size ${_size} --variant ${_variant}
+                   --degree ${_degree}
            WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
   set_tests_properties(rtl.frame.${_name} PROPERTIES TIMEOUT 300 LABELS render_pipeline_rtl
                        ENVIRONMENT "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")

@@ -6,7 +6,7 @@
 // pixel by pixel against golden_interval. Exit 0 only with no pin difference, no golden mismatch and
 // every planned pixel written once; 1 otherwise; 2 for bad usage (an unknown scene, an OBJ file
 // that cannot be read, a size out of range).
-//   build/bin/render_pipeline_rtl --scene head --size 128 --variant fd_any
+//   build/bin/render_pipeline_rtl --scene head --size 128 --variant fd_any [--degree quadratic]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -94,9 +94,11 @@ int main(int argc, char* argv[]) {
             throw scene::scene_error(why);
         const scene::world w = render_program::load_world(o.scene);
         g_job.k = frame_constants_of(w);
-        const plan_config c = o.variant == "horner" ? horner::plan_config_of()
-                              : o.variant == "fd_m4" ? fd_m4::plan_config_of()
-                                                     : fd_any::plan_config_of();
+        plan_config base;
+        base.degree = o.degree == "quadratic" ? degree_policy::quadratic : degree_policy::cubic;
+        const plan_config c = o.variant == "horner" ? horner::plan_config_of(base)
+                              : o.variant == "fd_m4" ? fd_m4::plan_config_of(base)
+                                                     : fd_any::plan_config_of(base);
         const scene::device_config dev = o.variant == "horner" ? horner::device()
                                          : o.variant == "fd_m4" ? fd_m4::device()
                                                                 : fd_any::device();
