@@ -57,17 +57,26 @@ def synth_rows(path):
         return {r["variant"]: (int(r["transistors"]), int(r["depth_gates"])) for r in csv.DictReader(f)}
 
 
+def rows_by_prefix(rows, prefix):
+    """The rows named <prefix><width>: [(width, transistors, depth)], narrowest first."""
+    return sorted((int(v[len(prefix):]), t, d) for v, (t, d) in rows.items() if re.fullmatch(re.escape(prefix) + r"\d+", v))
+
+
 def row_by_prefix(rows, prefix):
     """The one row named <prefix><width>: (width, transistors, depth)."""
-    hits = [(int(v[len(prefix):]), t, d) for v, (t, d) in rows.items() if re.fullmatch(re.escape(prefix) + r"\d+", v)]
+    hits = rows_by_prefix(rows, prefix)
     if len(hits) != 1:
         raise SystemExit("phong_estimate: want one synth row %s<width>, found %d" % (prefix, len(hits)))
     return hits[0]
 
 
-def units(rows, dl):
-    """Each kind's unit: {kind: (name, transistors, depth in gates, delay in ns)}."""
-    wm, tm, dm = row_by_prefix(rows, "phong_mul_")
+def units(rows, dl, mul_width=None):
+    """Each kind's unit, the multiplier of mul_width bits (None: the narrowest): {kind: (name,
+    transistors, depth in gates, delay in ns)}."""
+    muls = rows_by_prefix(rows, "phong_mul_")
+    if not muls:
+        raise SystemExit("phong_estimate: no synth row phong_mul_<width>")
+    wm, tm, dm = next(m for m in muls if mul_width in (None, m[0]))
     wa, ta, da = row_by_prefix(rows, "phong_add_")
     _, ti, di = row_by_prefix(rows, "phong_stage_inv_")
     ws, tsub, dsub = row_by_prefix(rows, "phong_stage_sub_")
@@ -135,7 +144,8 @@ def main():
     with open(os.path.join(a.race, "race.md")) as f:
         n = int(re.search(r"n = (\d+)", f.readline()).group(1))
     rows = synth_rows(os.path.join(a.synth, "synth.csv"))
-    unit = units(rows, delays_ns(os.path.join(ROOT, "modules/core/comb_delay.h")))
+    dl = delays_ns(os.path.join(ROOT, "modules/core/comb_delay.h"))
+    unit = units(rows, dl)
     shader, dev, geo = ops[("phong1975_device", "shader")], ops[("phong1975_device", "device")], ops[("lines", "geometry")]
     px = shader["pixels"]
     phong = {k: shader[k] / px for k in KINDS}
@@ -148,13 +158,13 @@ def main():
     fd, horner = report_clocks(a.fd), report_clocks(a.horner)
     pipes = {"pipeline_fd_var": (rows["pipeline_fd_var"][0], fd[0]),
              "pipeline_horner": (rows["pipeline_horner"][0], horner[0])}
-    est = estimate(phong, geometry, unit, device, clock, pipes)
     print("Estimate, not a built design: the head at %d pixels, n = %d, clock %.2f ns (both designs).\n" % (px, n, clock))
     print("| operation | Phong 1975 / px | lines' geometry side / px | unit | transistors | depth (gates) | delay (ns) |")
     print("|---|---|---|---|---|---|---|")
     for k in KINDS:
-        name, t, d, ns = unit[k]
-        print("| %s | %.2f | %.2f | %s | %d | %d | %.1f |" % (k, phong[k], geometry[k], name, t, d, ns))
+        for width, t, d in rows_by_prefix(rows, "phong_mul_") if k == "mul" else [None]:
+            name, t, d, ns = units(rows, dl, width)[k]
+            print("| %s | %.2f | %.2f | %s | %d | %d | %.1f |" % (k, phong[k], geometry[k], name, t, d, ns))
     print("| device sample | %.3f | (in the top) | sqmul_saturate, %d clocks a sample | %d | %d | |\n" % (
         phong["samples"], device[1], device[0], rows["sqmul_saturate"][1]))
     errors = {"phong": float(race["phong1975_device"]["nmse_frame_buffer"]), "pipeline_fd_var": fd[1],
@@ -162,11 +172,13 @@ def main():
     what = {"phong": "Phong 1975 + device, a pixel a clock (estimate)",
             "pipeline_fd_var": "pipeline, forward differences, + geometry side (estimate)",
             "pipeline_horner": "pipeline, Horner, + geometry side (estimate)"}
-    print("| design | transistors | clocks / px | ns / px | transistor-ms / px | x Phong | total NMSE |")
-    print("|---|---|---|---|---|---|---|")
-    for d, (area, clocks, ns, at) in est.items():
-        print("| %s | %.0f | %.3f | %.1f | %.2f | %.2f | %.2e |" % (
-            what[d], area, clocks, ns, at / 1e6, at / est["phong"][3], errors[d]))
+    print("| design | multipliers | transistors | clocks / px | ns / px | transistor-ms / px | x Phong | total NMSE |")
+    print("|---|---|---|---|---|---|---|---|")
+    for width, _, _ in rows_by_prefix(rows, "phong_mul_"):
+        est = estimate(phong, geometry, units(rows, dl, width), device, clock, pipes)
+        for d, (area, clocks, ns, at) in est.items():
+            print("| %s | %d x %d | %.0f | %.3f | %.1f | %.2f | %.2f | %.2e |" % (
+                what[d], width, width, area, clocks, ns, at / 1e6, at / est["phong"][3], errors[d]))
     print("\nThe race's lines: total NMSE %s (race.csv), the pipeline's fd report %.2e." % (
         race["lines"]["nmse_frame_buffer"], fd[1]))
     return 0

@@ -40,6 +40,10 @@ class Arithmetic(unittest.TestCase):
         self.assertEqual(u["div"][1:3], (48, 32))
         self.assertAlmostEqual(u["div"][3], 5.6)
         self.assertEqual(u["sqrt"][1:3], (48, 32))
+        # A second, wider multiplier: the narrowest by default, the other by its width.
+        rows["phong_mul_12"] = (700, 20)
+        self.assertEqual(pe.units(rows, dl)["mul"][1], 100)
+        self.assertEqual(pe.units(rows, dl, 12)["mul"][1], 700)
 
     def test_readers(self):
         with tempfile.TemporaryDirectory() as d:

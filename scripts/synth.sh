@@ -262,6 +262,10 @@ EOF
   pw=$(( $(macro SPEC_COS_W) + 1 )) pf=$(macro SPEC_COS_FRAC) aw=$(macro INTERP_COEF_W)
   variant "phong_mul_$pw" mul "" \
     "-chparam WA $pw -chparam WB $pw -chparam WP $pw -chparam DROP $pf -chparam ASIGNED 1 -chparam BSIGNED 1"
+  # The same multiplier at the stepping width: positions (Q E - U_P) and set-ups need more than a
+  # component's bits, so the estimate is given at both.
+  variant "phong_mul_$aw" mul "" \
+    "-chparam WA $aw -chparam WB $aw -chparam WP $aw -chparam DROP $pf -chparam ASIGNED 1 -chparam BSIGNED 1"
   variant "phong_add_$aw" adder "" "-chparam WA $aw -chparam WB $aw -chparam WS $aw -chparam ASIGNED 1 -chparam BSIGNED 1"
   variant "phong_stage_inv_$((pw + 1))" inverter_bank "" "-chparam WIN $((pw + 1)) -chparam WOUT $((pw + 1))"
   variant "phong_stage_sub_$((pw + 1))" adder "" "-chparam WA $((pw + 1)) -chparam WB $((pw + 1)) -chparam WS $((pw + 1))"
