@@ -130,6 +130,42 @@ def report_clocks(path):
     return j["clocks_per_pixel"]["sim"], j["errors"]["total"]["image"]["nmse"]
 
 
+def grouped(v):
+    """An integer with its thousands apart, as the pages write them: 1 005 569."""
+    return "{:,}".format(int(round(v))).replace(",", " ")
+
+
+def print_tables(phong, geometry, rows, dl, device, clock, pipes, errors):
+    """The page's two tables: the units, and the designs at each multiplier width."""
+    widths = [m[0] for m in rows_by_prefix(rows, "phong_mul_")]
+    us = [units(rows, dl, w) for w in widths]
+    alt = lambda k, i, f: f(us[0][k][i]) + "".join(" (%s)" % f(u[k][i]) for u in us[1:])  # noqa: E731
+    print("| unit (an estimate) | a pixel: Phong / the lines' geometry side | transistors | depth (gates) | delay |")
+    print("|---|---|---|---|---|")
+    print("| multiplier %s | %.2f / %.2f | %s | %s | %.1f ns |" % (
+        " (".join("%d × %d" % (w, w) for w in widths) + ")" * (len(widths) - 1), phong["mul"], geometry["mul"],
+        alt("mul", 1, grouped), alt("mul", 2, str), us[0]["mul"][3]))
+    print("| %s; square root the same array | %.2f, %.2f / %.2f, %.2f | %s | %d | %.1f ns |" % (
+        us[0]["div"][0], phong["div"], phong["sqrt"], geometry["div"], geometry["sqrt"], grouped(us[0]["div"][1]),
+        us[0]["div"][2], us[0]["div"][3]))
+    print("| %s | %.2f / %.2f | %s | %d | %.1f ns |" % (
+        us[0]["add"][0], phong["add"], geometry["add"], grouped(us[0]["add"][1]), us[0]["add"][2], us[0]["add"][3]))
+    print("| the device (`sqmul_saturate`) | %.3f samples / in the top | %s | %d | %d clocks a sample |\n" % (
+        phong["samples"], grouped(device[0]), rows["sqmul_saturate"][1], device[1]))
+    est = [estimate(phong, geometry, u, device, clock, pipes) for u in us]
+    what = {"phong": "Phong 1975, a pixel a clock, %.1f devices" % (phong["samples"] * device[1]),
+            "pipeline_fd_var": "pipeline, forward differences, + geometry side",
+            "pipeline_horner": "pipeline, Horner, + geometry side"}
+    w = " / ".join(str(x) for x in widths)
+    print("| design (an estimate, at %.1f ns) | transistors, %s-bit multipliers | clocks / px | ns / px | "
+          "transistor·ms / px, %s | total NMSE |" % (clock, w, w))
+    print("|---|---|---|---|---|---|")
+    for d in est[0]:
+        print("| %s | %s | %.3f | %.1f | %s | %.2e |" % (
+            what[d], " / ".join(grouped(e[d][0]) for e in est), est[0][d][1], est[0][d][2],
+            " / ".join("%.1f" % (e[d][3] / 1e6) for e in est), errors[d]))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--race", default="out/race")
@@ -158,29 +194,11 @@ def main():
     fd, horner = report_clocks(a.fd), report_clocks(a.horner)
     pipes = {"pipeline_fd_var": (rows["pipeline_fd_var"][0], fd[0]),
              "pipeline_horner": (rows["pipeline_horner"][0], horner[0])}
-    print("Estimate, not a built design: the head at %d pixels, n = %d, clock %.2f ns (both designs).\n" % (px, n, clock))
-    print("| operation | Phong 1975 / px | lines' geometry side / px | unit | transistors | depth (gates) | delay (ns) |")
-    print("|---|---|---|---|---|---|---|")
-    for k in KINDS:
-        for width, t, d in rows_by_prefix(rows, "phong_mul_") if k == "mul" else [None]:
-            name, t, d, ns = units(rows, dl, width)[k]
-            print("| %s | %.2f | %.2f | %s | %d | %d | %.1f |" % (k, phong[k], geometry[k], name, t, d, ns))
-    print("| device sample | %.3f | (in the top) | sqmul_saturate, %d clocks a sample | %d | %d | |\n" % (
-        phong["samples"], device[1], device[0], rows["sqmul_saturate"][1]))
-    errors = {"phong": float(race["phong1975_device"]["nmse_frame_buffer"]), "pipeline_fd_var": fd[1],
-              "pipeline_horner": horner[1]}
-    what = {"phong": "Phong 1975 + device, a pixel a clock (estimate)",
-            "pipeline_fd_var": "pipeline, forward differences, + geometry side (estimate)",
-            "pipeline_horner": "pipeline, Horner, + geometry side (estimate)"}
-    print("| design | multipliers | transistors | clocks / px | ns / px | transistor-ms / px | x Phong | total NMSE |")
-    print("|---|---|---|---|---|---|---|---|")
-    for width, _, _ in rows_by_prefix(rows, "phong_mul_"):
-        est = estimate(phong, geometry, units(rows, dl, width), device, clock, pipes)
-        for d, (area, clocks, ns, at) in est.items():
-            print("| %s | %d x %d | %.0f | %.3f | %.1f | %.2f | %.2f | %.2e |" % (
-                what[d], width, width, area, clocks, ns, at / 1e6, at / est["phong"][3], errors[d]))
-    print("\nThe race's lines: total NMSE %s (race.csv), the pipeline's fd report %.2e." % (
-        race["lines"]["nmse_frame_buffer"], fd[1]))
+    print_tables(phong, geometry, rows, dl, device, clock, pipes,
+                 {"phong": float(race["phong1975_device"]["nmse_frame_buffer"]), "pipeline_fd_var": fd[1],
+                  "pipeline_horner": horner[1]})
+    print("\nThe head at %d pixels, n = %d; the race's lines: total NMSE %s (race.csv)." % (
+        px, n, race["lines"]["nmse_frame_buffer"]))
     return 0
 
 
