@@ -197,8 +197,16 @@ def main():
     print_tables(phong, geometry, rows, dl, device, clock, pipes,
                  {"phong": float(race["phong1975_device"]["nmse_frame_buffer"]), "pipeline_fd_var": fd[1],
                   "pipeline_horner": horner[1]})
-    print("\nThe head at %d pixels, n = %d; the race's lines: total NMSE %s (race.csv)." % (
-        px, n, race["lines"]["nmse_frame_buffer"]))
+    stage = ops[("lines", "sample_stage")]
+    ratios = []
+    for m in rows_by_prefix(rows, "phong_mul_"):
+        e = estimate(phong, geometry, units(rows, dl, m[0]), device, clock, pipes)
+        ratios.append("%.2f" % (e["phong"][3] / e["pipeline_fd_var"][3]))
+    print("\nThe head at %d pixels, n = %d; the race's lines: total NMSE %s (race.csv). Phong's area x time over the "
+          "forward-difference pipeline's: %s (by multiplier width); the pipeline's top alone: %.1f transistor-ms a pixel, "
+          "its sample stage %.3f samples a pixel." % (
+              px, n, race["lines"]["nmse_frame_buffer"], " / ".join(ratios),
+              pipes["pipeline_fd_var"][0] * fd[0] * clock / 1e6, stage["samples"] / stage["pixels"]))
     return 0
 
 
