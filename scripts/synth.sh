@@ -253,6 +253,23 @@ EOF
       "$(echo "$pipe_sources" | sed "s#$root/rtl/blocks/ram.v##")"
     ram_bits cell_unit_bits cell_unit ""
   fi
+  # A per-pixel Phong shader's operations, each priced as the library block that performs it (an
+  # estimate, not a built design: modules/pipeline/README.md, "A per-pixel Phong shader, estimated"):
+  # a multiplier of signed components at the device's cosine resolution (sign + SPEC_COS_FRAC fraction
+  # bits), an adder at the pipeline's stepping width (INTERP_COEF_W), and one stage of a restoring
+  # array divider or square root (an inverter bank, a subtractor one wire wider, a multiplexer), of
+  # which such an array has one stage per quotient or root bit (scripts/phong_estimate.py).
+  pw=$(( $(macro SPEC_COS_W) + 1 )) pf=$(macro SPEC_COS_FRAC) aw=$(macro INTERP_COEF_W)
+  variant "phong_mul_$pw" mul "" \
+    "-chparam WA $pw -chparam WB $pw -chparam WP $pw -chparam DROP $pf -chparam ASIGNED 1 -chparam BSIGNED 1"
+  # The same multiplier at the stepping width: positions (Q E - U_P) and set-ups need more than a
+  # component's bits, so the estimate is given at both.
+  variant "phong_mul_$aw" mul "" \
+    "-chparam WA $aw -chparam WB $aw -chparam WP $aw -chparam DROP $pf -chparam ASIGNED 1 -chparam BSIGNED 1"
+  variant "phong_add_$aw" adder "" "-chparam WA $aw -chparam WB $aw -chparam WS $aw -chparam ASIGNED 1 -chparam BSIGNED 1"
+  variant "phong_stage_inv_$((pw + 1))" inverter_bank "" "-chparam WIN $((pw + 1)) -chparam WOUT $((pw + 1))"
+  variant "phong_stage_sub_$((pw + 1))" adder "" "-chparam WA $((pw + 1)) -chparam WB $((pw + 1)) -chparam WS $((pw + 1))"
+  variant "phong_stage_mux_$pw" mux "" "-chparam W $pw -chparam N 2 -chparam SW 1"
   # The ROM alone at the fraction-bit sweep's sizes (F = 2..10; the device's is F = 6).
   for rom in $(ls "$gen"/rom_sweep/ua22802_a_rom_f*.v | sort -V); do
     f=$(basename "$rom" .v | sed 's/.*_f//')

@@ -125,6 +125,24 @@ DESCRIPTIONS = {
     "pipeline_fd_var": "shading pipeline, forward differences for any m, square-and-multiply device (saturating)",
     "cell_unit": "cell unit (ours), column buffers as memory (logic outside them)",
 }
+# The per-pixel Phong shader's priced blocks (scripts/phong_estimate.py), named with their width.
+PHONG_BLOCKS = {
+    "mul": "Phong estimate: multiplier, signed %s x %s bits",
+    "add": "Phong estimate: adder, signed %s bits",
+    "stage_inv": "Phong estimate: divider / square-root stage, inverter bank of %s bits",
+    "stage_sub": "Phong estimate: divider / square-root stage, subtractor of %s bits",
+    "stage_mux": "Phong estimate: divider / square-root stage, multiplexer of %s bits",
+}
+
+
+def phong_description(name):
+    m = re.match(r"phong_(\w+)_(\d+)$", name)
+    if not m or m.group(1) not in PHONG_BLOCKS:
+        return None
+    text = PHONG_BLOCKS[m.group(1)]
+    return text % ((m.group(2),) * text.count("%s"))
+
+
 for _f in range(15, 21):
     DESCRIPTIONS["sqmul_p%d" % _f] = "square-and-multiply baseline at a Q1.%d P word, saturating" % _f
     DESCRIPTIONS["sqmul_r2l_p%d" % _f] = "square-and-multiply, right to left, at a Q1.%d P word, saturating" % _f
@@ -429,7 +447,7 @@ def main():
             desc = "ROM alone, F = %s fraction bits (%d-bit words)" % (
                 name[5:], int(fmt["UA22802_A_W"]) - int(fmt["UA22802_A_FRAC"]) + int(name[5:]))
         else:
-            desc = DESCRIPTIONS.get(name, name)
+            desc = DESCRIPTIONS.get(name) or phong_description(name) or name
         h = hand.get(name)
         cells = st["cells"] - st["blackboxes"]
         rows.append({

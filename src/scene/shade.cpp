@@ -182,4 +182,12 @@ shaded_image render_device_scanline(const rasterised& r, const device_config& de
         [&r, &dev](const pixel_geometry& g, const material& m) { return shade_device(g, m, r.src->lights, dev); });
 }
 
+shaded_image render_specular_scanline(const rasterised& r, const specular_fn& unit, render_stats* stats,
+                                      bool walk_edges) {
+    span_stepper st(r, walk_edges);
+    return render(
+        r, stats, [&st](unsigned x, unsigned y, op_counts* o) { return st.at(x, y, o); },
+        [&r, &unit](const pixel_geometry& g, const material& m) { return shade_specular(g, m, r.src->lights, unit); });
+}
+
 }  // namespace shading::scene

@@ -85,5 +85,9 @@ shaded_image render_device(const rasterised& r, const device_config& dev, render
 shaded_image render_device_scanline(const rasterised& r, const device_config& dev, render_stats* stats = nullptr,
                                     bool walk_edges = false);
 shaded_image render_specular(const rasterised& r, const specular_fn& unit, render_stats* stats = nullptr);
+// Phong 1975's stepped geometry with the specular term from any unit (render_specular's shading): the
+// unit's own operations are its caller's to count (a cost model pricing the device apart).
+shaded_image render_specular_scanline(const rasterised& r, const specular_fn& unit, render_stats* stats = nullptr,
+                                      bool walk_edges = false);
 
 }  // namespace shading::scene

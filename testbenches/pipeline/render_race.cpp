@@ -1,12 +1,15 @@
 // The race (src/golden_pipeline/race.h) on one frame: every scheme at the frozen configuration,
 // one table (long operations a pixel in both conventions, state in bits, total error against exact
 // Phong on the frame buffer and the 8-bit image) and one sheet (every scheme's image, and below it
-// its error map at one scale). The cells' frame also runs in SystemC (the cell unit and the shading
+// its error map at one scale), and the counts by unit (race_ops.csv: a cost model's input,
+// scripts/phong_estimate.py). The cells' frame also runs in SystemC (the cell unit and the shading
 // pipeline) and is held code for code to their golden model. Exit 0 when it is (or with --no-sim),
 // 1 if not or on a failure, 2 for bad usage.
 //   build/bin/render_race                                  (the head at 512, n = 20, sqmul)
 //   build/bin/render_race --scene path/to/model.obj --n 100
 //   build/bin/render_race --cells-tol 1.5                  (an extra row, marked not frozen)
+#include <array>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -18,6 +21,7 @@
 #include "golden_pipeline/frame_setup.h"
 #include "golden_pipeline/race.h"
 #include "scene/image.h"
+#include "scene/shade.h"
 #include "testbenches/common/exit_status.h"
 #include "testbenches/common/report_log.h"
 #include "testbenches/options/tool_options.h"
@@ -59,6 +63,44 @@ std::string table(const std::vector<race_row>& rows, double phong_ops, bool csv)
         }
     }
     return t;
+}
+
+// One race_ops.csv row: a part's operations over the frame (scripts/phong_estimate.py prices each kind).
+std::string ops_line(const std::string& scheme, const std::string& part, std::size_t pixels, uint64_t samples,
+                     const scene::op_counts& c) {
+    std::string t = scheme + "," + part + "," + std::to_string(pixels) + "," + std::to_string(samples);
+    for (uint64_t v : {c.mul, c.div, c.sqrt, c.add, c.cmp, c.rsqrt}) t += "," + std::to_string(v);
+    return t + "\n";
+}
+
+// The counts a cost model needs by kind and by the unit that performs them (race_ops.csv): Phong 1975
+// with the device, the device's own operations apart (its samples counted as they are made); the
+// lines' geometry side, sample stage and interpolation. Each scheme's sum is held to its race row.
+std::string ops_table(const frame_setup& sf, const race_config& c, const std::vector<race_row>& rows) {
+    scene::op_counts dev_ops;
+    uint64_t samples = 0;
+    const scene::specular_fn unit = [&](unsigned n, uint32_t code, const std::array<uint64_t, 3>& ksi) {
+        dev_ops += scene::device_sample_ops(sf.dev, n);
+        ++samples;
+        return scene::device_specular(sf.dev, n, code, ksi);
+    };
+    scene::render_stats st;
+    scene::render_specular_scanline(sf.r, unit, &st, c.walk_edges);
+    const plan p = make_plan(sf.r, sf.k, sf.dev, c.lines);
+    const hardware_counts h = hardware_ops(p, c.lines, sf.dev, sf.k.n);
+    scene::op_counts phong = st.total(), lines = h.total();
+    phong += dev_ops;
+    for (const race_row& r : rows) {
+        const double got = double(r.scheme == "lines" ? lines.long_ops() : phong.long_ops()) / double(sf.pixels);
+        if ((r.scheme == "lines" || r.scheme == "phong1975_device") && r.frozen && got != r.long_ops)
+            throw scene::scene_error("render_race: the counts by unit of " + r.scheme + " miss its race row");
+    }
+    return "scheme,part,pixels,samples,mul,div,sqrt,add,cmp,rsqrt\n" +
+           ops_line("phong1975_device", "shader", sf.pixels, 0, st.total()) +
+           ops_line("phong1975_device", "device", sf.pixels, samples, dev_ops) +
+           ops_line("lines", "geometry", sf.pixels, p.check_samples, h.geometry) +
+           ops_line("lines", "sample_stage", sf.pixels, h.samples, h.sample_stage) +
+           ops_line("lines", "interpolation", sf.pixels, h.intervals, h.interpolation);
 }
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
@@ -131,8 +173,9 @@ int sc_main(int argc, char* argv[]) {
         const std::filesystem::path dir(o.out);
         write_file(dir / "race.md", md);
         write_file(dir / "race.csv", table(rows, phong_ops, true));
+        write_file(dir / "race_ops.csv", ops_table(sf, frozen, rows));
         scene::save_png(sheet(rows, scene::render_phong(sf.r), o.error_scale), (dir / "race_sheet.png").string());
-        std::printf("Wrote %s/race.md, race.csv and race_sheet.png (error maps white at %g levels).\n", o.out.c_str(),
+        std::printf("Wrote %s/race.md, race.csv, race_ops.csv and race_sheet.png (error maps white at %g levels).\n", o.out.c_str(),
                     o.error_scale);
         return exact ? tb::exit_success : tb::exit_failure;
     } catch (const std::exception& ex) {
