@@ -71,6 +71,7 @@ void write_pipeline_formats(std::ostream& os) {
     define_fmt(os, "PIPELINE_COLOUR", pipeline::colour_fmt);
     define(os, "PIPELINE_COLOUR_SAT_HI", pipeline::colour_fmt.mask());  // add_colour's saturation bound
     define_fmt(os, "PIPELINE_PIXEL", pipeline::pixel_fmt);
+    define(os, "PIPELINE_FRAME_WORD_W", pipeline::frame_word_width);
 }
 
 int write_formats(const std::string& path, unsigned sqmul_frac) {
