@@ -44,17 +44,17 @@ public:
     sc_core::sc_signal<bool> mem_we{"mem_we"}, mem_overflow{"mem_overflow"}, out_of_frame{"out_of_frame"};
     sc_core::sc_signal<store::addr_t> mem_wa{"mem_wa"}, mem_ra{"mem_ra"};
     sc_core::sc_signal<store::word> mem_wd{"mem_wd"}, mem_rd{"mem_rd"};
-    store mem;
+    store ram_frame;
 
     SC_HAS_PROCESS(frame_buffer);
     frame_buffer(const sc_core::sc_module_name& name, unsigned width, unsigned height)
-        : sc_module(name), mem("mem", uint64_t(pipeline::frame_pitch(width)) * height), width_(width),
+        : sc_module(name), ram_frame("ram_frame", uint64_t(pipeline::frame_pitch(width)) * height), width_(width),
           height_(height), x_bits_(interp::code_width(pipeline::frame_pitch(width))),
           written_(std::size_t(width) * height, 0) {
         if (pipeline::frame_pitch(width) == 1) x_bits_ = 0;  // a one-pixel row: the address is y
-        mem.clk(clk); mem.we(mem_we); mem.wa(mem_wa); mem.wd(mem_wd); mem.ra(mem_ra); mem.rd(mem_rd);
-        mem.overflow(mem_overflow);
-        mem.on_write([this](uint64_t a, uint64_t w) { monitor(a, w); });
+        ram_frame.clk(clk); ram_frame.we(mem_we); ram_frame.wa(mem_wa); ram_frame.wd(mem_wd); ram_frame.ra(mem_ra);
+        ram_frame.rd(mem_rd); ram_frame.overflow(mem_overflow);
+        ram_frame.on_write([this](uint64_t a, uint64_t w) { monitor(a, w); });
         SC_METHOD(write_port);  // the frame check and {y, x}: combinational
         sensitive << valid << x << y << r << g << b;
         SC_METHOD(check);
@@ -65,12 +65,12 @@ public:
     unsigned width() const { return width_; }
     unsigned height() const { return height_; }
     // Words and bits of the RAM (pitch x height words of frame_word_width bits).
-    uint64_t words() const { return mem.depth(); }
-    uint64_t bits() const { return mem.depth() * pipeline::frame_word_width; }
+    uint64_t words() const { return ram_frame.depth(); }
+    uint64_t bits() const { return ram_frame.depth() * pipeline::frame_word_width; }
     // The codes stored at (px, py) (0 before any write), read through the RAM's back door.
     rgb pixel(unsigned px, unsigned py) const {
         if (px >= width_ || py >= height_) throw std::out_of_range("frame_buffer::pixel outside the frame");
-        return unpack(mem.word_at(address(px, py)));
+        return unpack(ram_frame.word_at(address(px, py)));
     }
     // How many times (x, y) was written (0: never; more than 1: an interval overlapped another).
     uint8_t written(unsigned px, unsigned py) const { return written_.at(std::size_t(py) * width_ + px); }
