@@ -38,18 +38,19 @@ public:
     sc_core::sc_out<bool> overflow{"overflow"};
 
     sc_core::sc_signal<typename store::addr_t> mem_wa{"mem_wa"}, mem_ra{"mem_ra"};
-    store mem;
+    store ram_words;
 
     SC_HAS_PROCESS(split_ram);
     // hi_words values of hi, each of 2^lo_bits words.
     split_ram(const sc_core::sc_module_name& name, uint64_t hi_words, unsigned lo_bits)
-        : sc_module(name), mem("mem", hi_words << lo_bits), lo_bits_(lo_bits) {
-        mem.clk(clk); mem.we(we); mem.wa(mem_wa); mem.ra(mem_ra); mem.wd(wd); mem.rd(rd); mem.overflow(overflow);
+        : sc_module(name), ram_words("ram_words", hi_words << lo_bits), lo_bits_(lo_bits) {
+        ram_words.clk(clk); ram_words.we(we); ram_words.wa(mem_wa); ram_words.ra(mem_ra); ram_words.wd(wd);
+        ram_words.rd(rd); ram_words.overflow(overflow);
         SC_METHOD(address);  // wiring: {hi, lo}
         sensitive << wa_hi << wa_lo << ra_hi << ra_lo;
     }
-    uint64_t words() const { return mem.depth(); }
-    uint64_t bits() const { return mem.depth() * W; }
+    uint64_t words() const { return ram_words.depth(); }
+    uint64_t bits() const { return ram_words.depth() * W; }
 
 private:
     void address() {

@@ -21,6 +21,7 @@ module ram #(
 );
     localparam [31:0] DEPTH_WORD = DEPTH;
     localparam [AW:0] WORDS = DEPTH_WORD[AW:0];  // DEPTH <= 2^AW
+    localparam integer IW = DEPTH > 2 ? $clog2(DEPTH) : 1;  // the wires that index the words
     reg [W-1:0] mem [0:DEPTH-1];
 
     integer i;
@@ -30,9 +31,9 @@ module ram #(
         if (DEPTH < (1 << AW)) begin : g_partial
             // Some addresses name no word: a write to one is dropped and flagged.
             reg dropped = 1'b0;
-            always @(posedge clk) if (we && {1'b0, wa} < WORDS) mem[wa] <= wd;
+            always @(posedge clk) if (we && {1'b0, wa} < WORDS) mem[wa[IW-1:0]] <= wd;
             always @(posedge clk) if (we && {1'b0, wa} >= WORDS) dropped <= 1'b1;
-            assign rd = {1'b0, ra} < WORDS ? mem[ra] : {W{1'b0}};
+            assign rd = {1'b0, ra} < WORDS ? mem[ra[IW-1:0]] : {W{1'b0}};
             assign overflow = dropped;
         end else begin : g_full
             // Every address names a word: nothing to drop.

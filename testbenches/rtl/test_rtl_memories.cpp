@@ -1,10 +1,12 @@
-// The memories' Verilog twins (rtl/blocks/ram.v, rtl/pipeline/frame_buffer.v, verilated with --sc)
-// co-simulated with the SystemC blocks (modules/blocks/ram.h, modules/pipeline/frame_buffer.h) on the
-// same pins and clock, both held to the bench's own record of what was written (a plain array, the
-// independent reference): the RAM at every edge (random writes, some beyond its words, random reads),
-// the frame buffer on a pixel stream (a whole frame, then random rewrites and writes outside the
-// frame) read back word by word through the RTL's read port and the model's back door. The negative
-// test corrupts one word of the record: both sides must be seen to differ from it, once each.
+// The memories' Verilog twins (rtl/blocks/ram.v, rtl/pipeline/frame_buffer.v, walker_store.v,
+// band_buffer.v, verilated with --sc) co-simulated with the SystemC blocks (modules/blocks/ram.h,
+// modules/pipeline/frame_buffer.h, cell_stores.h) on the same pins and clock, both held to the bench's
+// own record of what was written (the independent reference): the RAM at every edge (random writes,
+// some beyond its words, random reads), the frame buffer on a pixel stream (a whole frame, then
+// random rewrites and writes outside the frame) read back word by word through the RTL's read port
+// and the model's back door, the cells' stores on the replay of the head at 512's cell plan
+// (testbenches/pipeline/cell_store_replay.h). The negative test corrupts one word of the frame's
+// record: both sides must be seen to differ from it, once each.
 // SHADING_TRACE=<dir>: <dir>/<Suite.Test>.vcd and <dir>/<Suite.Test>_rtl.vcd.
 #include <gtest/gtest.h>
 
@@ -24,8 +26,14 @@
 
 // The verilated memories (testbenches/rtl/memories.cmake): ram.v at W = 16, DEPTH = 48, AW = 6;
 // frame_buffer.v at 48 x 40 (pitch 64: 6 + 6 address wires, 2560 words).
+#include "Vrtl_band_buffer.h"
 #include "Vrtl_frame_buffer.h"
 #include "Vrtl_ram.h"
+#include "Vrtl_walker_store.h"
+#include "golden_pipeline/frame_setup.h"
+#include "golden_pipeline/race.h"
+#include "scene/scanline.h"
+#include "testbenches/pipeline/cell_store_replay.h"
 
 using namespace shading;
 
@@ -240,4 +248,30 @@ TEST(RtlFrameBufferVerdict, ACorruptedRecordWordIsSeenOnBothSides) {
     auto& b = run(new frame_pair_bench("tb", s.writes, s.record), period * double(s.writes.size() + 100) + settle * 3000.0);
     EXPECT_EQ(b.mismatches_o, 1u);
     EXPECT_EQ(b.mismatches_b, 1u);
+}
+
+// The head at 512's cell plan replayed into both stores and their RTL twins on the same pins: every
+// word back on both sides, no overflow flag on either.
+TEST(RtlCellStores, HeadAt512ReplayEveryWordBack) {
+    const pipeline::frame_setup f("head", SHADING_SOURCE_DIR, 512, "sqmul", true);
+    const pipeline::race_config c = pipeline::frozen_race_config();
+    const pipeline::cell_plan p = pipeline::make_cell_plan(f.r, f.k, f.dev, c.cell_lines, c.cells);
+    auto* b = new tb::cell_store_replay(
+        "tb", tb::make_store_schedule(f.r, p, scene::span_stepper(f.r).words_per_triangle(), c.cells.s_max), 512);
+    auto& rtl_walker = *new Vrtl_walker_store("rtl_walker");  // kept: SystemC cannot tear a design down
+    auto& rtl_band = *new Vrtl_band_buffer("rtl_band");
+    rtl_walker.clk(b->clk); rtl_walker.we(b->wp.we); rtl_walker.wa_hi(b->wp.wa_hi); rtl_walker.wa_lo(b->wp.wa_lo);
+    rtl_walker.ra_hi(b->wp.ra_hi); rtl_walker.ra_lo(b->wp.ra_lo); rtl_walker.wd(b->wp.wd); rtl_walker.rd(b->wp.rd_o);
+    rtl_walker.overflow(b->wp.overflow_o);
+    rtl_band.clk(b->clk); rtl_band.we(b->bp.we); rtl_band.wa_hi(b->bp.wa_hi); rtl_band.wa_lo(b->bp.wa_lo);
+    rtl_band.ra_hi(b->bp.ra_hi); rtl_band.ra_lo(b->bp.ra_lo); rtl_band.wd(b->bp.wd); rtl_band.rd(b->bp.rd_o);
+    rtl_band.overflow(b->bp.overflow_o);
+    b->second = true;
+    const std::size_t ops = b->schedule().walker.size() + b->schedule().band.size();
+    EXPECT_TRUE(tb::run_to_completion(*b, period * 2.0 * double(ops + 100)));
+    EXPECT_GT(b->walker_counts.reads, 10000u);
+    EXPECT_EQ(b->band_counts.reads, 9 * p.cells.size());
+    EXPECT_EQ(b->walker_counts.mismatches + b->walker_counts.mismatches_o, 0u);
+    EXPECT_EQ(b->band_counts.mismatches + b->band_counts.mismatches_o, 0u);
+    for (const auto* of : {&b->wp.overflow, &b->wp.overflow_o, &b->bp.overflow, &b->bp.overflow_o}) EXPECT_FALSE(of->read());
 }
