@@ -5,7 +5,7 @@
 // dropped and sets `overflow`, a sticky flip-flop; a read address beyond DEPTH reads 0 (the SystemC
 // block also reports both; a report is not hardware). A memory array with one write and one read
 // process, so synthesis infers a memory. No reset pin, as the SystemC block: every word and the
-// flag start at 0. AW >= clog2(DEPTH).
+// flag start at 0 (in simulation). AW >= clog2(DEPTH).
 module ram #(
     parameter W = 16,
     parameter DEPTH = 64,
@@ -24,8 +24,12 @@ module ram #(
     localparam integer IW = DEPTH > 2 ? $clog2(DEPTH) : 1;  // the wires that index the words
     reg [W-1:0] mem [0:DEPTH-1];
 
+`ifndef SYNTHESIS
+    // Simulation only: a RAM macro has no initial contents to synthesize (a frame buffer's million
+    // words would be a million initial values).
     integer i;
     initial for (i = 0; i < DEPTH; i = i + 1) mem[i] = {W{1'b0}};
+`endif
 
     generate
         if (DEPTH < (1 << AW)) begin : g_partial
