@@ -158,6 +158,7 @@ private:
     bool done_ = false;
 };
 
+// The bench made in a statement of its own before (its sc_module_name gone: elaboration complete).
 template <class Bench>
 Bench& run(Bench* bench, const sc_core::sc_time& limit) {
     Verilated::traceEverOn(true);
@@ -206,7 +207,8 @@ frame_stream make_stream(uint32_t seed, std::size_t extra) {
 
 TEST(RtlRam, RandomWritesReadsAndDropsEveryEdge) {
     tb::report_log::get().expect(msg::input);  // the model's report of each dropped write
-    auto& b = run(new ram_pair_bench("tb", 5000, 20261206), period * 5100.0);
+    auto* bench = new ram_pair_bench("tb", 5000, 20261206);
+    auto& b = run(bench, period * 5100.0);
     EXPECT_EQ(b.checks, 5000u);
     EXPECT_EQ(b.mismatches, 0u) << "rd and overflow of both sides against the record";
     EXPECT_GT(b.dropped, 100u);
@@ -217,7 +219,8 @@ TEST(RtlRam, RandomWritesReadsAndDropsEveryEdge) {
 TEST(RtlFrameBuffer, StreamWithWritesOutsideTheFrameReadsBackEveryWord) {
     tb::report_log::get().expect(msg::input);
     const frame_stream s = make_stream(77, 3000);
-    auto& b = run(new frame_pair_bench("tb", s.writes, s.record), period * double(s.writes.size() + 100) + settle * 3000.0);
+    auto* bench = new frame_pair_bench("tb", s.writes, s.record);
+    auto& b = run(bench, period * double(s.writes.size() + 100) + settle * 3000.0);
     EXPECT_EQ(b.words_read, 64u * 40u);
     EXPECT_EQ(b.mismatches_o, 0u) << "the RTL's words against the record";
     EXPECT_EQ(b.mismatches_b, 0u) << "the model's pixels against the record";
@@ -233,7 +236,8 @@ TEST(RtlFrameBuffer, StreamWithWritesOutsideTheFrameReadsBackEveryWord) {
 // No write outside the frame: neither flag is set.
 TEST(RtlFrameBuffer, AWholeFrameInsideLeavesTheFlagsClear) {
     const frame_stream s = make_stream(78, 0);
-    auto& b = run(new frame_pair_bench("tb", s.writes, s.record), period * double(s.writes.size() + 100) + settle * 3000.0);
+    auto* bench = new frame_pair_bench("tb", s.writes, s.record);
+    auto& b = run(bench, period * double(s.writes.size() + 100) + settle * 3000.0);
     EXPECT_EQ(s.outside, 0u);
     EXPECT_EQ(b.mismatches_o + b.mismatches_b, 0u);
     EXPECT_EQ(b.dut.writes(), 48u * 40u);
@@ -245,7 +249,8 @@ TEST(RtlFrameBuffer, AWholeFrameInsideLeavesTheFlagsClear) {
 TEST(RtlFrameBufferVerdict, ACorruptedRecordWordIsSeenOnBothSides) {
     frame_stream s = make_stream(79, 0);
     s.record[5 * 64 + 17] ^= uint64_t(1) << 40;
-    auto& b = run(new frame_pair_bench("tb", s.writes, s.record), period * double(s.writes.size() + 100) + settle * 3000.0);
+    auto* bench = new frame_pair_bench("tb", s.writes, s.record);
+    auto& b = run(bench, period * double(s.writes.size() + 100) + settle * 3000.0);
     EXPECT_EQ(b.mismatches_o, 1u);
     EXPECT_EQ(b.mismatches_b, 1u);
 }
