@@ -74,7 +74,10 @@ private:
             wait(clk.posedge_event());
             wait(settle);
             if (was_we && was_wa < words) record_[was_wa] = was_wd;
-            if (was_we && was_wa >= words) flag = true, ++dropped;
+            if (was_we && was_wa >= words) {
+                flag = true;
+                ++dropped;
+            }
             const unsigned a = ra.read().to_uint(), want = a < words ? record_[a] : 0;
             for (unsigned got : {rd_b.read().to_uint(), rd_o.read().to_uint()}) mismatches += got != want;
             mismatches += (overflow_b.read() != flag) + (overflow_o.read() != flag);
