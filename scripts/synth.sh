@@ -19,6 +19,8 @@
 #                         the square-and-multiply designs' table, then the shading pipeline's
 #                         units beside its whole top
 #   paths.csv             the depth of each measured path of the clocked designs
+#   memories.csv          the memories alone (frame buffer, band buffer at 512 and 1024, walker
+#                         store): bits counted, not mapped, beside the format tables' words x bits
 #   ys/<variant>.ys       the yosys script of each variant (rerun one: yosys -s ys/<variant>.ys)
 #   logs/<variant>.log    yosys's log
 # Usage: scripts/synth.sh [--build DIR] [--out DIR] [--jobs N] [--only REGEX] [--extra]
@@ -270,6 +272,14 @@ EOF
   variant "phong_stage_inv_$((pw + 1))" inverter_bank "" "-chparam WIN $((pw + 1)) -chparam WOUT $((pw + 1))"
   variant "phong_stage_sub_$((pw + 1))" adder "" "-chparam WA $((pw + 1)) -chparam WB $((pw + 1)) -chparam WS $((pw + 1))"
   variant "phong_stage_mux_$pw" mux "" "-chparam W $pw -chparam N 2 -chparam SW 1"
+  # The memories alone (ours): the frame buffer and the cells' band buffer at 512 and 1024, the
+  # walker's slots; read as memories by proc, their bits counted (summarize.py: memories.csv, each
+  # against the words x bits of the format tables).
+  for size in 512 1024; do
+    ram_bits "mem_frame_buffer_${size}_bits" frame_buffer "-chparam WIDTH $size -chparam HEIGHT $size"
+    ram_bits "mem_band_buffer_${size}_bits" band_buffer "-chparam WIDTH $size"
+  done
+  ram_bits mem_walker_store_bits walker_store ""
   # The ROM alone at the fraction-bit sweep's sizes (F = 2..10; the device's is F = 6).
   for rom in $(ls "$gen"/rom_sweep/ua22802_a_rom_f*.v | sort -V); do
     f=$(basename "$rom" .v | sed 's/.*_f//')

@@ -4,7 +4,8 @@
 //   rg_lat_0..8     the lattice registers (strobe ld_lat), lattice[3 i + j] at (j s/2, i s/2)
 //   cq_col0..2      quadratic coefficient units down lattice columns 0, 1, 2 (lattice j, 3 + j, 6 + j)
 //   fd_col0..2      forward-difference channels (quadratic, any m): the column's value at every row
-//   buf_col0..2     column buffers of 64 words, written while the column channels stream (we, wa)
+//   buf_col0..2     column buffers of 64 words, written while the column channels stream (we, wa);
+//                   their overflow flags on nets of their own (6 address wires name only words)
 //   cq_row, fd_row  the quadratic through the three column values of row ra, along the row: px
 // The cubic inputs of the forward-difference channels are tied to zero and their degree select to
 // the quadratic (k_zero, k_quad). Only instantiates and wires.
@@ -26,7 +27,7 @@ class cell_channel : public sc_core::sc_module {
 public:
     static constexpr unsigned WI = interp::sample_fmt.width;
     static constexpr unsigned depth = 1u << interp::m_max;  // rows of the largest cell
-    using buffer = ram<WI, depth>;
+    using buffer = ram<WI, interp::code_width(depth)>;
     using addr_t = buffer::addr_t;
     using len_t = fd_channel::len_t;
     using m_t = fd_channel::m_t;
@@ -46,6 +47,7 @@ public:
     sc_core::sc_vector<sc_core::sc_signal<pipeline::coef_t>> col_a{"col_a", 3}, col_b{"col_b", 3}, col_c{"col_c", 3};
     sc_core::sc_vector<sc_core::sc_signal<sample_t>> col_px{"col_px", 3}, col_rd{"col_rd", 3};
     sc_core::sc_vector<sc_core::sc_signal<bool>> col_valid_n{"col_valid_n", 2}, col_last_n{"col_last_n", 2};
+    sc_core::sc_vector<sc_core::sc_signal<bool>> buf_overflow{"buf_overflow", 3};
     sc_core::sc_signal<pipeline::coef_t> row_a{"row_a"}, row_b{"row_b"}, row_c{"row_c"}, zero_word{"zero_word"};
     sc_core::sc_signal<fd_channel::sel_t> quad_sel{"quad_sel"};
 
@@ -54,7 +56,7 @@ public:
     constant<fd_channel::sel_t> k_quad{"k_quad", fd_channel::sel_t(1)};  // fd_channel: 1 selects the quadratic
     sc_core::sc_vector<coef_unit_quad> cq_col;
     sc_core::sc_vector<fd_channel> fd_col;
-    sc_core::sc_vector<buffer> buf_col{"buf_col", 3};
+    sc_core::sc_vector<buffer> buf_col;
     coef_unit_quad cq_row;
     fd_channel fd_row;
 
@@ -63,6 +65,7 @@ public:
           rg_lat("rg_lat", 9, [&](const char* n, std::size_t) { return new reg<WI>(n, dl.reg); }),
           cq_col("cq_col", 3, [&](const char* n, std::size_t) { return new coef_unit_quad(n, dl); }),
           fd_col("fd_col", 3, [&](const char* n, std::size_t) { return new fd_channel(n, 0, dl); }),
+          buf_col("buf_col", 3, [](const char* n, std::size_t) { return new buffer(n, depth); }),
           cq_row("cq_row", dl), fd_row("fd_row", 0, dl) {
         k_zero.y(zero_word);
         k_quad.y(quad_sel);
@@ -76,6 +79,7 @@ public:
             wire_fd(fd_col[j], col_start, col_a[j], col_b[j], col_c[j], col_px[j]);
             buffer& b = buf_col[j];
             b.clk(clk); b.we(col_valid); b.wa(wa); b.wd(col_px[j]); b.ra(ra); b.rd(col_rd[j]);
+            b.overflow(buf_overflow[j]);
         }
         // Channel's column 0 reports its stream (the three run in step); 1 and 2 drive nets of their own.
         fd_col[0].valid(col_valid); fd_col[0].last(col_last);

@@ -51,7 +51,10 @@ module cell_channel #(
     wire col_valid_n_0, col_valid_n_1, col_last_n_0, col_last_n_1;
     wire [WC-1:0] row_a, row_b, row_c, zero_word;
     wire quad_sel;
-    wire unused_ok = &{1'b0, col_valid_n_0, col_valid_n_1, col_last_n_0, col_last_n_1, 1'b0};
+    // The column buffers' overflow flags: 6 address wires name only words, so they stay 0.
+    wire buf_overflow_0, buf_overflow_1, buf_overflow_2;
+    wire unused_ok = &{1'b0, col_valid_n_0, col_valid_n_1, col_last_n_0, col_last_n_1, buf_overflow_0, buf_overflow_1,
+                       buf_overflow_2, 1'b0};
 
     // Blocks.
     reg_block #(.W(WI)) rg_lat_0 (.ctl(ld_lat), .d(in_lat_0), .q(lat_0));
@@ -84,11 +87,14 @@ module cell_channel #(
         .cc(zero_word), .cd(zero_word), .qa(col_a_2), .qb(col_b_2), .qc(col_c_2), .px(col_px_2), .valid(col_valid_n_1),
         .last(col_last_n_1));
     ram #(.W(WI), .DEPTH(DEPTH), .AW(WA)) buf_col_0 (
-        .clk(clk), .we(col_valid), .wa(wa), .ra(ra), .wd(col_px_0), .rd(col_rd_0));
+        .clk(clk), .we(col_valid), .wa(wa), .ra(ra), .wd(col_px_0), .rd(col_rd_0),
+        .overflow(buf_overflow_0));
     ram #(.W(WI), .DEPTH(DEPTH), .AW(WA)) buf_col_1 (
-        .clk(clk), .we(col_valid), .wa(wa), .ra(ra), .wd(col_px_1), .rd(col_rd_1));
+        .clk(clk), .we(col_valid), .wa(wa), .ra(ra), .wd(col_px_1), .rd(col_rd_1),
+        .overflow(buf_overflow_1));
     ram #(.W(WI), .DEPTH(DEPTH), .AW(WA)) buf_col_2 (
-        .clk(clk), .we(col_valid), .wa(wa), .ra(ra), .wd(col_px_2), .rd(col_rd_2));
+        .clk(clk), .we(col_valid), .wa(wa), .ra(ra), .wd(col_px_2), .rd(col_rd_2),
+        .overflow(buf_overflow_2));
     coef_unit_quad cq_row (.clk(clk), .i1(col_rd_0), .i2(col_rd_1), .i3(col_rd_2), .a(row_a), .b(row_b), .c(row_c));
     fd_channel #(.FIXED_M(0)) fd_row (
         .clk(clk), .start(row_start), .deg_sel(quad_sel), .len(len), .m(m), .ca(zero_word), .cb(zero_word),

@@ -496,10 +496,10 @@ def main():
     write_comparison(args.out, by, paths)
     write_sqmul_designs(args.out, by, paths)
     write_pipeline(args.out, by, paths)
+    bad = write_memories(args.out, names, fmt)
 
     # Every ROM read as a memory must hold exactly words x word bits of the format tables
     # (ua22802_formats.h via shading_formats.vh): the device's ROM (F = 6) is UA22802_ROM_BITS.
-    bad = []
     words, a_int = int(fmt["UA22802_ROM_WORDS"]), int(fmt["UA22802_A_W"]) - int(fmt["UA22802_A_FRAC"])
     for name in names:
         m = re.match(r"rom_f(\d+)_bits$", name)
@@ -526,6 +526,46 @@ def main():
         print("synth: no result for %s (see logs/%s.log)" % (name, name), file=sys.stderr)
     print("synth: wrote %s/synth.csv and synth.md (%d variants)" % (args.out, len(rows)))
     return 1 if failed or bad else 0
+
+
+def memory_want(name, fmt):
+    """The bits the format tables give a memory row (mem_<what>[_<size>]_bits), or None."""
+    m = re.match(r"mem_(frame_buffer|band_buffer)_(\d+)_bits$", name)
+    if m:
+        pitch = 1 << (int(m.group(2)) - 1).bit_length()
+        if m.group(1) == "frame_buffer":
+            return pitch * int(m.group(2)) * int(fmt["PIPELINE_FRAME_WORD_W"])
+        return int(fmt["PIPELINE_BAND_LINES"]) * pitch * int(fmt["PIPELINE_BAND_WORD_W"])
+    if name == "mem_walker_store_bits":
+        return (int(fmt["PIPELINE_WALKER_SLOTS"]) << int(fmt["PIPELINE_WALKER_WORD_AW"])) * int(fmt["PIPELINE_WALKER_WORD_W"])
+    return None
+
+
+def write_memories(out, names, fmt):
+    """memories.csv and synth.md's last table: each memory row's bits (yosys proc, not mapped), which must
+    be the words x bits its format tables give. Returns the rows that differ."""
+    rows, bad = [], []
+    for name in names:
+        want = memory_want(name, fmt)
+        if want is None:
+            continue
+        got = parse_stat(os.path.join(out, "logs", name + ".stat"))["memory_bits"]
+        rows.append((name[4:-5], got, want))
+        if got != want:
+            bad.append(name)
+            print("synth: %s: %s memory bits, the format tables say %d" % (name, got, want), file=sys.stderr)
+    if not rows:
+        return bad
+    with open(os.path.join(out, "memories.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["memory", "memory_bits", "format_bits"])
+        w.writerows(rows)
+    with open(os.path.join(out, "synth.md"), "a") as f:
+        f.write("\n## Memories (rtl/blocks/ram.v's arrays read by proc, not mapped)\n\n| memory | bits | the format "
+                "tables' words x bits |\n|---|---|---|\n")
+        for r in rows:
+            f.write("| %s | %s | %d |\n" % r)
+    return bad
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@
 #include <string>
 
 #include "formats/interp_formats.h"
+#include "formats/cell_store_formats.h"
 #include "formats/pipeline_formats.h"
 #include "formats/specular_formats.h"
 #include "formats/sqmul_formats.h"
@@ -71,6 +72,14 @@ void write_pipeline_formats(std::ostream& os) {
     define_fmt(os, "PIPELINE_COLOUR", pipeline::colour_fmt);
     define(os, "PIPELINE_COLOUR_SAT_HI", pipeline::colour_fmt.mask());  // add_colour's saturation bound
     define_fmt(os, "PIPELINE_PIXEL", pipeline::pixel_fmt);
+    define(os, "PIPELINE_FRAME_WORD_W", pipeline::frame_word_width);
+    define(os, "PIPELINE_WALKER_SLOT_W", pipeline::walker_slot_bits);
+    define(os, "PIPELINE_WALKER_SLOTS", pipeline::walker_slots);
+    define(os, "PIPELINE_WALKER_WORD_AW", pipeline::walker_word_bits);
+    define(os, "PIPELINE_WALKER_WORD_W", pipeline::walker_word_width);
+    define(os, "PIPELINE_BAND_LINES", pipeline::band_lines);
+    define(os, "PIPELINE_BAND_LINE_W", pipeline::band_line_bits);
+    define(os, "PIPELINE_BAND_WORD_W", pipeline::band_word_width);
 }
 
 int write_formats(const std::string& path, unsigned sqmul_frac) {

@@ -10,6 +10,7 @@
 #include "blocks/eq_cmp.h"
 #include "blocks/inverter_bank.h"
 #include "blocks/mul.h"
+#include "blocks/ram.h"
 #include "blocks/reg.h"
 #include "blocks/saturator.h"
 #include "blocks/synchroniser.h"
@@ -247,4 +248,52 @@ TEST(Synchroniser, ThreeStagesOfAFourWireWord) {
     EXPECT_EQ(q.read(), 0u);
     sc_start(sc_time(2, SC_PS));  // 30.001 ns
     EXPECT_EQ(q.read(), 0xAu);
+}
+
+TEST(Ram, WritesAtRisingEdgesReadsAtOnceAndFlagsADroppedWrite) {
+    // Five words of 8 bits on 3 address wires (addresses 5..7 name no word), a 10 ns clock rising at
+    // 0, 10, 20 ns, ... Inputs change at 3 ns past an edge. Hand-worked: 10 ns stores 0xA5 at 2;
+    // 20 ns, `we` 0: nothing; 30 ns stores 0x3C at 4; 40 ns, a write to 6: dropped, overflow set,
+    // reported; 50 ns stores 0x11 at 2 over 0xA5; overflow stays 1 (sticky).
+    tb::report_log::get().expect(msg::input);
+    sc_core::sc_clock clk("clk", sc_time(10, SC_NS));
+    sc_core::sc_signal<bool> we("we"), overflow("overflow");
+    bus<3> wa("wa"), ra("ra");
+    bus<8> wd("wd"), rd("rd");
+    ram<8, 3> mem("mem", 5);
+    mem.clk(clk); mem.we(we); mem.wa(wa); mem.ra(ra); mem.wd(wd); mem.rd(rd); mem.overflow(overflow);
+    ra.write(2);
+    sc_start(3, SC_NS);
+    we.write(true); wa.write(2); wd.write(0xA5);
+    sc_start(sc_time(6999, SC_PS));  // 9.999 ns
+    EXPECT_EQ(rd.read(), 0u) << "every word starts at 0";
+    sc_start(2, SC_PS);  // 10.001 ns
+    EXPECT_EQ(rd.read(), 0xA5u) << "stored at the rising edge, read at once";
+    sc_start(sc_time(2999, SC_PS));  // 13 ns
+    we.write(false); wa.write(4); wd.write(0x77);
+    sc_start(10, SC_NS);  // 23 ns: the edge at 20 ns wrote nothing
+    ra.write(4);
+    sc_start(1, SC_PS);
+    EXPECT_EQ(rd.read(), 0u) << "`we` 0 at 20 ns: 0x77 not stored";
+    we.write(true); wd.write(0x3C);
+    sc_start(10, SC_NS);  // 33 ns
+    EXPECT_EQ(rd.read(), 0x3Cu);
+    wa.write(6); wd.write(0xFF);
+    sc_start(sc_time(6998, SC_PS));  // 39.999 ns
+    EXPECT_FALSE(overflow.read());
+    sc_start(2, SC_PS);  // 40.001 ns
+    EXPECT_TRUE(overflow.read()) << "the write to 6 dropped";
+    EXPECT_EQ(tb::report_log::get().count(msg::input), 1u);
+    wa.write(2); wd.write(0x11);
+    sc_start(sc_time(12999, SC_PS));  // 53 ns
+    EXPECT_TRUE(overflow.read()) << "sticky";
+    ra.write(2);
+    sc_start(1, SC_PS);
+    EXPECT_EQ(rd.read(), 0x11u);
+    EXPECT_EQ(mem.writes(), 3u) << "0xA5, 0x3C, 0x11; the dropped write is not one";
+    for (unsigned a = 0; a < 5; ++a) EXPECT_EQ(mem.word_at(a), a == 2 ? 0x11u : a == 4 ? 0x3Cu : 0u) << a;
+    ra.write(7);
+    sc_start(1, SC_PS);
+    EXPECT_EQ(rd.read(), 0u) << "no word at 7: reads 0";
+    EXPECT_EQ(tb::report_log::get().count(msg::input), 2u) << "the read beyond the words reported too";
 }

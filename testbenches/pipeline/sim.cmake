@@ -16,6 +16,9 @@ endif()
 # and with the pipeline taking the rest, the scheme's whole frame.
 if(TARGET shading_pipeline_sim)
   shading_add_gtest(test_cell_unit SOURCES test_cell_unit.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
+  # The cells' geometry-side stores (modules/pipeline/cell_stores.h): their capacities the worst case of
+  # our scenes' cell plans, a replay of the geometry side's writes on each, and too small a capacity flagged.
+  shading_add_gtest(test_cell_stores SOURCES test_cell_stores.cpp LIBS shading_pipeline TIMEOUT 300)
   # The cells rendered in SystemC (render_cells.cpp): exit 0 when the frame is the golden one.
   add_executable(render_cells ${CMAKE_CURRENT_SOURCE_DIR}/render_cells.cpp)
   target_link_libraries(render_cells PRIVATE shading_pipeline_sim shading_pipeline shading_options

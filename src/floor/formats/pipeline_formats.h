@@ -31,4 +31,15 @@ inline constexpr qfmt colour_fmt = interp::sample_fmt;
 // 8 low fraction wires dropped, floor). The frame buffer stores these; PNGs round them to 8 bits.
 inline constexpr qfmt pixel_fmt = interp::sample_fmt;
 
+// Frame buffer (ours; modules/pipeline/frame_buffer.h, rtl/pipeline/frame_buffer.v): one word per
+// pixel, the three channels' pixel_fmt codes side by side, {r, g, b} (r on the high wires).
+inline constexpr unsigned frame_word_width = 3 * pixel_fmt.width;
+// Its row pitch: the width rounded up to a power of two, so that the word of (x, y) is at {y, x}
+// (wiring, no multiplier); the words of x in width..pitch-1 are never written.
+constexpr unsigned frame_pitch(unsigned width) {
+    unsigned p = 1;
+    while (p < width) p <<= 1;
+    return p;
+}
+
 }  // namespace shading::pipeline
