@@ -40,14 +40,17 @@ inline CLI::Validator not_nan() {
         "", "NOT_NAN");
 }
 
-// An empty argument is bad usage. CLI11 2.1 drops an unexpected empty positional in an app with
-// option groups, so `render_race ""` ran the race as if nothing had been given.
-inline bool has_empty_argument(int argc, const char* const* argv) {
-    for (int i = 1; i < argc; ++i)
-        if (argv[i][0] == '\0') {
-            std::fprintf(stderr, "argument %d is empty\nRun with --help for more information.\n", i);
-            return true;
-        }
+// An empty argument is bad usage unless it is the value of an option that takes one ("--md ''": no
+// Markdown report). CLI11 2.1 drops an unexpected empty positional in an app with option groups, so
+// `render_race ""` ran the race as if nothing had been given.
+inline bool has_empty_argument(const CLI::App& app, int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        if (argv[i][0] != '\0') continue;
+        const CLI::Option* before = i > 1 ? app.get_option_no_throw(argv[i - 1]) : nullptr;
+        if (before != nullptr && before->get_type_size() != 0) continue;
+        std::fprintf(stderr, "argument %d is empty\nRun with --help for more information.\n", i);
+        return true;
+    }
     return false;
 }
 
@@ -56,10 +59,10 @@ inline bool has_empty_argument(int argc, const char* const* argv) {
 // As CLI11_PARSE (which returns CLI11's own statuses), in a function returning the exit status
 // (an int, or a std::optional<int> holding it). CLI11 2.1 lets std::stoll's exceptions out of a
 // flag given a number no long long holds ("--no-sim=433433333334433333333", found by
-// fuzz_options): bad usage too, not a terminate. An empty argument is refused first.
+// fuzz_options): bad usage too, not a terminate. A stray empty argument is refused first.
 #define SHADING_CLI_PARSE(app, argc, argv)                          \
     do {                                                            \
-        if (::shading::tb::has_empty_argument((argc), (argv)))      \
+        if (::shading::tb::has_empty_argument((app), (argc), (argv))) \
             return ::shading::tb::exit_usage;                        \
         try {                                                       \
             (app).parse((argc), (argv));                            \
