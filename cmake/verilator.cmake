@@ -94,17 +94,24 @@ if(SHADING_SANITIZE)  # not ours: uninstrumented, as shading_verilate_rtl says
   target_compile_options(shading_verilated PRIVATE -fno-sanitize=all -g0)
 endif()
 
-# shading_verilated_finish(<target> <prefix>), after verilate() of model <prefix> into <target>:
+# SHADING_RTL_OPT_FLAGS: the optimisation of the verilated models' C++ in a Release build. Verilator
+# writes megabytes of C++ per model (the pipeline's fd_any: 6.9 MB), which g++ compiles in 39 CPU s at
+# -O3, 23 at -O1, 12 at -O0. The co-simulations only check; -O0 made the longest one (rtl.frame.head512)
+# run 3 times as long, so -O1. The perf_models row keeps -O3 (SPEED below).
+set(SHADING_RTL_OPT_FLAGS "-O1" CACHE STRING
+    "Optimisation flags of the verilated models' C++ in a Release build (perf_models' row keeps -O3)")
+
+# shading_verilated_finish(<target> <prefix> [SPEED]), after verilate() of model <prefix> into <target>:
 # - the runtime sources verilate() added replaced by shading_verilated. A runtime file the library
 #   lacks (another Verilator) stops the configure.
 # - the model's generated files compiled as one translation unit, <prefix>__unity.cpp, which
 #   includes them all (what Verilator's own makefile does with its __ALL.cpp): each small file spends
 #   most of its time reading SystemC's and Verilator's headers (Vrtl_squared_saturate's 10 files: 38.8
 #   CPU s one by one, 5.3 s as one).
-# - that unit keeps -O3 in a suite built at SHADING_TEST_OPT_FLAGS (cmake/shading.cmake): -Og compiled
-#   the models barely faster (test_rtl_squared's four: 112 CPU s, 123 at -O3) and test_rtl_squared's
-#   tests then ran 49 CPU s instead of 35.
+# - that unit compiled at SHADING_RTL_OPT_FLAGS (below) in a Release build, or at -O3 with SPEED (the
+#   perf_models row, whose rate docs/speed.md quotes).
 function(shading_verilated_finish target prefix)
+  cmake_parse_arguments(ARG "SPEED" "" "" ${ARGN})
   get_target_property(_sources ${target} SOURCES)
   set(_kept)
   set(_model)
@@ -137,7 +144,14 @@ function(shading_verilated_finish target prefix)
   # the unit, which is rebuilt when one of them changes.
   set_source_files_properties(${_model} PROPERTIES HEADER_FILE_ONLY ON)
   set_source_files_properties(${_unity} PROPERTIES GENERATED ON OBJECT_DEPENDS "${_model}")
-  set_property(SOURCE ${_unity} APPEND PROPERTY COMPILE_OPTIONS $<$<CONFIG:Release>:-O3>)
+  if(ARG_SPEED)
+    set(_opt -O3)
+  else()
+    separate_arguments(_opt UNIX_COMMAND "${SHADING_RTL_OPT_FLAGS}")
+  endif()
+  foreach(_o IN LISTS _opt)
+    set_property(SOURCE ${_unity} APPEND PROPERTY COMPILE_OPTIONS $<$<CONFIG:Release>:${_o}>)
+  endforeach()
   set_property(TARGET ${target} PROPERTY SOURCES ${_kept} ${_unity})
   target_link_libraries(${target} PRIVATE shading_verilated)
 endfunction()
@@ -192,12 +206,14 @@ endforeach()
 add_executable(gen_rtl ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp)
 target_link_libraries(gen_rtl PRIVATE shading_golden)
 
-# shading_verilate_rtl(<target> <prefix> TOP <module> SOURCE <file.v> DIRS <dirs...> [ARGS <verilator args...>])
+# shading_verilate_rtl(<target> <prefix> TOP <module> SOURCE <file.v> DIRS <dirs...> [ARGS <verilator args...>]
+#                      [SPEED])
 #   Verilates one RTL top into <target> as the SystemC module <prefix> (header <prefix>.h): pins of
 #   2..64 wires as sc_uint<W> (--pins-sc-uint), the SystemC model's own pin types, so both bind to
 #   the same signals; 1-wire pins as bool. Lint warnings (-Wall) fail the build; tracing is compiled in.
+#   SPEED: the model's C++ at -O3 (a program whose rate a page quotes) instead of SHADING_RTL_OPT_FLAGS.
 function(shading_verilate_rtl target prefix)
-  cmake_parse_arguments(ARG "" "TOP;SOURCE" "DIRS;ARGS" ${ARGN})
+  cmake_parse_arguments(ARG "SPEED" "TOP;SOURCE" "DIRS;ARGS" ${ARGN})
   # A previous run's list of the files Verilator read (<prefix>_copy.cmake in the build tree): if one
   # of them is gone since (a Verilog header folded into shading_formats.vh), the list is dropped, so
   # verilate() runs Verilator again instead of stopping the configure on the missing file.
@@ -219,7 +235,11 @@ function(shading_verilate_rtl target prefix)
            SOURCES ${ARG_SOURCE}
            INCLUDE_DIRS ${ARG_DIRS}
            VERILATOR_ARGS -Wall --pins-sc-uint ${ARG_ARGS})
-  shading_verilated_finish(${target} ${prefix})
+  set(_speed)
+  if(ARG_SPEED)
+    set(_speed SPEED)
+  endif()
+  shading_verilated_finish(${target} ${prefix} ${_speed})
   target_link_libraries(${target} PRIVATE Threads::Threads)
   # Verilator's own headers and generated code leave parameters unused (verilated_vcd_sc.h).
   target_compile_options(${target} PRIVATE -Wno-unused-parameter)
@@ -238,13 +258,17 @@ function(shading_verilate_rtl target prefix)
   endif()
 endfunction()
 
-# shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1>)
+# shading_verilate_specular(<target> <prefix> AGEN <0|1|2> SATURATE <0|1> [SPEED])
 #   rtl/specular/specular_device.v with that generator (0 UA 60553, 1 UA 22802, 2 tuned) and
-#   overflow mode.
+#   overflow mode; SPEED as for shading_verilate_rtl.
 function(shading_verilate_specular target prefix)
-  cmake_parse_arguments(ARG "" "AGEN;SATURATE" "" ${ARGN})
+  cmake_parse_arguments(ARG "SPEED" "AGEN;SATURATE" "" ${ARGN})
+  set(_speed)
+  if(ARG_SPEED)
+    set(_speed SPEED)
+  endif()
   shading_verilate_rtl(${target} ${prefix} TOP specular_device SOURCE ${SHADING_RTL_DIR}/specular/specular_device.v
-                       DIRS ${SHADING_RTL_INCLUDE_DIRS} ARGS -GAGEN=${ARG_AGEN} -GSATURATE=${ARG_SATURATE})
+                       ${_speed} DIRS ${SHADING_RTL_INCLUDE_DIRS} ARGS -GAGEN=${ARG_AGEN} -GSATURATE=${ARG_SATURATE})
 endfunction()
 
 # shading_verilate_squared(<target> <prefix> TOP <squared_device|squared_series_device|sqmul_device|sqmul_r2l_device>

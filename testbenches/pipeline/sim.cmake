@@ -24,6 +24,7 @@ if(TARGET shading_pipeline_sim)
   target_link_libraries(render_cells PRIVATE shading_pipeline_sim shading_pipeline shading_options
                         shading_tb_common)
   set_target_properties(render_cells PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  shading_test_opt(render_cells)  # a check of the cells' frame; no page quotes its speed (cmake/shading.cmake)
   add_test(NAME pipeline.render_cells COMMAND render_cells --size 96 --device squared --tol 1
            WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
   set_tests_properties(pipeline.render_cells PROPERTIES TIMEOUT 300 LABELS render_cells

@@ -74,15 +74,24 @@ elseif(NOT SHADING_RTL_TRACE)
   return()
 endif()
 
-shading_add_gtest(test_rtl_pipeline SOURCES test_rtl_pipeline.cpp LIBS shading_pipeline TIMEOUT 300)
-# The head's planned frame (AnotherSampleSetIsSeenOnAFrame): the scan in this tree's data/head/.
-target_compile_definitions(test_rtl_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+# The three variants verilated once, into a library that the suite and render_pipeline_rtl both link
+# (each model is megabytes of C++: compiling it once per program cost 20-40 CPU s a model). The
+# Verilator macros its header reads (verilated.h: VM_SC, VM_TRACE) go to the programs with it.
+add_library(shading_rtl_pipeline_models STATIC)
 foreach(_v IN LISTS _pipe_variants)
   _shading_pipe_variant(${_v})
-  shading_verilate_rtl(test_rtl_pipeline Vrtl_pipeline_${_name} TOP shading_pipeline
+  shading_verilate_rtl(shading_rtl_pipeline_models Vrtl_pipeline_${_name} TOP shading_pipeline
                        SOURCE ${SHADING_RTL_DIR}/pipeline/shading_pipeline.v DIRS ${SHADING_RTL_PIPELINE_DIRS}
                        ARGS ${_args})
 endforeach()
+target_compile_definitions(shading_rtl_pipeline_models PUBLIC VM_COVERAGE=0 VM_SC=1 VM_TRACE=1 VM_TRACE_FST=0
+                           VM_TRACE_VCD=1)
+
+shading_add_gtest(test_rtl_pipeline SOURCES test_rtl_pipeline.cpp LIBS shading_pipeline shading_rtl_pipeline_models
+                  TIMEOUT 300)
+# The head's planned frame (AnotherSampleSetIsSeenOnAFrame): the scan in this tree's data/head/.
+target_compile_definitions(test_rtl_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+target_compile_options(test_rtl_pipeline PRIVATE -Wno-unused-parameter)  # Verilator's headers
 
 # render_pipeline_rtl: render_pipeline's scene options and setup (shading_render, which needs
 # nlohmann-json), the three variants verilated into it.
@@ -93,14 +102,11 @@ if(NOT TARGET shading_render)
   return()
 endif()
 add_executable(render_pipeline_rtl ${CMAKE_CURRENT_SOURCE_DIR}/render_pipeline_rtl.cpp)
-target_link_libraries(render_pipeline_rtl PRIVATE shading_render)
+target_link_libraries(render_pipeline_rtl PRIVATE shading_render shading_rtl_pipeline_models)
+target_compile_options(render_pipeline_rtl PRIVATE -Wno-unused-parameter)  # Verilator's headers
+# A check (exit 0 only with 0 differences), not a rate: compiled like the suites (cmake/shading.cmake).
+shading_test_opt(render_pipeline_rtl)
 set_target_properties(render_pipeline_rtl PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
-foreach(_v IN LISTS _pipe_variants)
-  _shading_pipe_variant(${_v})
-  shading_verilate_rtl(render_pipeline_rtl Vrtl_pipeline_${_name} TOP shading_pipeline
-                       SOURCE ${SHADING_RTL_DIR}/pipeline/shading_pipeline.v DIRS ${SHADING_RTL_PIPELINE_DIRS}
-                       ARGS ${_args})
-endforeach()
 add_test(NAME rtl.frame.obj_blob.make
          COMMAND sh -c "mkdir -p \"$(dirname \"$1\")\" && \"$0\" --shape blob --segments 64 --out \"$1\""
                  $<TARGET_FILE:make_test_obj> ${CMAKE_BINARY_DIR}/out/rtl_frame/blob.obj)
