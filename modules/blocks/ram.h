@@ -2,8 +2,9 @@
 // side's stores), addressed by AW wires; depth <= 2^AW is given at construction, as a frame's size
 // is known only at run time. One synchronous write port: at a rising edge of clk where `we` is 1 it
 // stores `wd` at `wa` (the values the edge sees, as the frame buffer samples its stream); one
-// asynchronous read port, `rd` the word at `ra` (a register file; no delay modelled, outside the
-// timing graph). A write address beyond depth is dropped and sets `overflow`, a sticky flag (a
+// asynchronous read port, `rd` the word at `ra` (a register file; no delay modelled). To the timing
+// graph it is a block on the rising edge: it takes we, wa, wd and ra there and rd starts paths there
+// (its read address settles by that edge). A write address beyond depth is dropped and sets `overflow`, a sticky flag (a
 // flip-flop that only a new elaboration clears), and is reported (shading/input); a read address
 // beyond depth reads 0 and is reported. rtl/blocks/ram.v is the twin, pin for pin.
 #pragma once
@@ -15,11 +16,12 @@
 #include <vector>
 
 #include "core/report_ids.h"
+#include "core/timed_block.h"
 
 namespace shading {
 
 template <unsigned W, unsigned AW>
-class ram : public sc_core::sc_module {
+class ram : public sc_core::sc_module, public timed_block {
     static_assert(W >= 1 && W <= 64, "a word of 1..64 bits");
     static_assert(AW >= 1 && AW <= 32, "1..32 address wires");
 
@@ -49,6 +51,11 @@ public:
         SC_METHOD(read);  // rd's only writer
         sensitive << ra << written_;
     }
+
+    // timed_block: clocked by clk, switching at its rising edge.
+    const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
+    const sc_core::sc_port_base* clock_port() const override { return &clk; }
+    bool switches_on_rising_edge() const override { return true; }
 
     uint64_t depth() const { return mem_.size(); }
     std::size_t writes() const { return writes_; }

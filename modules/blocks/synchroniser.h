@@ -64,6 +64,7 @@ public:
     // clock-to-q modelled, as the controllers it feeds): paths start at q and end at d.
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
+    bool switches_on_rising_edge() const override { return true; }
     const sc_core::sc_port_base* data_port() const override { return &d; }
     const synchroniser_chain<W, STAGES>& chain() const { return chain_; }
 

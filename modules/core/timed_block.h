@@ -19,6 +19,9 @@ public:
     // A register's last latching edge (false before the first): monitors read it instead of
     // waking a process of their own at every edge.
     virtual bool last_latch(sc_core::sc_time&) const { return false; }
+    // A clocked block whose outputs switch at its clock's rising edge (the controllers, the
+    // synchroniser); every other one (reg.h) takes its inputs at the falling edge of its clock.
+    virtual bool switches_on_rising_edge() const { return false; }
     bool is_register() const { return clock_port() != nullptr; }
 };
 

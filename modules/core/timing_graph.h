@@ -80,6 +80,14 @@ public:
             if (n.tb != nullptr && n.tb->is_register() && n.clock == clk) r.push_back(n.obj);
         return r;
     }
+    // The channels a clocked block takes at its edge: its data input and any other input (a
+    // controller's next-state inputs), not its clock.
+    std::vector<channel> taken_by(const sc_core::sc_object& reg) const {
+        const node& n = node_of(reg);
+        std::vector<channel> c = n.ins;
+        if (n.data != nullptr) c.push_back(n.data);
+        return c;
+    }
     channel q_of(const sc_core::sc_object& reg) const { return node_of(reg).outs.at(0); }
     channel d_of(const sc_core::sc_object& reg) const { return node_of(reg).data; }
     channel clock_of(const sc_core::sc_object& reg) const { return node_of(reg).clock; }

@@ -44,6 +44,7 @@ public:
 
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
+    bool switches_on_rising_edge() const override { return true; }
 
 private:
     // The FSM is fd_count.h's (the fast units step the same one); len read at acceptance only.

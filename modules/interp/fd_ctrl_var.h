@@ -55,6 +55,7 @@ public:
 
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
+    bool switches_on_rising_edge() const override { return true; }
 
 private:
     // fd_ctrl's FSM (fd_count.h); at acceptance m and len are read and checked.

@@ -1,10 +1,13 @@
 // Assertion monitor (not a hardware block) for a clocked unit whose registers latch on one edge of
 // clk while its controller switches on the other (the interpolation paper's units): each phase must hold the
-// combinational paths launched at its opening edge. Every high phase (rise -> fall) not longer
-// than min_high and every low phase (fall -> rise) not longer than min_low is counted and reported
-// as shading/timing, naming the phase, the measured and required length and the paths. A phase
-// equal to its path is a violation too: the register input would change at the latching instant
-// itself, which reg.h reports as a setup violation. A zero requirement is never violated.
+// combinational paths launched at its opening edge, and each period the paths that run from one
+// edge to the same edge a clock later. Every high phase (rise -> fall) not longer than min_high,
+// every low phase (fall -> rise) not longer than its own paths (min_low_phase), and every period
+// (fall -> fall, rise -> rise) not longer than min_period is counted and reported as shading/timing,
+// naming the phase, the measured and required length and the paths; a short period counts as a
+// low violation (min_low is what the low phase needs when the high phase is at its shortest).
+// A phase equal to its path is a violation too: the register input would change at the latching
+// instant itself, which reg.h reports as a setup violation. A zero requirement is never violated.
 // Only phases whose both edges were seen are measured, so a partial phase before the clock's first
 // edge is ignored. Reported: the first `max_reports_` (10) violations, one per violating
 // edge, the last of them saying that later ones are only counted; violations() counts them all.
@@ -14,6 +17,7 @@
 #pragma once
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 #include <string>
 #include <systemc>
@@ -40,43 +44,43 @@ public:
         dont_initialize();
     }
 
-    // Derives both requirements from the unit's timing graph `g` (build it at end_of_elaboration).
-    // The input pins and the `launch` blocks (controllers clocked on the rising edge, timed_block
-    // registers) change just after the rising edge; every other register latches on the falling
-    // edge. High phase: the longest path from an input pin or a launch block to a falling-edge
-    // register's data input, plus that register's setup time. Low phase: the longest path from a
-    // falling-edge register to the unit's outputs, which the rising edge samples; and a path between
-    // falling-edge registers, which has the whole period, needs from the low phase what the high
-    // phase leaves over.
-    void derive(const timing_graph& g, const std::vector<const sc_core::sc_object*>& launch = {}) {
-        std::vector<const sc_core::sc_object*> regs;
-        for (auto* r : g.registers())
-            if (std::find(launch.begin(), launch.end(), r) == launch.end()) regs.push_back(r);
+    // Derives both requirements from the timing graph `g` of a unit or a whole top (build it at
+    // end_of_elaboration). The input pins and the blocks that switch at the rising edge (controllers,
+    // timed_block::switches_on_rising_edge) launch their paths just after it; every other clocked
+    // block (reg.h, also on a strobe that falls with clk) takes its inputs at the falling edge, and
+    // the rising edge takes the outputs and the controllers' inputs. So: rising to falling within
+    // the high phase; falling to rising (the outputs, a controller's inputs) within the low phase;
+    // falling to falling and rising to rising within the whole period, which needs from the low
+    // phase what the high phase leaves over. A falling block's setup time ends its paths.
+    void derive(const timing_graph& g) {
+        std::vector<const sc_core::sc_object*> rise, fall;
+        for (auto* r : g.registers()) (timed(*r).switches_on_rising_edge() ? rise : fall).push_back(r);
+        const auto from_rise = [&](const std::vector<timing_graph::channel>& to) {
+            auto p = g.longest_from_channels(g.inputs(), to);
+            const auto q = g.longest_from_registers(rise, to);
+            return q.found && (!p.found || q.delay > p.delay) ? q : p;
+        };
+        // The falling blocks' inputs, grouped by setup time (one search a group).
+        std::map<sc_core::sc_time, std::vector<timing_graph::channel>> at_fall;
+        for (auto* r : fall) {
+            auto& v = at_fall[timed(*r).setup_time()];
+            for (auto c : g.taken_by(*r)) v.push_back(c);
+        }
+        std::vector<timing_graph::channel> at_rise = g.outputs();
+        for (auto* r : rise)
+            for (auto c : g.taken_by(*r)) at_rise.push_back(c);
         timing_path high, loop;
         sc_core::sc_time high_t, loop_t;
-        for (auto* r : regs) {
-            const sc_core::sc_time setup = dynamic_cast<const timed_block&>(*r).setup_time();
-            auto p = g.longest_from_channels(g.inputs(), {g.d_of(*r)});
-            if (!launch.empty()) {
-                const auto q = g.longest_from_registers(launch, {g.d_of(*r)});
-                if (q.found && (!p.found || q.delay > p.delay)) p = q;
-            }
+        for (const auto& [setup, sinks] : at_fall) {
+            const auto p = from_rise(sinks);
             if (p.found && (!high.found || p.delay + setup > high_t)) high = p, high_t = p.delay + setup;
-            const auto l = g.longest_from_registers(regs, {g.d_of(*r)});
+            const auto l = g.longest_from_registers(fall, sinks);
             if (l.found && (!loop.found || l.delay + setup > loop_t)) loop = l, loop_t = l.delay + setup;
         }
-        const auto out = g.longest_from_registers(regs, g.outputs());
-        min_high_ = high_t;
-        min_low_ = std::max(out.found ? out.delay : sc_core::SC_ZERO_TIME,
-                            loop_t > high_t ? loop_t - high_t : sc_core::SC_ZERO_TIME);
-        std::ostringstream os;
-        os << "high: " << (high.found ? high.to_string() : "no path") << "; low: "
-           << (out.found ? out.to_string() : "no path");
-        if (loop.found) os << "; register to register over both phases: " << loop.to_string();
-        paths_ = os.str();
-        high_path_ = high;
-        out_path_ = out;
-        loop_path_ = loop;
+        const auto out = g.longest_from_registers(fall, at_rise);
+        const auto whole = from_rise(at_rise);  // rising to rising
+        if (whole.found && (!loop.found || whole.delay > loop_t)) loop = whole, loop_t = whole.delay;
+        settle(high, high_t, out, loop, loop_t);
     }
     // Requirements set from paths a unit derived itself (a unit whose registers are not all on this
     // clock, e.g. the squared-quadratic device: strobe-latched RG1..RG5 beside the clocked RG_SQ).
@@ -85,19 +89,8 @@ public:
     // register over both phases (the setup time of the registers ending them included in all three).
     void require(const timing_path& high, const timing_path& out, const timing_path& loop,
                  const sc_core::sc_time& setup = sc_core::SC_ZERO_TIME) {
-        const sc_core::sc_time high_t = high.found ? high.delay + setup : sc_core::SC_ZERO_TIME;
-        const sc_core::sc_time loop_t = loop.found ? loop.delay + setup : sc_core::SC_ZERO_TIME;
-        min_high_ = high_t;
-        min_low_ = std::max(out.found ? out.delay : sc_core::SC_ZERO_TIME,
-                            loop_t > high_t ? loop_t - high_t : sc_core::SC_ZERO_TIME);
-        std::ostringstream os;
-        os << "high: " << (high.found ? high.to_string() : "no path") << "; low: "
-           << (out.found ? out.to_string() : "no path");
-        if (loop.found) os << "; register to register over both phases: " << loop.to_string();
-        paths_ = os.str();
-        high_path_ = high;
-        out_path_ = out;
-        loop_path_ = loop;
+        settle(high, high.found ? high.delay + setup : sc_core::SC_ZERO_TIME, out, loop,
+               loop.found ? loop.delay + setup : sc_core::SC_ZERO_TIME);
     }
     // The paths derive() found: into a register in the high phase, to the outputs, and register to
     // register (not found: no such path).
@@ -106,6 +99,9 @@ public:
     const timing_path& loop_path() const { return loop_path_; }
     const sc_core::sc_time& min_high() const { return min_high_; }
     const sc_core::sc_time& min_low() const { return min_low_; }
+    // The low phase's own paths (to the rising edge), and the paths over both phases.
+    const sc_core::sc_time& min_low_phase() const { return min_low_phase_; }
+    const sc_core::sc_time& min_period() const { return min_period_; }
     unsigned violations() const { return high_violations_ + low_violations_; }
     unsigned high_violations() const { return high_violations_; }
     unsigned low_violations() const { return low_violations_; }
@@ -113,9 +109,12 @@ public:
 private:
     void on_rise() {
         const auto now = sc_core::sc_time_stamp();
-        if (fall_seen_ && too_short(now - last_fall_, min_low_)) {
+        if (fall_seen_ && too_short(now - last_fall_, min_low_phase_)) {
             ++low_violations_;
-            report("low", last_fall_, now, min_low_);
+            report("low phase", last_fall_, now, min_low_phase_);
+        } else if (rise_seen_ && too_short(now - last_rise_, min_period_)) {
+            ++low_violations_;
+            report("period", last_rise_, now, min_period_);
         }
         last_rise_ = now;
         rise_seen_ = true;
@@ -125,11 +124,33 @@ private:
         const auto now = sc_core::sc_time_stamp();
         if (rise_seen_ && too_short(now - last_rise_, min_high_)) {
             ++high_violations_;
-            report("high", last_rise_, now, min_high_);
+            report("high phase", last_rise_, now, min_high_);
+        } else if (fall_seen_ && too_short(now - last_fall_, min_period_)) {
+            ++low_violations_;
+            report("period", last_fall_, now, min_period_);
         }
         last_fall_ = now;
         fall_seen_ = true;
     }
+
+    // high_t, loop_t: the high and the register-to-register paths with their ends' setup times.
+    void settle(const timing_path& high, const sc_core::sc_time& high_t, const timing_path& out,
+                const timing_path& loop, const sc_core::sc_time& loop_t) {
+        min_high_ = high_t;
+        min_low_phase_ = out.found ? out.delay : sc_core::SC_ZERO_TIME;
+        min_period_ = loop_t;
+        min_low_ = std::max(min_low_phase_, loop_t > high_t ? loop_t - high_t : sc_core::SC_ZERO_TIME);
+        std::ostringstream os;
+        os << "high: " << (high.found ? high.to_string() : "no path") << "; low: "
+           << (out.found ? out.to_string() : "no path");
+        if (loop.found) os << "; register to register over both phases: " << loop.to_string();
+        paths_ = os.str();
+        high_path_ = high;
+        out_path_ = out;
+        loop_path_ = loop;
+    }
+
+    static const timed_block& timed(const sc_core::sc_object& o) { return dynamic_cast<const timed_block&>(o); }
 
     static bool too_short(const sc_core::sc_time& phase, const sc_core::sc_time& required) {
         return required > sc_core::SC_ZERO_TIME && phase <= required;
@@ -140,14 +161,14 @@ private:
         const unsigned n = violations();
         if (n > max_reports_) return;
         std::ostringstream os;
-        os << name() << ": " << phase << " phase of " << clk.name() << " from " << from << " to " << to
+        os << name() << ": " << phase << " of " << clk.name() << " from " << from << " to " << to
            << " lasts " << (to - from) << ", not longer than the " << required << " its paths take ("
            << paths_ << "); the values latched or sampled at " << to << " are not settled";
         if (n == max_reports_) os << " [" << n << " violations reported; further ones are only counted]";
         SC_REPORT_WARNING(msg::timing, os.str().c_str());
     }
 
-    sc_core::sc_time min_high_, min_low_;
+    sc_core::sc_time min_high_, min_low_, min_low_phase_, min_period_;
     std::string paths_;
     timing_path high_path_, out_path_, loop_path_;
     static constexpr unsigned max_reports_ = 10;

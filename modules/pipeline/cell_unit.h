@@ -16,6 +16,7 @@
 #include <systemc>
 
 #include "interp/interp_delays.h"
+#include "monitors/phase_checker.h"
 #include "pipeline/cell_channel.h"
 #include "pipeline/cell_ctrl.h"
 
@@ -49,6 +50,9 @@ public:
 
     cell_ctrl ctl{"ctl"};
     cell_channel ch_r, ch_g, ch_b;
+    // Assertion monitor (not hardware): the clock's phases along every path of the unit, also those
+    // between its channels' units (each unit's own chk_clock sees only its own).
+    phase_checker chk_clock{"chk_clock"};
 
     explicit cell_unit(const sc_core::sc_module_name& name, const interp_delays& dl = {})
         : sc_module(name), ch_r("ch_r", dl), ch_g("ch_g", dl), ch_b("ch_b", dl) {
@@ -59,7 +63,13 @@ public:
         wire(ch_r, in_lat_r, px_r, col_valid, col_last, px_valid, row_last);
         wire(ch_g, in_lat_g, px_g, col_valid_g, col_last_g, valid_g, last_g);
         wire(ch_b, in_lat_b, px_b, col_valid_b, col_last_b, valid_b, last_b);
+        chk_clock.clk(clk);
     }
+
+    void end_of_elaboration() override { chk_clock.derive(timing_graph(*this)); }
+    // Shortest clock phases the whole unit works with (after elaboration).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 
 private:
     template <class VALID, class LAST>

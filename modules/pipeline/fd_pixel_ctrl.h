@@ -44,6 +44,7 @@ public:
 
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
+    bool switches_on_rising_edge() const override { return true; }
 
     bool idle() const { return !pend_.active && !ld_e_ && !start_ && left_ == 0 && !valid.read(); }
     std::size_t intervals() const { return intervals_; }

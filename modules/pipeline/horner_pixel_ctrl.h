@@ -49,6 +49,7 @@ public:
 
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
+    bool switches_on_rising_edge() const override { return true; }
 
     // No interval pending or running and no pixel in flight.
     bool idle() const { return !cur_.active && !pend_.active && !ld_e_ && !in_flight_; }

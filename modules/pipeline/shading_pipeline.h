@@ -40,6 +40,7 @@
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
 #include "interp/interp_delays.h"
+#include "monitors/phase_checker.h"
 #include "pipeline/fd_channel.h"
 #include "pipeline/fd_pixel_ctrl.h"
 #include "pipeline/horner_channel.h"
@@ -123,6 +124,9 @@ public:
     wire<bool> out_valid{"out_valid"};
     sample_ctrl ctl_sample;
     pixel_ctrl ctl_pixel;
+    // Assertion monitor (not hardware): the clock's phases along every path of the top, also those
+    // between its units (each unit's own chk_clock sees only its own).
+    phase_checker chk_clock{"chk_clock"};
 
     // fd_m: the interval length 2^fd_m the forward-difference evaluator is built for, 0 for any m per
     // interval (fd_eval_var); ignored for Horner. carry: a job whose first sample point is the last
@@ -241,7 +245,13 @@ public:
             ctl_pixel.valid(ev_done[0]); ctl_pixel.last(ev_busy[0]);
             ctl_pixel.len(ev_len);
         }
+        chk_clock.clk(clk);
     }
+
+    void end_of_elaboration() override { chk_clock.derive(timing_graph(*this)); }
+    // Shortest clock phases the whole top works with (after elaboration).
+    const sc_core::sc_time& min_high() const { return chk_clock.min_high(); }
+    const sc_core::sc_time& min_low() const { return chk_clock.min_low(); }
 
     // Nothing taken and not yet written out.
     bool idle() const { return ctl_sample.idle() && ctl_pixel.idle(); }

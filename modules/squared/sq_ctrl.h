@@ -43,6 +43,7 @@ public:
 
     const sc_core::sc_time& delay() const override { return sc_core::SC_ZERO_TIME; }
     const sc_core::sc_port_base* clock_port() const override { return &clk; }
+    bool switches_on_rising_edge() const override { return true; }
 
     unsigned dropped() const { return dropped_; }  // strobes that abandoned a result
     const squared::sq_count& state() const { return st_; }

@@ -1,6 +1,7 @@
-// The shading pipeline's clock from its clocked units' own phase requirements: every unit's
-// phase_checker (monitors/phase_checker.h) derives, at the end of elaboration, the shortest high and
-// low phases its paths need; the pipeline runs on one clock, so its clock must give every unit both.
+// The shading pipeline's clock from its phase requirements: every clocked unit's phase_checker
+// (monitors/phase_checker.h) derives, at the end of elaboration, the shortest high and low phases
+// and period its own paths need, and the top's own checker those of every path of the top, also
+// between its units; the pipeline runs on one clock, so its clock must give every checker all three.
 // Shared by timing_report (which prints them) and test_timing_graph (which checks them against hand
 // sums of core/comb_delay.h's delays).
 #pragma once
@@ -112,20 +113,24 @@ inline void collect(const sc_core::sc_object& top, std::vector<unit_phases>& out
     }
 }
 
-// The one clock the units share: it needs every unit's high phase and every unit's low phase. A
-// phase equal to its requirement is a violation too (phase_checker.h), so a usable period is
-// strictly longer than these.
+// The one clock the units share: every unit's high phase, every unit's low phase, and every path
+// over both phases (the whole top's checker holds those between units). A phase equal to its
+// requirement is a violation too (phase_checker.h), so a usable period is strictly longer than these.
 struct clock_bound {
-    sc_core::sc_time high, low;  // the largest requirements
-    sc_core::sc_time best_duty() const { return high + low; }
-    sc_core::sc_time half_duty() const { return 2 * std::max(high, low); }
+    sc_core::sc_time high, low_phase, period;  // the largest requirements
+    // The shortest period with the high phase at its shortest, and at 50 % duty.
+    sc_core::sc_time best_duty() const { return std::max(high + low_phase, period); }
+    sc_core::sc_time half_duty() const { return std::max(2 * std::max(high, low_phase), period); }
+    // The low phase the best duty leaves.
+    sc_core::sc_time low() const { return best_duty() - high; }
 };
 
 inline clock_bound shortest_clock(const std::vector<unit_phases>& units) {
     clock_bound b;
     for (const auto& u : units) {
         b.high = std::max(b.high, u.chk->min_high());
-        b.low = std::max(b.low, u.chk->min_low());
+        b.low_phase = std::max(b.low_phase, u.chk->min_low_phase());
+        b.period = std::max(b.period, u.chk->min_period());
     }
     return b;
 }

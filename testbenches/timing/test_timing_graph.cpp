@@ -297,32 +297,68 @@ TEST(TimingGraph, ReadingAPathBeforeElaborationIsReported) {
     elaborate();
 }
 
-// The shading pipeline's clock (square-and-multiply device, Horner evaluator): the largest phase
-// requirements of its clocked units against hand sums of the default delays (core/comb_delay.h:
-// adder 1 ns, multiplier 3 ns, mux 0.3 ns, register 0.2 ns, inverter bank 0.1 ns; setup 0).
-TEST(PipelinePhases, HornerPipelineClockIsTheHandSumOfItsSlowestUnits) {
+// The shading pipeline's clock (square-and-multiply device, Horner evaluator): the largest
+// requirements of its clocked units and of the whole top against hand sums of the default delays
+// (core/comb_delay.h: adder 1 ns, multiplier 3 ns, mux 0.3 ns, register 0.2 ns, inverter bank
+// 0.1 ns; setup 0).
+TEST(PipelinePhases, HornerPipelineClockIsTheHandSumOfItsSlowestPaths) {
     timing::bound_pipeline<sqmul_device, pipeline::evaluator::horner> top("tb", 0);
     elaborate();
     std::vector<timing::unit_phases> units;
     timing::collect(top, units);
-    // 3 channels x (coef_quad, coef_cubic, horner) + the device's stage.
-    ASSERT_EQ(units.size(), 10u);
+    // 3 channels x (coef_quad, coef_cubic, horner) + the device's stage + the whole top.
+    ASSERT_EQ(units.size(), 11u);
     const auto b = timing::shortest_clock(units);
-    // Low: coef_cubic's rg_i1 -> net_c -> div3_c (case 1). net_c: C's 3 positive terms, a 2-adder
-    // tree (2 ns); its 4 negative ones, a 2-adder tree + inverter bank (2.1 ns); the last adder:
-    // 2.1 + 1 = 3.1 ns. div3_c (x/2 - x/8 - x/32 - x/128): 3 negative terms, 2 adders + inverter
-    // bank, then the last adder: 3.1 ns. 0.2 + 3.1 + 3.1 = 6.4 ns.
-    EXPECT_EQ(b.low, sc_time(6400, SC_PS));
-    const auto low_at = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.chk->min_low() == b.low; });
+    // Low: coef_cubic's rg_i1 -> net_c -> div3_c (case 1), to its outputs. net_c: C's 3 positive
+    // terms, a 2-adder tree (2 ns); its 4 negative ones, a 2-adder tree + inverter bank (2.1 ns);
+    // the last adder: 2.1 + 1 = 3.1 ns. div3_c (x/2 - x/8 - x/32 - x/128): 3 negative terms, 2
+    // adders + inverter bank, then the last adder: 3.1 ns. 0.2 + 3.1 + 3.1 = 6.4 ns.
+    EXPECT_EQ(b.low_phase, sc_time(6400, SC_PS));
+    const auto low_at = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.chk->min_low_phase() == b.low_phase; });
     ASSERT_NE(low_at, units.end());
     EXPECT_EQ(low_at->unit, "tb.dut.smp_r.coef_cubic");
     EXPECT_EQ(low_at->chk->output_path().to_string(), "rg_i1 -> net_c -> div3_c = 6.4 ns");
-    // High: the Horner unit's coefficient pin a -> MX1 -> MUL -> MX2 -> SM into its accumulator:
-    // 0.3 + 3 + 0.3 + 1 = 4.6 ns.
-    EXPECT_EQ(b.high, sc_time(4600, SC_PS));
-    EXPECT_EQ(b.best_duty(), sc_time(11000, SC_PS));  // 4.6 + 6.4
-    EXPECT_EQ(b.half_duty(), sc_time(12800, SC_PS));  // 2 x 6.4
-    // The benches' 20 ns clock at 50 % duty gives each phase 10 ns: longer than both.
-    EXPECT_GT(pipeline::pipeline_period() / 2, b.low);
+    // High, a path between units that the Horner unit's own checker starts at its pin a: the pixel
+    // controller's degree select -> MX_A -> MX1 -> MUL -> MX2 -> SM: 0.3 + 0.3 + 3 + 0.3 + 1 = 4.9 ns.
+    const auto& whole = *units.back().chk;
+    EXPECT_EQ(units.back().unit, "tb.dut");
+    EXPECT_EQ(b.high, sc_time(4900, SC_PS));
+    EXPECT_EQ(whole.min_high(), sc_time(4900, SC_PS)) << whole.high_path().to_string();
+    EXPECT_EQ(whole.high_path().blocks.front(), "ctl_pixel");
+    // Period: coef_cubic's rg_i1 -> net_a (3 ns: A's terms, two adder levels and the last adder)
+    // -> div3_a (3.1) -> MX_A (0.3) -> MX1 (0.3) -> MUL (3) -> MX2 (0.3) -> SM (1) into the Horner
+    // accumulator: 0.2 + 3 + 3.1 + 0.3 + 0.3 + 3 + 0.3 + 1 = 11.2 ns, falling edge to falling edge.
+    EXPECT_EQ(b.period, sc_time(11200, SC_PS));
+    EXPECT_EQ(whole.min_period(), sc_time(11200, SC_PS)) << whole.loop_path().to_string();
+    EXPECT_EQ(whole.loop_path().blocks.front(), "smp_r.coef_cubic.rg_i1");
+    EXPECT_EQ(whole.loop_path().blocks.back(), "horner_r.horner.sm");
+    EXPECT_EQ(b.best_duty(), sc_time(11300, SC_PS));  // 4.9 + 6.4 (> 11.2)
+    EXPECT_EQ(b.half_duty(), sc_time(12800, SC_PS));  // 2 x 6.4 (> 11.2)
+    // The benches' 20 ns clock at 50 % duty gives each phase 10 ns: longer than both, and the period.
+    EXPECT_GT(pipeline::pipeline_period() / 2, b.low_phase);
     EXPECT_GT(pipeline::pipeline_period() / 2, b.high);
+    EXPECT_GT(pipeline::pipeline_period(), b.period);
+}
+
+// The cell unit's: its units' phases and, between them, the column coefficient unit into the
+// column's forward differences over a whole period.
+TEST(PipelinePhases, CellUnitClockIsTheHandSumOfItsSlowestPaths) {
+    timing::bound_cell top("tb");
+    elaborate();
+    std::vector<timing::unit_phases> units;
+    timing::collect(top, units);
+    ASSERT_EQ(units.size(), 3u * 8u + 1u);  // 3 channels x (4 coefficient units, 4 evaluators) + the unit
+    const auto b = timing::shortest_clock(units);
+    // Low: cq_col_0's rg_i1 -> net_b (3.1) -> align_b (wiring) to its outputs: 0.2 + 3.1 = 3.3 ns.
+    EXPECT_EQ(b.low_phase, sc_time(3300, SC_PS));
+    // High: the evaluator's pin a -> setup_d1_m2 (2) -> MX_SETUP_D1 (0.3) -> MX_D1 (0.3) = 2.6 ns.
+    EXPECT_EQ(b.high, sc_time(2600, SC_PS));
+    // Period: rg_i1 -> net_b -> align_b -> the channel's MX_C (0.3) -> setup_d1_m2 -> MX_SETUP_D1 ->
+    // MX_D1: 0.2 + 3.1 + 0.3 + 2 + 0.3 + 0.3 = 6.2 ns.
+    const auto& whole = *units.back().chk;
+    EXPECT_EQ(units.back().unit, "tb.dut");
+    EXPECT_EQ(b.period, sc_time(6200, SC_PS));
+    EXPECT_EQ(whole.min_period(), sc_time(6200, SC_PS)) << whole.loop_path().to_string();
+    EXPECT_EQ(b.best_duty(), sc_time(6200, SC_PS));  // max(2.6 + 3.3, 6.2)
+    EXPECT_EQ(b.half_duty(), sc_time(6600, SC_PS));  // 2 x 3.3
 }

@@ -2,9 +2,10 @@
 // for each device, each strobe's checked path (the longest path from the registers it latches to
 // the outputs) with the blocks on it, at the default delays of core/comb_delay.h and blocks/rom.h.
 // Then the shading pipeline (square-and-multiply device, Horner and forward-difference evaluators)
-// and the cell unit: each clocked unit's shortest high and low phases (its phase_checker's, derived
-// from its elaborated structure), the shortest clock period they allow, and the benches' clock
-// (pipeline_bench.h, cell_unit_bench.h) against it.
+// and the cell unit: each clocked unit's and the whole top's shortest high phase, low phase and
+// period (their phase_checkers', derived from the elaborated structure; the top's hold the paths
+// between units), the shortest clock they allow, and the benches' clock (pipeline_bench.h,
+// cell_unit_bench.h) against it.
 //   build/bin/timing_report
 // Run by ctest (timing.report), so it keeps building and elaborating.
 #include <algorithm>
@@ -50,24 +51,30 @@ struct bound : sc_core::sc_module {
 
 double ns(const sc_core::sc_time& t) { return t.to_seconds() * 1e9; }
 
-// Prints each clocked unit's phases and the clock they allow; false if the bench's clock `bench`
-// at 50 % duty leaves a phase too short.
+// Prints each checker's requirements and the clock they allow; false if the bench's clock `bench`
+// at 50 % duty leaves a phase or the period too short.
 bool print_pipeline(const sc_core::sc_object& top, const char* title, const sc_core::sc_time& bench) {
     std::vector<shading::timing::unit_phases> units;
     shading::timing::collect(top, units);
-    std::printf("%s: required phases per clocked unit (high, low)\n", title);
+    std::printf("%s: required phases per clocked unit and the whole top (high, low, period)\n", title);
     for (const auto& u : units)
-        std::printf("  %-40s %6.2f ns %6.2f ns\n", u.unit.c_str(), ns(u.chk->min_high()), ns(u.chk->min_low()));
+        std::printf("  %-40s %6.2f ns %6.2f ns %6.2f ns\n", u.unit.c_str(), ns(u.chk->min_high()),
+                    ns(u.chk->min_low_phase()), ns(u.chk->min_period()));
     const auto b = shading::timing::shortest_clock(units);
-    const bool ok = bench / 2 > b.high && bench / 2 > b.low;
-    std::printf("  largest high %.2f ns, largest low %.2f ns\n", ns(b.high), ns(b.low));
-    // The paths behind the two largest requirements (the first unit holding each).
-    const auto high_at = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.chk->min_high() == b.high; });
-    const auto low_at = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.chk->min_low() == b.low; });
-    if (high_at != units.end())
-        std::printf("    high: %s: %s\n", high_at->unit.c_str(), high_at->chk->high_path().to_string().c_str());
-    if (low_at != units.end())
-        std::printf("    low: %s: %s\n", low_at->unit.c_str(), low_at->chk->output_path().to_string().c_str());
+    const bool ok = bench / 2 > b.high && bench / 2 > b.low_phase && bench > b.period;
+    std::printf("  largest high %.2f ns, largest low %.2f ns, largest period %.2f ns\n", ns(b.high), ns(b.low_phase),
+                ns(b.period));
+    // The paths behind the three largest requirements (the first checker holding each).
+    const auto at = [&](auto req, const sc_core::sc_time& t) {
+        return std::find_if(units.begin(), units.end(), [&](const auto& u) { return (u.chk->*req)() == t; });
+    };
+    using pc = shading::phase_checker;
+    if (const auto u = at(&pc::min_high, b.high); u != units.end())
+        std::printf("    high: %s: %s\n", u->unit.c_str(), u->chk->high_path().to_string().c_str());
+    if (const auto u = at(&pc::min_low_phase, b.low_phase); u != units.end())
+        std::printf("    low: %s: %s\n", u->unit.c_str(), u->chk->output_path().to_string().c_str());
+    if (const auto u = at(&pc::min_period, b.period); u != units.end())
+        std::printf("    period: %s: %s\n", u->unit.c_str(), u->chk->loop_path().to_string().c_str());
     std::printf("  shortest period: 50 %% duty %.2f ns (%.1f MHz), best duty %.2f ns (%.1f MHz; high %.0f %%)\n",
                 ns(b.half_duty()), 1e3 / ns(b.half_duty()), ns(b.best_duty()), 1e3 / ns(b.best_duty()),
                 100 * ns(b.high) / ns(b.best_duty()));
