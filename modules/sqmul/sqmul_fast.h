@@ -67,6 +67,7 @@ public:
         out_path_ = t.reg + t.multiplier;
         min_high_ = t.mux + t.multiplier + t.mux;   // the controller -> MX_B -> MUL_P -> MX_P
         const sc_core::sc_time loop = t.reg + t.mux + t.multiplier + t.mux;
+        min_period_ = loop;
         min_low_ = std::max(out_path_, loop > min_high_ ? loop - min_high_ : sc_core::SC_ZERO_TIME);
         if (t.reg + t.multiplier + t.mux == sc_core::SC_ZERO_TIME)
             SC_REPORT_ERROR(msg::config, (std::string(this->name()) +
@@ -144,8 +145,12 @@ private:
     }
 
     void rising(const sc_core::sc_time& now) {
-        if (fall_seen_ && now - last_fall_ <= min_low_ && min_low_ > sc_core::SC_ZERO_TIME)
-            report_phase("low", last_fall_, now, min_low_);
+        // As monitors/phase_checker.h: the low phase against RG's path to the outputs, else the period
+        // against the loop.
+        if (fall_seen_ && too_short(now - last_fall_, out_path_))
+            report_phase("low phase", last_fall_, now, out_path_);
+        else if (rise_seen_ && too_short(now - last_rise_, min_period_))
+            report_phase("period", last_rise_, now, min_period_);
         last_rise_ = now;
         rise_seen_ = true;
         const bool was_done = st_.done();
@@ -159,8 +164,10 @@ private:
     }
 
     void falling(const sc_core::sc_time& now) {
-        if (rise_seen_ && now - last_rise_ <= min_high_ && min_high_ > sc_core::SC_ZERO_TIME)
-            report_phase("high", last_rise_, now, min_high_);
+        if (rise_seen_ && too_short(now - last_rise_, min_high_))
+            report_phase("high phase", last_rise_, now, min_high_);
+        else if (fall_seen_ && too_short(now - last_fall_, min_period_))
+            report_phase("period", last_fall_, now, min_period_);
         last_fall_ = now;
         fall_seen_ = true;
         if (sel_.p == sqmul::p_load) {
@@ -312,12 +319,15 @@ private:
     }
 
     // monitors/phase_checker.h: the first 10 violations reported, the rest counted.
+    static bool too_short(const sc_core::sc_time& phase, const sc_core::sc_time& required) {
+        return required > sc_core::SC_ZERO_TIME && phase <= required;
+    }
     void report_phase(const char* phase, const sc_core::sc_time& from, const sc_core::sc_time& to,
                       const sc_core::sc_time& required) {
         const unsigned n = ++clock_violations_;
         if (n > 10) return;
         std::ostringstream os;
-        os << name() << ": " << phase << " phase of clk from " << from << " to " << to << " lasts " << (to - from)
+        os << name() << ": " << phase << " of clk from " << from << " to " << to << " lasts " << (to - from)
            << ", not longer than the " << required << " its paths take; the values latched or sampled at " << to
            << " are not settled";
         if (n == 10) os << " [10 violations reported; further ones are only counted]";
@@ -327,7 +337,7 @@ private:
     overflow_mode mode_;
     sc_core::sc_time gate_;
     std::array<sc_core::sc_time, 2> load_path_;
-    sc_core::sc_time out_path_, min_high_, min_low_;
+    sc_core::sc_time out_path_, min_high_, min_low_, min_period_;
     std::array<uint64_t, 5> rg_{};
     std::array<sc_core::sc_time, 5> fall_;
     std::array<bool, 5> fallen_{};
