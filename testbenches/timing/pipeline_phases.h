@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <systemc>
 #include <vector>
@@ -18,19 +19,33 @@
 
 namespace shading::timing {
 
+// A clock of `high` then `low` from time 0, or none (both zero): a plain net, nothing simulated.
+struct test_clock {
+    explicit test_clock(const sc_core::sc_time& high = {}, const sc_core::sc_time& low = {}) {
+        if (high + low == sc_core::SC_ZERO_TIME) return;
+        clock = std::make_unique<sc_core::sc_clock>("clock", high + low, high / (high + low));
+    }
+    sc_core::sc_signal_in_if<bool>& net() { return clock ? static_cast<sc_core::sc_signal_in_if<bool>&>(*clock) : plain; }
+
+private:
+    std::unique_ptr<sc_core::sc_clock> clock;
+    sc_core::sc_signal<bool> plain{"plain_clk"};
+};
+
 // A shading pipeline with every pin on a net of its own (the phase checkers derive their paths from
-// the elaborated, fully bound design). The clock is a plain net: nothing is simulated.
+// the elaborated, fully bound design), its clock `clk` (none by default: nothing is simulated).
 template <class AGen, pipeline::evaluator EVAL>
 struct bound_pipeline : sc_core::sc_module {
     using pins = pipeline_pins;
     shading_pipeline<AGen, EVAL> dut;
 
     // fd_m: as the pipeline's (0: the forward-difference evaluator takes any m per interval).
-    bound_pipeline(const sc_core::sc_module_name& name, unsigned fd_m)
+    bound_pipeline(const sc_core::sc_module_name& name, unsigned fd_m, test_clock* clk = nullptr)
         : sc_module(name),
           dut("dut", overflow_mode::saturate, AGen::default_config(), interp::sample_set::case1,
               interp::div3_mode::shift_add, fd_m) {
         bind_inputs();
+        dut.clk(clk ? clk->net() : clk_net);
         dut.ready(ready_net);
         dut.px_valid(px_valid_net); dut.px_x(px_x_net); dut.px_y(px_y_net);
         dut.px_r(px_r_net); dut.px_g(px_g_net); dut.px_b(px_b_net);
@@ -57,7 +72,6 @@ private:
             (*nh[k])(nh_net[k]);
             (*nl[k])(nl_net[k]);
         }
-        dut.clk(clk_net);
         dut.start(start_net);
         dut.load_frame(load_frame_net);
         dut.in_y(y_net);
@@ -81,8 +95,8 @@ private:
 struct bound_cell : sc_core::sc_module {
     cell_unit dut{"dut"};
 
-    explicit bound_cell(const sc_core::sc_module_name& name) : sc_module(name) {
-        dut.clk(clk_net); dut.start(start_net); dut.ready(ready_net);
+    explicit bound_cell(const sc_core::sc_module_name& name, test_clock* clk = nullptr) : sc_module(name) {
+        dut.clk(clk ? clk->net() : clk_net); dut.start(start_net); dut.ready(ready_net);
         dut.in_x0(x0_net); dut.in_y0(y0_net); dut.in_m(m_net);
         dut.in_lat_r.bind(lat_r); dut.in_lat_g.bind(lat_g); dut.in_lat_b.bind(lat_b);
         dut.px_valid(px_valid_net); dut.px_x(px_x_net); dut.px_y(px_y_net);

@@ -340,6 +340,37 @@ TEST(PipelinePhases, HornerPipelineClockIsTheHandSumOfItsSlowestPaths) {
     EXPECT_GT(pipeline::pipeline_period(), b.period);
 }
 
+// A path between units is checked in simulation too: a high phase of 4.8 ns gives the Horner unit
+// its own 4.6 ns, but not the 4.9 ns the pixel controller's select takes through MX_A into it;
+// only the top's checker sees it (the low phase, 6.5 ns, is long enough for every unit).
+TEST(PipelinePhases, AHighPhaseTooShortForAPathBetweenUnitsIsReportedByTheTop) {
+    tb::report_log::get().expect(msg::timing);
+    timing::test_clock clk(sc_time(4800, SC_PS), sc_time(6500, SC_PS));
+    timing::bound_pipeline<sqmul_device, pipeline::evaluator::horner> top("tb", 0, &clk);
+    sc_core::sc_start(sc_time(200, SC_NS));
+    EXPECT_GT(top.dut.chk_clock.high_violations(), 10u);
+    EXPECT_EQ(top.dut.chk_clock.low_violations(), 0u);
+    std::vector<timing::unit_phases> units;
+    timing::collect(top, units);
+    for (const auto& u : units)
+        if (u.chk != &top.dut.chk_clock) EXPECT_EQ(u.chk->violations(), 0u) << u.unit;
+}
+
+// And a period too short for a path between units: 2.7 + 3.4 ns gives every unit of the cell unit
+// its phases (2.6, 3.3 ns) but not the 6.2 ns from a column coefficient unit into its evaluator.
+TEST(PipelinePhases, APeriodTooShortForAPathBetweenUnitsIsReportedByTheTop) {
+    tb::report_log::get().expect(msg::timing);
+    timing::test_clock clk(sc_time(2700, SC_PS), sc_time(3400, SC_PS));
+    timing::bound_cell top("tb", &clk);
+    sc_core::sc_start(sc_time(100, SC_NS));
+    EXPECT_EQ(top.dut.chk_clock.high_violations(), 0u);
+    EXPECT_GT(top.dut.chk_clock.low_violations(), 10u);  // a short period counts as a low violation
+    std::vector<timing::unit_phases> units;
+    timing::collect(top, units);
+    for (const auto& u : units)
+        if (u.chk != &top.dut.chk_clock) EXPECT_EQ(u.chk->violations(), 0u) << u.unit;
+}
+
 // The cell unit's: its units' phases and, between them, the column coefficient unit into the
 // column's forward differences over a whole period.
 TEST(PipelinePhases, CellUnitClockIsTheHandSumOfItsSlowestPaths) {
