@@ -133,120 +133,7 @@ public:
     // sample's takes its colour from rg_last (sample_ctrl.h); off, the controller never selects it.
     shading_pipeline(const sc_core::sc_module_name& name, overflow_mode mode, const typename AGen::config& gen,
                      interp::sample_set set, interp::div3_mode div, unsigned fd_m = 4, const block_delays& bd = {},
-                     const interp_delays& dl = {}, bool carry = false)
-        : sc_module(name), rg_y("rg_y", dl.reg), rg_x0("rg_x0", dl.reg), rg_len("rg_len", dl.reg),
-          rg_m("rg_m", dl.reg), rg_deg2("rg_deg2", dl.reg), rg_dy("rg_dy", dl.reg), rg_dx0("rg_dx0", dl.reg),
-          rg_dlen("rg_dlen", dl.reg), rg_dm("rg_dm", dl.reg), rg_ddeg2("rg_ddeg2", dl.reg), rg_nh1("rg_nh1", dl.reg), rg_nh2("rg_nh2", dl.reg),
-          rg_nh3("rg_nh3", dl.reg), rg_nh4("rg_nh4", dl.reg), rg_nl1("rg_nl1", dl.reg), rg_nl2("rg_nl2", dl.reg),
-          rg_nl3("rg_nl3", dl.reg), rg_nl4("rg_nl4", dl.reg), mx_nh("mx_nh", dl.mux), mx_nl("mx_nl", dl.mux),
-          rg_lnh("rg_lnh", dl.reg), rg_lnl("rg_lnl", dl.reg), eq_nh("eq_nh", dl.mux), eq_nl("eq_nl", dl.mux),
-          and_carry("and_carry", dl.mux),
-          dev("dev", mode, gen, bd), rg_kd_r("rg_kd_r", dl.reg), rg_kd_g("rg_kd_g", dl.reg), rg_kd_b("rg_kd_b", dl.reg),
-          rg_amb_r("rg_amb_r", dl.reg), rg_amb_g("rg_amb_g", dl.reg), rg_amb_b("rg_amb_b", dl.reg),
-          smp_r("smp_r", set, div, dl), smp_g("smp_g", set, div, dl), smp_b("smp_b", set, div, dl),
-          ev_r(horner ? "horner_r" : "fd_r", fd_m, dl), ev_g(horner ? "horner_g" : "fd_g", fd_m, dl),
-          ev_b(horner ? "horner_b" : "fd_b", fd_m, dl),
-          ctl_sample("ctl_sample", horner ? 0 : fd_m, pipe_device<AGen>::clocked, carry), ctl_pixel("ctl_pixel") {
-        // Job registers: latched where ld_job falls.
-        rg_y.ctl(ld_job); rg_y.d(in_y); rg_y.q(y);
-        rg_x0.ctl(ld_job); rg_x0.d(in_x0); rg_x0.q(x0);
-        rg_len.ctl(ld_job); rg_len.d(in_len); rg_len.q(len);
-        rg_m.ctl(ld_job); rg_m.d(in_m); rg_m.q(m);
-        rg_deg2.ctl(ld_job); rg_deg2.d(in_deg2); rg_deg2.q(deg2_job);
-        // Descriptor registers: the job's y, x0, len, m, deg2 travel with its samples (ld_d falls at
-        // the last sample's latch), so the job registers are free for the next job.
-        rg_dy.ctl(ld_d); rg_dy.d(y); rg_dy.q(d_y);
-        rg_dx0.ctl(ld_d); rg_dx0.d(x0); rg_dx0.q(d_x0);
-        rg_dlen.ctl(ld_d); rg_dlen.d(len); rg_dlen.q(d_len);
-        rg_dm.ctl(ld_d); rg_dm.d(m); rg_dm.q(d_m);
-        rg_ddeg2.ctl(ld_d); rg_ddeg2.d(deg2_job); rg_ddeg2.q(d_deg2);
-        reg<WCOS>* rnh[] = {&rg_nh1, &rg_nh2, &rg_nh3, &rg_nh4};
-        reg<WCOS>* rnl[] = {&rg_nl1, &rg_nl2, &rg_nl3, &rg_nl4};
-        sc_core::sc_in<cos_t>* pnh[] = {&in_nh1, &in_nh2, &in_nh3, &in_nh4};
-        sc_core::sc_in<cos_t>* pnl[] = {&in_nl1, &in_nl2, &in_nl3, &in_nl4};
-        sc_core::sc_signal<cos_t>* snh[] = {&nh1, &nh2, &nh3, &nh4};
-        sc_core::sc_signal<cos_t>* snl[] = {&nl1, &nl2, &nl3, &nl4};
-        for (int k = 0; k < 4; ++k) {
-            rnh[k]->ctl(ld_job); rnh[k]->d(*pnh[k]); rnh[k]->q(*snh[k]);
-            rnl[k]->ctl(ld_job); rnl[k]->d(*pnl[k]); rnl[k]->q(*snl[k]);
-            mx_nh.in[k](*snh[k]);
-            mx_nl.in[k](*snl[k]);
-        }
-        mx_nh.sel(smp_sel); mx_nh.y(in18_cos);
-        mx_nl.sel(smp_sel); mx_nl.y(cos_nl);
-        // The last sample's codes, and whether the job's first sample is that point again.
-        rg_lnh.ctl(ld_last); rg_lnh.d(in18_cos); rg_lnh.q(last_nh);
-        rg_lnl.ctl(ld_last); rg_lnl.d(cos_nl); rg_lnl.q(last_nl);
-        eq_nh.a(nh1); eq_nh.b(last_nh); eq_nh.y(nh_hit);
-        eq_nl.a(nl1); eq_nl.b(last_nl); eq_nl.y(nl_hit);
-        and_carry.a(nh_hit); and_carry.b(nl_hit); and_carry.y(carry_hit);
-
-        // The specular device: frame constants straight from the pins through its own registers.
-        dev.ctl15(ctl15); dev.ctl17(ctl17); dev.ctl20(ctl20); dev.ctl22(ctl22); dev.ctl24(ctl24);
-        dev.in16_n(in_n); dev.in18_cos(in18_cos);
-        dev.in19_ksi_r(in_ksi_r); dev.in21_ksi_g(in_ksi_g); dev.in23_ksi_b(in_ksi_b);
-        dev.out25_r(out25_r); dev.out26_g(out26_g); dev.out27_b(out27_b); dev.out29_valid(out29_valid);
-        if constexpr (pipe_device<AGen>::clocked) dev.clk(clk);
-        rg_kd_r.ctl(ld_k); rg_kd_r.d(in_kdi_r); rg_kd_r.q(kdi_r);
-        rg_kd_g.ctl(ld_k); rg_kd_g.d(in_kdi_g); rg_kd_g.q(kdi_g);
-        rg_kd_b.ctl(ld_k); rg_kd_b.d(in_kdi_b); rg_kd_b.q(kdi_b);
-        rg_amb_r.ctl(ld_k); rg_amb_r.d(in_amb_r); rg_amb_r.q(amb_r);
-        rg_amb_g.ctl(ld_k); rg_amb_g.d(in_amb_g); rg_amb_g.q(amb_g);
-        rg_amb_b.ctl(ld_k); rg_amb_b.d(in_amb_b); rg_amb_b.q(amb_b);
-
-        sample_channel* smp[] = {&smp_r, &smp_g, &smp_b};
-        eval_channel* ev[] = {&ev_r, &ev_g, &ev_b};
-        sc_core::sc_signal<pipeline::kdi_t>* kd[] = {&kdi_r, &kdi_g, &kdi_b};
-        sc_core::sc_signal<sample_t>* amb[] = {&amb_r, &amb_g, &amb_b};
-        sc_core::sc_signal<sc_dt::sc_uint<spec::out_fmt.width>>* spec[] = {&out25_r, &out26_g, &out27_b};
-        sc_core::sc_out<sample_t>* px[] = {&px_r, &px_g, &px_b};
-        for (int ch = 0; ch < 3; ++ch) {
-            sample_channel& s = *smp[ch];
-            s.clk(clk);
-            s.ld_i1(ld_i1); s.ld_i2(ld_i2); s.ld_i3(ld_i3); s.ld_i4(ld_i4); s.ld_e(ld_e);
-            s.kdi(*kd[ch]); s.ambient(*amb[ch]); s.cos_nl(cos_nl); s.specular(*spec[ch]);
-            s.carry_sel(carry_sel); s.ld_last(ld_last);
-            s.ca(ca[ch]); s.cb(cb[ch]); s.cc(cc[ch]); s.cd(cd[ch]); s.qa(qa[ch]); s.qb(qb[ch]); s.qc(qc[ch]);
-            eval_channel& e = *ev[ch];
-            e.clk(clk); e.start(ev_start); e.deg_sel(deg_sel);
-            e.ca(ca[ch]); e.cb(cb[ch]); e.cc(cc[ch]); e.cd(cd[ch]); e.qa(qa[ch]); e.qb(qb[ch]); e.qc(qc[ch]);
-            e.px(*px[ch]);
-            if constexpr (horner) {
-                e.deg2(deg2); e.t(t);
-                e.done(ev_done[ch]); e.busy(ev_busy[ch]);
-            } else {
-                e.len(ev_len); e.m(ev_m);
-                e.valid(ev_done[ch]); e.last(ev_busy[ch]);
-            }
-        }
-        out_valid.x(ev_done[0]); out_valid.y(px_valid);
-
-        ctl_sample.clk(clk); ctl_sample.start(start); ctl_sample.load_frame(load_frame);
-        ctl_sample.len(len); ctl_sample.m(m); ctl_sample.deg2(deg2_job); ctl_sample.ld_e(ld_e);
-        ctl_sample.dev_valid(out29_valid);
-        ctl_sample.ready(ready); ctl_sample.ld_job(ld_job); ctl_sample.ld_d(ld_d);
-        ctl_sample.ctl15(ctl15); ctl_sample.ctl17(ctl17); ctl_sample.ctl20(ctl20); ctl_sample.ctl22(ctl22);
-        ctl_sample.ctl24(ctl24); ctl_sample.ld_k(ld_k);
-        ctl_sample.smp_sel(smp_sel);
-        ctl_sample.ld_i1(ld_i1); ctl_sample.ld_i2(ld_i2); ctl_sample.ld_i3(ld_i3); ctl_sample.ld_i4(ld_i4);
-        ctl_sample.samples_ready(samples_ready);
-        ctl_sample.carry_hit(carry_hit); ctl_sample.carry_sel(carry_sel); ctl_sample.ld_last(ld_last);
-
-        ctl_pixel.clk(clk); ctl_pixel.samples_ready(samples_ready);
-        ctl_pixel.y(d_y); ctl_pixel.x0(d_x0); ctl_pixel.deg2_in(d_deg2);
-        ctl_pixel.ld_e(ld_e); ctl_pixel.start(ev_start); ctl_pixel.deg_sel(deg_sel);
-        ctl_pixel.px_x(px_x); ctl_pixel.px_y(px_y);
-        if constexpr (horner) {
-            ctl_pixel.len(d_len); ctl_pixel.m(d_m);
-            ctl_pixel.busy(ev_busy[0]); ctl_pixel.done(ev_done[0]);
-            ctl_pixel.deg2(deg2); ctl_pixel.t(t);
-        } else {
-            ctl_pixel.len_in(d_len); ctl_pixel.m_in(d_m); ctl_pixel.m(ev_m);
-            ctl_pixel.valid(ev_done[0]); ctl_pixel.last(ev_busy[0]);
-            ctl_pixel.len(ev_len);
-        }
-        chk_clock.clk(clk);
-    }
+                     const interp_delays& dl = {}, bool carry = false);
 
     void end_of_elaboration() override { chk_clock.derive(timing_graph(*this)); }
     // Shortest clock phases the whole top works with (after elaboration).
@@ -268,5 +155,127 @@ private:
         return new sc_core::sc_signal<T>(n.c_str());
     }
 };
+
+// Defined outside the class so that it is not inline: a program that declares an instance
+// `extern template` (testbenches/pipeline/pipeline_tops.h) then takes it from the one unit that
+// instantiates it instead of compiling the whole top again.
+template <class AGen, pipeline::evaluator EVAL>
+shading_pipeline<AGen, EVAL>::shading_pipeline(const sc_core::sc_module_name& name, overflow_mode mode,
+                                               const typename AGen::config& gen, interp::sample_set set,
+                                               interp::div3_mode div, unsigned fd_m, const block_delays& bd,
+                                               const interp_delays& dl, bool carry)
+    : sc_module(name), rg_y("rg_y", dl.reg), rg_x0("rg_x0", dl.reg), rg_len("rg_len", dl.reg),
+      rg_m("rg_m", dl.reg), rg_deg2("rg_deg2", dl.reg), rg_dy("rg_dy", dl.reg), rg_dx0("rg_dx0", dl.reg),
+      rg_dlen("rg_dlen", dl.reg), rg_dm("rg_dm", dl.reg), rg_ddeg2("rg_ddeg2", dl.reg), rg_nh1("rg_nh1", dl.reg), rg_nh2("rg_nh2", dl.reg),
+      rg_nh3("rg_nh3", dl.reg), rg_nh4("rg_nh4", dl.reg), rg_nl1("rg_nl1", dl.reg), rg_nl2("rg_nl2", dl.reg),
+      rg_nl3("rg_nl3", dl.reg), rg_nl4("rg_nl4", dl.reg), mx_nh("mx_nh", dl.mux), mx_nl("mx_nl", dl.mux),
+      rg_lnh("rg_lnh", dl.reg), rg_lnl("rg_lnl", dl.reg), eq_nh("eq_nh", dl.mux), eq_nl("eq_nl", dl.mux),
+      and_carry("and_carry", dl.mux),
+      dev("dev", mode, gen, bd), rg_kd_r("rg_kd_r", dl.reg), rg_kd_g("rg_kd_g", dl.reg), rg_kd_b("rg_kd_b", dl.reg),
+      rg_amb_r("rg_amb_r", dl.reg), rg_amb_g("rg_amb_g", dl.reg), rg_amb_b("rg_amb_b", dl.reg),
+      smp_r("smp_r", set, div, dl), smp_g("smp_g", set, div, dl), smp_b("smp_b", set, div, dl),
+      ev_r(horner ? "horner_r" : "fd_r", fd_m, dl), ev_g(horner ? "horner_g" : "fd_g", fd_m, dl),
+      ev_b(horner ? "horner_b" : "fd_b", fd_m, dl),
+      ctl_sample("ctl_sample", horner ? 0 : fd_m, pipe_device<AGen>::clocked, carry), ctl_pixel("ctl_pixel") {
+    // Job registers: latched where ld_job falls.
+    rg_y.ctl(ld_job); rg_y.d(in_y); rg_y.q(y);
+    rg_x0.ctl(ld_job); rg_x0.d(in_x0); rg_x0.q(x0);
+    rg_len.ctl(ld_job); rg_len.d(in_len); rg_len.q(len);
+    rg_m.ctl(ld_job); rg_m.d(in_m); rg_m.q(m);
+    rg_deg2.ctl(ld_job); rg_deg2.d(in_deg2); rg_deg2.q(deg2_job);
+    // Descriptor registers: the job's y, x0, len, m, deg2 travel with its samples (ld_d falls at
+    // the last sample's latch), so the job registers are free for the next job.
+    rg_dy.ctl(ld_d); rg_dy.d(y); rg_dy.q(d_y);
+    rg_dx0.ctl(ld_d); rg_dx0.d(x0); rg_dx0.q(d_x0);
+    rg_dlen.ctl(ld_d); rg_dlen.d(len); rg_dlen.q(d_len);
+    rg_dm.ctl(ld_d); rg_dm.d(m); rg_dm.q(d_m);
+    rg_ddeg2.ctl(ld_d); rg_ddeg2.d(deg2_job); rg_ddeg2.q(d_deg2);
+    reg<WCOS>* rnh[] = {&rg_nh1, &rg_nh2, &rg_nh3, &rg_nh4};
+    reg<WCOS>* rnl[] = {&rg_nl1, &rg_nl2, &rg_nl3, &rg_nl4};
+    sc_core::sc_in<cos_t>* pnh[] = {&in_nh1, &in_nh2, &in_nh3, &in_nh4};
+    sc_core::sc_in<cos_t>* pnl[] = {&in_nl1, &in_nl2, &in_nl3, &in_nl4};
+    sc_core::sc_signal<cos_t>* snh[] = {&nh1, &nh2, &nh3, &nh4};
+    sc_core::sc_signal<cos_t>* snl[] = {&nl1, &nl2, &nl3, &nl4};
+    for (int k = 0; k < 4; ++k) {
+        rnh[k]->ctl(ld_job); rnh[k]->d(*pnh[k]); rnh[k]->q(*snh[k]);
+        rnl[k]->ctl(ld_job); rnl[k]->d(*pnl[k]); rnl[k]->q(*snl[k]);
+        mx_nh.in[k](*snh[k]);
+        mx_nl.in[k](*snl[k]);
+    }
+    mx_nh.sel(smp_sel); mx_nh.y(in18_cos);
+    mx_nl.sel(smp_sel); mx_nl.y(cos_nl);
+    // The last sample's codes, and whether the job's first sample is that point again.
+    rg_lnh.ctl(ld_last); rg_lnh.d(in18_cos); rg_lnh.q(last_nh);
+    rg_lnl.ctl(ld_last); rg_lnl.d(cos_nl); rg_lnl.q(last_nl);
+    eq_nh.a(nh1); eq_nh.b(last_nh); eq_nh.y(nh_hit);
+    eq_nl.a(nl1); eq_nl.b(last_nl); eq_nl.y(nl_hit);
+    and_carry.a(nh_hit); and_carry.b(nl_hit); and_carry.y(carry_hit);
+
+    // The specular device: frame constants straight from the pins through its own registers.
+    dev.ctl15(ctl15); dev.ctl17(ctl17); dev.ctl20(ctl20); dev.ctl22(ctl22); dev.ctl24(ctl24);
+    dev.in16_n(in_n); dev.in18_cos(in18_cos);
+    dev.in19_ksi_r(in_ksi_r); dev.in21_ksi_g(in_ksi_g); dev.in23_ksi_b(in_ksi_b);
+    dev.out25_r(out25_r); dev.out26_g(out26_g); dev.out27_b(out27_b); dev.out29_valid(out29_valid);
+    if constexpr (pipe_device<AGen>::clocked) dev.clk(clk);
+    rg_kd_r.ctl(ld_k); rg_kd_r.d(in_kdi_r); rg_kd_r.q(kdi_r);
+    rg_kd_g.ctl(ld_k); rg_kd_g.d(in_kdi_g); rg_kd_g.q(kdi_g);
+    rg_kd_b.ctl(ld_k); rg_kd_b.d(in_kdi_b); rg_kd_b.q(kdi_b);
+    rg_amb_r.ctl(ld_k); rg_amb_r.d(in_amb_r); rg_amb_r.q(amb_r);
+    rg_amb_g.ctl(ld_k); rg_amb_g.d(in_amb_g); rg_amb_g.q(amb_g);
+    rg_amb_b.ctl(ld_k); rg_amb_b.d(in_amb_b); rg_amb_b.q(amb_b);
+
+    sample_channel* smp[] = {&smp_r, &smp_g, &smp_b};
+    eval_channel* ev[] = {&ev_r, &ev_g, &ev_b};
+    sc_core::sc_signal<pipeline::kdi_t>* kd[] = {&kdi_r, &kdi_g, &kdi_b};
+    sc_core::sc_signal<sample_t>* amb[] = {&amb_r, &amb_g, &amb_b};
+    sc_core::sc_signal<sc_dt::sc_uint<spec::out_fmt.width>>* spec[] = {&out25_r, &out26_g, &out27_b};
+    sc_core::sc_out<sample_t>* px[] = {&px_r, &px_g, &px_b};
+    for (int ch = 0; ch < 3; ++ch) {
+        sample_channel& s = *smp[ch];
+        s.clk(clk);
+        s.ld_i1(ld_i1); s.ld_i2(ld_i2); s.ld_i3(ld_i3); s.ld_i4(ld_i4); s.ld_e(ld_e);
+        s.kdi(*kd[ch]); s.ambient(*amb[ch]); s.cos_nl(cos_nl); s.specular(*spec[ch]);
+        s.carry_sel(carry_sel); s.ld_last(ld_last);
+        s.ca(ca[ch]); s.cb(cb[ch]); s.cc(cc[ch]); s.cd(cd[ch]); s.qa(qa[ch]); s.qb(qb[ch]); s.qc(qc[ch]);
+        eval_channel& e = *ev[ch];
+        e.clk(clk); e.start(ev_start); e.deg_sel(deg_sel);
+        e.ca(ca[ch]); e.cb(cb[ch]); e.cc(cc[ch]); e.cd(cd[ch]); e.qa(qa[ch]); e.qb(qb[ch]); e.qc(qc[ch]);
+        e.px(*px[ch]);
+        if constexpr (horner) {
+            e.deg2(deg2); e.t(t);
+            e.done(ev_done[ch]); e.busy(ev_busy[ch]);
+        } else {
+            e.len(ev_len); e.m(ev_m);
+            e.valid(ev_done[ch]); e.last(ev_busy[ch]);
+        }
+    }
+    out_valid.x(ev_done[0]); out_valid.y(px_valid);
+
+    ctl_sample.clk(clk); ctl_sample.start(start); ctl_sample.load_frame(load_frame);
+    ctl_sample.len(len); ctl_sample.m(m); ctl_sample.deg2(deg2_job); ctl_sample.ld_e(ld_e);
+    ctl_sample.dev_valid(out29_valid);
+    ctl_sample.ready(ready); ctl_sample.ld_job(ld_job); ctl_sample.ld_d(ld_d);
+    ctl_sample.ctl15(ctl15); ctl_sample.ctl17(ctl17); ctl_sample.ctl20(ctl20); ctl_sample.ctl22(ctl22);
+    ctl_sample.ctl24(ctl24); ctl_sample.ld_k(ld_k);
+    ctl_sample.smp_sel(smp_sel);
+    ctl_sample.ld_i1(ld_i1); ctl_sample.ld_i2(ld_i2); ctl_sample.ld_i3(ld_i3); ctl_sample.ld_i4(ld_i4);
+    ctl_sample.samples_ready(samples_ready);
+    ctl_sample.carry_hit(carry_hit); ctl_sample.carry_sel(carry_sel); ctl_sample.ld_last(ld_last);
+
+    ctl_pixel.clk(clk); ctl_pixel.samples_ready(samples_ready);
+    ctl_pixel.y(d_y); ctl_pixel.x0(d_x0); ctl_pixel.deg2_in(d_deg2);
+    ctl_pixel.ld_e(ld_e); ctl_pixel.start(ev_start); ctl_pixel.deg_sel(deg_sel);
+    ctl_pixel.px_x(px_x); ctl_pixel.px_y(px_y);
+    if constexpr (horner) {
+        ctl_pixel.len(d_len); ctl_pixel.m(d_m);
+        ctl_pixel.busy(ev_busy[0]); ctl_pixel.done(ev_done[0]);
+        ctl_pixel.deg2(deg2); ctl_pixel.t(t);
+    } else {
+        ctl_pixel.len_in(d_len); ctl_pixel.m_in(d_m); ctl_pixel.m(ev_m);
+        ctl_pixel.valid(ev_done[0]); ctl_pixel.last(ev_busy[0]);
+        ctl_pixel.len(ev_len);
+    }
+    chk_clock.clk(clk);
+}
 
 }  // namespace shading

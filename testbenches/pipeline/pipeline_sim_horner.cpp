@@ -7,3 +7,14 @@ template sim_result run_device<evaluator::horner>(const plan&, const frame_const
                                                 const plan_config&, const sim_options&);
 
 }  // namespace shading::pipeline::sim_detail
+
+namespace shading {
+
+// The horner tops pipeline_tops.h declares, for every program that links this library.
+template class shading_pipeline<a_gen_linear, pipeline::evaluator::horner>;
+template class shading_pipeline<a_gen_tuned, pipeline::evaluator::horner>;
+template class shading_pipeline<a_gen_rom, pipeline::evaluator::horner>;
+template class shading_pipeline<squared_device, pipeline::evaluator::horner>;
+template class shading_pipeline<sqmul_device, pipeline::evaluator::horner>;
+
+}  // namespace shading

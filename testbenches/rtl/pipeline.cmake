@@ -87,8 +87,8 @@ endforeach()
 target_compile_definitions(shading_rtl_pipeline_models PUBLIC VM_COVERAGE=0 VM_SC=1 VM_TRACE=1 VM_TRACE_FST=0
                            VM_TRACE_VCD=1)
 
-shading_add_gtest(test_rtl_pipeline SOURCES test_rtl_pipeline.cpp LIBS shading_pipeline shading_rtl_pipeline_models
-                  TIMEOUT 300)
+shading_add_gtest(test_rtl_pipeline SOURCES test_rtl_pipeline.cpp LIBS shading_pipeline shading_pipeline_sim
+                  shading_rtl_pipeline_models TIMEOUT 300)
 # The head's planned frame (AnotherSampleSetIsSeenOnAFrame): the scan in this tree's data/head/.
 target_compile_definitions(test_rtl_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 target_compile_options(test_rtl_pipeline PRIVATE -Wno-unused-parameter)  # Verilator's headers

@@ -14,8 +14,7 @@
 
 #include "monitors/phase_checker.h"
 #include "pipeline/cell_unit.h"
-#include "pipeline/shading_pipeline.h"
-#include "sqmul/sqmul_device.h"
+#include "testbenches/pipeline/pipeline_tops.h"
 
 namespace shading::timing {
 

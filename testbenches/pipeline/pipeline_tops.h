@@ -1,0 +1,27 @@
+// The block-level pipeline tops the programs share, shading_pipeline<AGen, EVAL> for every device and
+// evaluator: compiled once, in shading_pipeline_sim (pipeline_sim_horner.cpp, pipeline_sim_fd.cpp),
+// which a program that includes this header links. Each is some 4-5 CPU s of a unit's compile at the
+// suites' -Og, and six programs build them; another AGen still instantiates in the unit that names it.
+#pragma once
+
+#include "pipeline/shading_pipeline.h"
+#include "sqmul/sqmul_device.h"
+#include "squared/squared_device.h"
+#include "tuned/a_gen_tuned.h"
+#include "ua22802/a_gen_rom.h"
+#include "ua60553/a_gen_linear.h"
+
+namespace shading {
+
+extern template class shading_pipeline<a_gen_linear, pipeline::evaluator::horner>;
+extern template class shading_pipeline<a_gen_tuned, pipeline::evaluator::horner>;
+extern template class shading_pipeline<a_gen_rom, pipeline::evaluator::horner>;
+extern template class shading_pipeline<squared_device, pipeline::evaluator::horner>;
+extern template class shading_pipeline<sqmul_device, pipeline::evaluator::horner>;
+extern template class shading_pipeline<a_gen_linear, pipeline::evaluator::fd>;
+extern template class shading_pipeline<a_gen_tuned, pipeline::evaluator::fd>;
+extern template class shading_pipeline<a_gen_rom, pipeline::evaluator::fd>;
+extern template class shading_pipeline<squared_device, pipeline::evaluator::fd>;
+extern template class shading_pipeline<sqmul_device, pipeline::evaluator::fd>;
+
+}  // namespace shading
