@@ -101,7 +101,7 @@ endif()
 set(SHADING_RTL_OPT_FLAGS "-O1" CACHE STRING
     "Optimisation flags of the verilated models' C++ in a Release build (perf_models' row keeps -O3)")
 
-# shading_verilated_finish(<target> <prefix> [SPEED]), after verilate() of model <prefix> into <target>:
+# shading_verilated_finish(<target> <prefix> [SPEED] [OPT <flags>]), after verilate() of model <prefix> into <target>:
 # - the runtime sources verilate() added replaced by shading_verilated. A runtime file the library
 #   lacks (another Verilator) stops the configure.
 # - the model's generated files compiled as one translation unit, <prefix>__unity.cpp, which
@@ -109,9 +109,9 @@ set(SHADING_RTL_OPT_FLAGS "-O1" CACHE STRING
 #   most of its time reading SystemC's and Verilator's headers (Vrtl_squared_saturate's 10 files: 38.8
 #   CPU s one by one, 5.3 s as one).
 # - that unit compiled at SHADING_RTL_OPT_FLAGS (below) in a Release build, or at -O3 with SPEED (the
-#   perf_models row, whose rate docs/speed.md quotes).
+#   perf_models row, whose rate docs/speed.md quotes), or at OPT's flags.
 function(shading_verilated_finish target prefix)
-  cmake_parse_arguments(ARG "SPEED" "" "" ${ARGN})
+  cmake_parse_arguments(ARG "SPEED" "" "OPT" ${ARGN})
   get_target_property(_sources ${target} SOURCES)
   set(_kept)
   set(_model)
@@ -146,6 +146,8 @@ function(shading_verilated_finish target prefix)
   set_source_files_properties(${_unity} PROPERTIES GENERATED ON OBJECT_DEPENDS "${_model}")
   if(ARG_SPEED)
     set(_opt -O3)
+  elseif(ARG_OPT)
+    separate_arguments(_opt UNIX_COMMAND "${ARG_OPT}")
   else()
     separate_arguments(_opt UNIX_COMMAND "${SHADING_RTL_OPT_FLAGS}")
   endif()
@@ -207,13 +209,15 @@ add_executable(gen_rtl ${PROJECT_SOURCE_DIR}/src/tools/gen_rtl.cpp)
 target_link_libraries(gen_rtl PRIVATE shading_golden)
 
 # shading_verilate_rtl(<target> <prefix> TOP <module> SOURCE <file.v> DIRS <dirs...> [ARGS <verilator args...>]
-#                      [SPEED])
+#                      [SPEED] [OPT <flags>])
 #   Verilates one RTL top into <target> as the SystemC module <prefix> (header <prefix>.h): pins of
 #   2..64 wires as sc_uint<W> (--pins-sc-uint), the SystemC model's own pin types, so both bind to
 #   the same signals; 1-wire pins as bool. Lint warnings (-Wall) fail the build; tracing is compiled in.
-#   SPEED: the model's C++ at -O3 (a program whose rate a page quotes) instead of SHADING_RTL_OPT_FLAGS.
+#   SPEED: the model's C++ at -O3 (a program whose rate a page quotes) instead of SHADING_RTL_OPT_FLAGS;
+#   OPT "<flags>": at those flags instead (a Release build's, one string as SHADING_RTL_OPT_FLAGS), for a
+#   model whose compile outweighs its run.
 function(shading_verilate_rtl target prefix)
-  cmake_parse_arguments(ARG "SPEED" "TOP;SOURCE" "DIRS;ARGS" ${ARGN})
+  cmake_parse_arguments(ARG "SPEED" "TOP;SOURCE" "DIRS;ARGS;OPT" ${ARGN})
   # A previous run's list of the files Verilator read (<prefix>_copy.cmake in the build tree): if one
   # of them is gone since (a Verilog header folded into shading_formats.vh), the list is dropped, so
   # verilate() runs Verilator again instead of stopping the configure on the missing file.
@@ -238,6 +242,8 @@ function(shading_verilate_rtl target prefix)
   set(_speed)
   if(ARG_SPEED)
     set(_speed SPEED)
+  elseif(ARG_OPT)
+    set(_speed OPT "${ARG_OPT}")
   endif()
   shading_verilated_finish(${target} ${prefix} ${_speed})
   target_link_libraries(${target} PRIVATE Threads::Threads)
