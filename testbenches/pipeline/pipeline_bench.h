@@ -18,7 +18,7 @@
 #include "core/report_ids.h"
 #include "pipeline/frame_buffer.h"
 #include "golden_pipeline/pipeline.h"
-#include "pipeline_tops.h"
+#include "pipeline/shading_pipeline.h"
 
 namespace shading {
 // The fast abstraction (pipeline/shading_pipeline_fast.h), included only where a fast bench is built

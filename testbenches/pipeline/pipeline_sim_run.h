@@ -13,6 +13,7 @@
 #include "core/trace.h"
 #include "pipeline_bench.h"
 #include "pipeline_sim.h"
+#include "pipeline_tops.h"
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"

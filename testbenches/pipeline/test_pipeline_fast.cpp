@@ -24,6 +24,7 @@
 #include "pipeline_pair.h"
 #include "pipeline_sim.h"
 #include "pipeline_test.h"
+#include "pipeline_tops.h"
 #include "tuned/a_gen_tuned.h"
 #include "ua22802/a_gen_rom.h"
 #include "ua60553/a_gen_linear.h"

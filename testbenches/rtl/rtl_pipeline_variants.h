@@ -6,6 +6,7 @@
 #pragma once
 
 #include "testbenches/pipeline/pipeline_pair.h"
+#include "testbenches/pipeline/pipeline_tops.h"
 #include "sqmul/sqmul_device.h"
 
 // The verilated pipelines (testbenches/rtl/pipeline.cmake).
