@@ -75,14 +75,15 @@ elseif(NOT SHADING_RTL_TRACE)
 endif()
 
 # The three variants verilated once, into a library that the suite and render_pipeline_rtl both link
-# (each model is megabytes of C++: compiling it once per program cost 20-40 CPU s a model). The
-# Verilator macros its header reads (verilated.h: VM_SC, VM_TRACE) go to the programs with it.
+# (each model is megabytes of C++: compiling it once per program cost 20-40 CPU s a model), each
+# through a unit of its own (ALONE), so the three compile in parallel. The Verilator macros its header
+# reads (verilated.h: VM_SC, VM_TRACE) go to the programs with it.
 add_library(shading_rtl_pipeline_models STATIC)
 foreach(_v IN LISTS _pipe_variants)
   _shading_pipe_variant(${_v})
   shading_verilate_rtl(shading_rtl_pipeline_models Vrtl_pipeline_${_name} TOP shading_pipeline
                        SOURCE ${SHADING_RTL_DIR}/pipeline/shading_pipeline.v DIRS ${SHADING_RTL_PIPELINE_DIRS}
-                       ARGS ${_args})
+                       ARGS ${_args} ALONE)
 endforeach()
 target_compile_definitions(shading_rtl_pipeline_models PUBLIC VM_COVERAGE=0 VM_SC=1 VM_TRACE=1 VM_TRACE_FST=0
                            VM_TRACE_VCD=1)
