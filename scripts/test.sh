@@ -37,7 +37,8 @@ if [ "$sanitize" = 0 ]; then
 fi
 scripts/setup.sh
 launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+if command -v ninja >/dev/null; then launcher=(-G Ninja); fi  # as scripts/build.sh
+if command -v ccache >/dev/null; then launcher+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 # -Og -g1: stacks with file and line (-g1 keeps the line tables only: full debug information made
 # one test's instrumented compile 38 % slower); -Og rather than -O1 halves the instrumented compile
 # (docs/tests.md) while the suite, dominated by process start-up, runs as fast; asserts stay on.
