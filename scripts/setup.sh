@@ -3,9 +3,10 @@
 #   scripts/setup.sh [GROUP...]   GROUP: plots (matplotlib for scripts/run.sh's figures), fuzz (clang
 #                                 and libFuzzer for scripts/fuzz.sh); the base list always.
 # The base list is what building and scripts/test.sh need (CI; python3 for synth.smoke's summary,
-# standard library only; Ninja, which the scripts build with: make stays for a build tree configured
-# with it and for the package test's consumer project); the optional groups are installed by the scripts that use them, so a CI
-# run does not download a second compiler it never calls.
+# standard library only; Ninja, which the scripts build with, while make stays for a build tree
+# configured with it and for the package test's consumer project); the optional groups are
+# installed by the scripts that use them, so a CI run does not download a second compiler it never
+# calls.
 set -euo pipefail
 pkgs=(cmake make ninja-build g++ pkg-config libsystemc-dev googletest libgtest-dev libglm-dev libcli11-dev libtinyobjloader-dev libpng-dev nlohmann-json3-dev bsdextrautils libbenchmark-dev verilator yosys python3)
 for group in "$@"; do
