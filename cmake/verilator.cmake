@@ -292,9 +292,9 @@ function(shading_verilate_rtl target prefix)
   target_compile_options(${target} PRIVATE -Wno-unused-parameter)
   # Under the sanitizers only the project's own code is instrumented: Verilator's generated model
   # and its runtime are not ours, so they are compiled without -fsanitize and without debug
-  # information, which keeps the sanitizer build short. The harness that drives them (testbenches/rtl) keeps every
-  # check. (Instrumented, Verilator 5.006's VCD buffer also trips UBSan's alignment check:
-  # verilated_trace_imp.h stores 64-bit values at 4-byte alignment.)
+  # information, which keeps the sanitizer build short. The harness that drives them
+  # (testbenches/rtl) is instrumented like the rest. (Instrumented, Verilator 5.006's VCD buffer
+  # trips UBSan's alignment check: verilated_trace_imp.h stores 64-bit values at 4-byte alignment.)
   if(SHADING_SANITIZE)
     get_target_property(_sources ${target} SOURCES)
     foreach(_s IN LISTS _sources)
