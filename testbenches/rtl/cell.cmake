@@ -5,10 +5,7 @@
 # skipped, with the reason.
 set(SHADING_RTL_CELL_DIRS ${SHADING_RTL_DIR}/pipeline ${SHADING_RTL_DIR}/interp ${SHADING_RTL_DIR}/blocks
     ${SHADING_RTL_GENERATED})
-set(_cell_ydirs)
-foreach(_d IN LISTS SHADING_RTL_CELL_DIRS)
-  list(APPEND _cell_ydirs -y ${_d})
-endforeach()
+shading_rtl_ydirs(_cell_ydirs ${SHADING_RTL_CELL_DIRS})
 
 # Lint: the top, its parts, and the memory block at a depth that leaves addresses naming no word.
 foreach(_top cell_unit cell_channel cell_ctrl)
@@ -17,11 +14,8 @@ endforeach()
 shading_rtl_lint(blocks.ram -GDEPTH=64 --top-module ram ${SHADING_RTL_DIR}/blocks/ram.v)
 shading_rtl_lint(blocks.ram_partial -GDEPTH=48 --top-module ram ${SHADING_RTL_DIR}/blocks/ram.v)
 
-if(NOT SHADING_RTL)
-  shading_add_skipped(rtl.cosim.cell_unit test_rtl_cell_unit "${SHADING_RTL_SKIP_REASON}")
-  return()
-elseif(NOT SHADING_RTL_TRACE)
-  shading_add_skipped(rtl.cosim.cell_unit test_rtl_cell_unit "${SHADING_RTL_TRACE_SKIP_REASON}")
+shading_rtl_cosim_or_skip(_cosim rtl.cosim.cell_unit test_rtl_cell_unit)
+if(NOT _cosim)
   return()
 endif()
 

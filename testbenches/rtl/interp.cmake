@@ -3,10 +3,7 @@
 # co-simulated with the SystemC units through verilator --sc. Included by testbenches/rtl/CMakeLists.txt;
 # without Verilator (cmake/verilator.cmake) its tests are registered as skipped, with the reason.
 set(SHADING_RTL_INTERP_DIRS ${SHADING_RTL_DIR}/interp ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_GENERATED})
-set(_interp_ydirs)
-foreach(_d IN LISTS SHADING_RTL_INTERP_DIRS)
-  list(APPEND _interp_ydirs -y ${_d})
-endforeach()
+shading_rtl_ydirs(_interp_ydirs ${SHADING_RTL_INTERP_DIRS})
 # Lint: every variant under verilator --lint-only -Wall (a warning fails the test).
 foreach(_v IN ITEMS "c1sa;0;0" "c1ex;0;1" "c2sa;1;0" "c2ex;1;1")
   list(GET _v 0 _name)

@@ -4,10 +4,7 @@
 # testbenches/rtl/CMakeLists.txt; without Verilator or its SystemC trace file the co-simulation is
 # registered as skipped, with the reason.
 set(SHADING_RTL_MEM_DIRS ${SHADING_RTL_DIR}/pipeline ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_GENERATED})
-set(_mem_ydirs)
-foreach(_d IN LISTS SHADING_RTL_MEM_DIRS)
-  list(APPEND _mem_ydirs -y ${_d})
-endforeach()
+shading_rtl_ydirs(_mem_ydirs ${SHADING_RTL_MEM_DIRS})
 foreach(_size 64 512 1024)
   shading_rtl_lint(frame_buffer.${_size} -GWIDTH=${_size} -GHEIGHT=${_size} --top-module frame_buffer
                    ${SHADING_RTL_DIR}/pipeline/frame_buffer.v ${_mem_ydirs})
@@ -20,11 +17,8 @@ shading_rtl_lint(walker_store --top-module walker_store ${SHADING_RTL_DIR}/pipel
 shading_rtl_lint(frame_buffer.48x40 -GWIDTH=48 -GHEIGHT=40 --top-module frame_buffer
                  ${SHADING_RTL_DIR}/pipeline/frame_buffer.v ${_mem_ydirs})
 
-if(NOT SHADING_RTL)
-  shading_add_skipped(rtl.cosim.memories test_rtl_memories "${SHADING_RTL_SKIP_REASON}")
-  return()
-elseif(NOT SHADING_RTL_TRACE)
-  shading_add_skipped(rtl.cosim.memories test_rtl_memories "${SHADING_RTL_TRACE_SKIP_REASON}")
+shading_rtl_cosim_or_skip(_cosim rtl.cosim.memories test_rtl_memories)
+if(NOT _cosim)
   return()
 endif()
 

@@ -5,10 +5,7 @@
 # skipped, with the reason.
 set(SHADING_RTL_PIPELINE_DIRS ${SHADING_RTL_DIR}/pipeline ${SHADING_RTL_DIR}/interp ${SHADING_RTL_DIR}/sqmul
     ${SHADING_RTL_DIR}/blocks ${SHADING_RTL_GENERATED})
-set(_pipe_ydirs)
-foreach(_d IN LISTS SHADING_RTL_PIPELINE_DIRS)
-  list(APPEND _pipe_ydirs -y ${_d})
-endforeach()
+shading_rtl_ydirs(_pipe_ydirs ${SHADING_RTL_PIPELINE_DIRS})
 
 # The three co-simulated variants (name; EVAL; FD_M; SET; DIV; CARRY; SATURATE): every parameter
 # takes both its values in some variant (test_rtl_pipeline.cpp's table), each verilated model
@@ -60,17 +57,12 @@ foreach(_c IN LISTS _frame_cases)
   list(APPEND _frame_tests rtl.frame.${_name})
 endforeach()
 
-if(NOT SHADING_RTL)
-  shading_add_skipped(rtl.cosim.pipeline test_rtl_pipeline "${SHADING_RTL_SKIP_REASON}")
-  foreach(_t IN LISTS _frame_tests)
-    shading_add_skipped(${_t} render_pipeline_rtl "${SHADING_RTL_SKIP_REASON}")
-  endforeach()
-  return()
-elseif(NOT SHADING_RTL_TRACE)
-  shading_add_skipped(rtl.cosim.pipeline test_rtl_pipeline "${SHADING_RTL_TRACE_SKIP_REASON}")
-  foreach(_t IN LISTS _frame_tests)
-    shading_add_skipped(${_t} render_pipeline_rtl "${SHADING_RTL_TRACE_SKIP_REASON}")
-  endforeach()
+set(_skips rtl.cosim.pipeline test_rtl_pipeline)
+foreach(_t IN LISTS _frame_tests)
+  list(APPEND _skips ${_t} render_pipeline_rtl)
+endforeach()
+shading_rtl_cosim_or_skip(_cosim ${_skips})
+if(NOT _cosim)
   return()
 endif()
 
