@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/report_ids.h"
+#include "core/strobe_gate.h"
 #include "core/timed_block.h"
 
 namespace shading {
@@ -65,21 +66,10 @@ public:
     void on_write(std::function<void(uint64_t, uint64_t)> f) { sink_ = std::move(f); }
 
 private:
-    // Woken at rising edges only while `we` may be 1 (as frame_buffer's sampling): at an edge where it
-    // is 0 the process sleeps until `we` rises (just after some rising edge) and samples again from
-    // the next rising edge, so an idle memory costs no wake-up per clock. Every edge where `we` is 1
-    // is still seen.
+    // Woken at rising edges only while `we` may be 1 (core/strobe_gate.h): an idle memory costs no
+    // wake-up per clock.
     void on_clock() {
-        if (waiting_) {  // `we` has just risen: its first sampling edge is the next one
-            waiting_ = false;
-            next_trigger(clk.posedge_event());
-            return;
-        }
-        if (!we.read()) {
-            waiting_ = true;
-            next_trigger(we.posedge_event());
-            return;
-        }
+        if (!we_gate_.sample(clk, we)) return;
         const uint64_t a = wa.read().to_uint64();
         if (a >= mem_.size()) {
             overflow.write(true);
@@ -109,7 +99,7 @@ private:
     sc_core::sc_event written_;
     std::vector<uint64_t> mem_;
     std::size_t writes_ = 0;
-    bool waiting_ = false;
+    strobe_gate we_gate_;
     std::function<void(uint64_t, uint64_t)> sink_;
 };
 

@@ -19,6 +19,7 @@
 
 #include "blocks/ram.h"
 #include "core/report_ids.h"
+#include "core/strobe_gate.h"
 #include "formats/interp_formats.h"
 #include "formats/pipeline_formats.h"
 
@@ -98,19 +99,10 @@ private:
                      b.read().to_uint64());
     }
     // The frame check's flag and report, at the edges the RAM would have written. Woken at rising
-    // edges only while `valid` may be 1 (as the RAM's own port): a Horner pixel is valid one clock in
-    // six, no wake-up in the other five.
+    // edges only while `valid` may be 1 (core/strobe_gate.h, as the RAM's own port): a Horner pixel
+    // is valid one clock in six, no wake-up in the other five.
     void check() {
-        if (waiting_) {  // `valid` has just risen: its first sampling edge is the next one
-            waiting_ = false;
-            next_trigger(clk.posedge_event());
-            return;
-        }
-        if (!valid.read()) {
-            waiting_ = true;
-            next_trigger(valid.posedge_event());
-            return;
-        }
+        if (!valid_gate_.sample(clk, valid)) return;
         if (in_frame()) return;
         out_of_frame.write(true);
         std::ostringstream os;
@@ -129,7 +121,7 @@ private:
     unsigned width_, height_, x_bits_;
     std::vector<uint8_t> written_;
     std::size_t writes_ = 0;
-    bool waiting_ = false;
+    strobe_gate valid_gate_;
     std::function<void(unsigned, unsigned, const rgb&)> sink_;
 };
 
