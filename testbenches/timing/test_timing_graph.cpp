@@ -352,8 +352,11 @@ TEST(PipelinePhases, AHighPhaseTooShortForAPathBetweenUnitsIsReportedByTheTop) {
     EXPECT_EQ(top.dut.chk_clock.low_violations(), 0u);
     std::vector<timing::unit_phases> units;
     timing::collect(top, units);
-    for (const auto& u : units)
-        if (u.chk != &top.dut.chk_clock) EXPECT_EQ(u.chk->violations(), 0u) << u.unit;
+    for (const auto& u : units) {
+        if (u.chk != &top.dut.chk_clock) {
+            EXPECT_EQ(u.chk->violations(), 0u) << u.unit;
+        }
+    }
 }
 
 // And a period too short for a path between units: 2.7 + 3.4 ns gives every unit of the cell unit
@@ -367,8 +370,11 @@ TEST(PipelinePhases, APeriodTooShortForAPathBetweenUnitsIsReportedByTheTop) {
     EXPECT_GT(top.dut.chk_clock.low_violations(), 10u);  // a short period counts as a low violation
     std::vector<timing::unit_phases> units;
     timing::collect(top, units);
-    for (const auto& u : units)
-        if (u.chk != &top.dut.chk_clock) EXPECT_EQ(u.chk->violations(), 0u) << u.unit;
+    for (const auto& u : units) {
+        if (u.chk != &top.dut.chk_clock) {
+            EXPECT_EQ(u.chk->violations(), 0u) << u.unit;
+        }
+    }
 }
 
 // The cell unit's: its units' phases and, between them, the column coefficient unit into the
