@@ -8,7 +8,8 @@
 #   bench.<name>.inject (a mismatch forced with --inject-mismatch must make it exit 1; .inject256
 #   forces 256 in a short random run, the count that exited 0 when the status was the count).
 # shading_add_gtest(<name> SOURCES <files...> [LIBS <targets...>] [TIMEOUT <s>])
-#   A GoogleTest suite whose main() runs the tests inside sc_elab_and_sim (testbenches/common).
+#   A GoogleTest program whose main() runs the tests inside sc_elab_and_sim (testbenches/common): one
+#   per folder, its suites' files compiled as one unit (SHADING_UNITY_SUITES below).
 #   gtest_discover_tests registers every test as its own ctest entry, so each test that
 #   simulates gets its own process (SystemC allows one elaboration per process). Run one with
 #   `ctest --test-dir build -R <Suite.Test>` or `build/bin/<name> --gtest_filter=<Suite.Test>`.
@@ -109,6 +110,13 @@ function(shading_test_opt)
   endforeach()
 endfunction()
 
+# SHADING_UNITY_SUITES: a test program's files compiled as one unit (CMake's UNITY_BUILD), each file's
+# names in a namespace of its own. The suites instantiate the same SystemC modules, GoogleTest
+# fixtures and checkers, and g++ generated that code again in every file: the 13 interpolation suites
+# took 103 CPU s one by one and 20 as one unit, all the folders' suites 447 and 176 (docs/tests.md).
+# OFF compiles file by file (quicker to rebuild after editing one suite).
+option(SHADING_UNITY_SUITES "Compile each test program's files as one unit" ON)
+
 function(shading_add_gtest name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
   if(NOT ARG_TIMEOUT)
@@ -122,6 +130,10 @@ function(shading_add_gtest name)
   # After the build type's -O3 on the command line, so it wins (g++: the last -O counts).
   target_compile_options(${name} PRIVATE ${SHADING_GTEST_OPT})
   set_target_properties(${name} PROPERTIES SHADING_PCH_KIND gtest)
+  list(LENGTH ARG_SOURCES _n)
+  if(SHADING_UNITY_SUITES AND _n GREATER 1)
+    set_target_properties(${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
+  endif()
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60

@@ -16,6 +16,9 @@
 #include "line_kinks.h"
 #include "study_frame.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_cell_tree {
+
 namespace {
 
 using namespace shading;
@@ -227,3 +230,5 @@ TEST_F(CellTreeHead, FewerPointsThanOneLineAtATime) {
     EXPECT_LT(p.points(), f.points());
     EXPECT_LT(p.nmse(), 1e-5);
 }
+
+}  // namespace test_cell_tree

@@ -7,6 +7,9 @@
 #include "cell_tree.h"
 #include "study_frame.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_golden_cells_emulation {
+
 namespace {
 
 using namespace shading;
@@ -46,3 +49,5 @@ TEST_F(GoldenCellsHead, SameCellsAsTheEmulation) {
 }
 
 }  // namespace
+
+}  // namespace test_golden_cells_emulation

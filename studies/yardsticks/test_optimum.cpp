@@ -10,6 +10,9 @@
 #include "studies/yardsticks/optimum.h"
 #include "testbenches/pipeline/plan_test_fixtures.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_optimum {
+
 using namespace shading;
 using namespace shading::pipeline;
 using namespace shading::yardsticks;
@@ -388,3 +391,5 @@ TEST(PipelineOptimal, WalkingEdgesChangesOnlyTheCounts) {
     }
     EXPECT_EQ(b.geometry_stepped, walked);
 }
+
+}  // namespace test_optimum

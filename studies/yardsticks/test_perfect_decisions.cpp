@@ -4,6 +4,9 @@
 #include "studies/yardsticks/perfect_decisions.h"
 #include "testbenches/pipeline/plan_test_fixtures.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_perfect_decisions {
+
 using namespace shading;
 using namespace shading::pipeline;
 using namespace shading::yardsticks;
@@ -73,3 +76,5 @@ TEST(PipelinePlan, PerfectDecisionsAreRight) {
     c.length = length_policy::geometry;
     EXPECT_THROW(perfect_decisions_plan(f.r, f.k, patent, c), scene::scene_error);
 }
+
+}  // namespace test_perfect_decisions

@@ -16,6 +16,9 @@
 #include "blocks/synchroniser.h"
 #include "core/report_ids.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_blocks {
+
 using namespace shading;
 using sc_core::SC_NS;
 using sc_core::SC_PS;
@@ -297,3 +300,5 @@ TEST(Ram, WritesAtRisingEdgesReadsAtOnceAndFlagsADroppedWrite) {
     EXPECT_EQ(rd.read(), 0u) << "no word at 7: reads 0";
     EXPECT_EQ(tb::report_log::get().count(msg::input), 2u) << "the read beyond the words reported too";
 }
+
+}  // namespace test_blocks

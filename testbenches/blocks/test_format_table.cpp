@@ -19,6 +19,9 @@
 #include "formats/ua22802_formats.h"
 #include "formats/ua60553_formats.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_format_table {
+
 using namespace shading;
 
 namespace {
@@ -99,3 +102,5 @@ TEST(FormatTable, WrittenFormsByHand) {
     EXPECT_EQ(split_formats("Q11.7 / Q10.6 / Q0.12"), (std::vector<std::string>{"Q11.7", "Q10.6", "Q0.12"}));
     EXPECT_EQ(split_formats("Q8.8, Q9.8, Q10.8"), (std::vector<std::string>{"Q8.8", "Q9.8", "Q10.8"}));
 }
+
+}  // namespace test_format_table

@@ -8,6 +8,9 @@
 #include "core/report_ids.h"
 #include "blocks/rom.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rom {
+
 using namespace shading;
 using sc_core::SC_NS;
 using sc_core::sc_time;
@@ -64,3 +67,5 @@ TEST(Rom, AWordWiderThanTheBusIsAConfigurationError) {
     rom_bench b({1, 0x20});  // 0x20 needs 6 bits
     EXPECT_EQ(tb::report_log::get().count(msg::config), before + 1);
 }
+
+}  // namespace test_rom

@@ -14,6 +14,9 @@
 #include "blocks/shift_add_network.h"
 #include "blocks/shifter.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_blocks {
+
 using namespace shading;
 using sc_core::SC_NS;
 using sc_core::sc_start;
@@ -107,3 +110,5 @@ TEST(InterpBlocks, SubtractorFromInverterBankAndAdderWithCarryIn) {
     sc_start(20, SC_NS);
     EXPECT_EQ(diff.read(), sc_dt::sc_uint<32>(static_cast<uint32_t>(-65536)));
 }
+
+}  // namespace test_interp_blocks

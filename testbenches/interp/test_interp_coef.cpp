@@ -11,6 +11,9 @@
 #include "testbenches/interp/interp_coef_bench.h"
 #include "core/trace.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_coef {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::sc_time;
@@ -157,3 +160,5 @@ TEST(InterpCoefTiming, PhasesOneNanosecondLongerAreSilentAndBitExact) {
     EXPECT_EQ(report_log::get().count(msg::timing), 0u);
     for (std::size_t i = 1; i < s.size(); ++i) EXPECT_EQ(s[i].at - s[i - 1].at, ck.period());
 }
+
+}  // namespace test_interp_coef

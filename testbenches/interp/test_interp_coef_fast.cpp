@@ -14,6 +14,9 @@
 #include "interp/coef_unit_quad.h"
 #include "testbenches/interp/interp_bench_common.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_coef_fast {
+
 using namespace shading;
 using namespace shading::tb;
 using interp::div3_mode;
@@ -120,3 +123,5 @@ TEST(InterpCoefFast, SameAsBlockLevelAndGoldenAtEveryEdge) {
     EXPECT_EQ(bench.differences, 0u);
     EXPECT_EQ(bench.golden_differences, 0u);
 }
+
+}  // namespace test_interp_coef_fast

@@ -17,13 +17,14 @@
 #include "golden/interp_golden.h"
 #include "interp/coef_unit_cubic_partial_sum.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_coef_partial_sum {
+
 using namespace shading;
 using interp::div3_grouping;
 using interp::div3_mode;
 using interp::sample_set;
 using sc_core::sc_time;
-
-namespace {
 
 using samples = std::array<uint64_t, 4>;
 using golden_fn = std::function<interp::cubic_coefs(const samples&)>;
@@ -129,8 +130,6 @@ std::string param_name(const ::testing::TestParamInfo<unit_param>& info) {
            (info.param.div == div3_mode::shift_add ? "ShiftAdd" : "Exact");
 }
 
-}  // namespace
-
 TEST_P(InterpCoefPartialSumUnit, BitExactAgainstItsGoldenModel) {
     const auto p = GetParam();
     with_unit_bench(p, sample_sets(400, 41), golden_of(p.set, p.div, div3_grouping::partial_sum), [](auto& bench) {
@@ -176,3 +175,5 @@ TEST_P(InterpCoefPartialSumUnit, HandWorkedFlatLine) {
         EXPECT_EQ(bench.results()[0], want);
     });
 }
+
+}  // namespace test_interp_coef_partial_sum

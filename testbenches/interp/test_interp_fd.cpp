@@ -11,6 +11,9 @@
 #include "testbenches/interp/interp_fd_bench.h"
 #include "core/trace.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_fd {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::sc_time;
@@ -174,3 +177,5 @@ TEST(InterpFdTiming, PhasesOneNanosecondLongerAreSilentAndBitExact) {
     EXPECT_EQ(report_log::get().count(msg::timing), 0u);
     EXPECT_DOUBLE_EQ(bench.checker.cycles_per_pixel(), 1.0);
 }
+
+}  // namespace test_interp_fd

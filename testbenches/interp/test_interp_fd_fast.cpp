@@ -11,6 +11,9 @@
 #include "testbenches/common/sim_guard.h"
 #include "testbenches/interp/interp_fd_bench.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_fd_fast {
+
 using namespace shading;
 using namespace shading::tb;
 
@@ -135,3 +138,5 @@ TEST(InterpFdFastPins, ComparatorCatchesDifferences) {
     EXPECT_EQ(bench.cmp.differences(), 3u);
     EXPECT_EQ(bench.cmp.counted(), 7u);
 }
+
+}  // namespace test_interp_fd_fast

@@ -11,6 +11,9 @@
 #include "core/trace.h"
 #include "testbenches/interp/interp_fd_var_bench.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_fd_var {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::sc_time;
@@ -192,3 +195,5 @@ TEST(InterpFdVar, VcdNamesTheSetupOfEveryLength) {
         EXPECT_TRUE(has(net)) << net;
     EXPECT_FALSE(has("init_d1_m6")) << "no set-up for a length the unit is not built for";
 }
+
+}  // namespace test_interp_fd_var

@@ -9,6 +9,9 @@
 #include "golden/interp_golden.h"
 #include "reference/interp_reference.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_golden {
+
 using namespace shading;
 using namespace shading::interp;
 
@@ -258,3 +261,5 @@ TEST(InterpFdGolden, ReducedFractionBitsStayWithinTheDerivedBound) {
     }
     EXPECT_EQ(fd_error_bound(nn, m, fd_fmt.frac), 0.0);
 }
+
+}  // namespace test_interp_golden

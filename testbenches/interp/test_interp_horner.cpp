@@ -10,6 +10,9 @@
 #include "testbenches/interp/interp_horner_bench.h"
 #include "core/trace.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_horner {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::sc_time;
@@ -181,3 +184,5 @@ TEST(InterpHornerTiming, PhasesOneNanosecondLongerAreSilentAndBitExact) {
     EXPECT_EQ(report_log::get().count(msg::timing), 0u);
     for (const auto& x : bench.checker.samples()) EXPECT_EQ(x.valid - x.accepted, 6 * sc_time(6800, sc_core::SC_PS));
 }
+
+}  // namespace test_interp_horner

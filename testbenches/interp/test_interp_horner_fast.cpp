@@ -12,6 +12,9 @@
 #include "testbenches/common/sim_guard.h"
 #include "testbenches/interp/interp_horner_bench.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_horner_fast {
+
 using namespace shading;
 using namespace shading::tb;
 
@@ -106,3 +109,5 @@ TEST(InterpHornerFast, CheckerCatchesOneWrongResult) {
     EXPECT_TRUE(tb::run_to_completion(bench, limit));
     EXPECT_EQ(bench.checker.mismatches(), 1u);
 }
+
+}  // namespace test_interp_horner_fast

@@ -14,6 +14,9 @@
 #include "testbenches/interp/interp_line_bench.h"
 #include "core/trace.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_line {
+
 using namespace shading;
 using namespace shading::tb;
 using interp::div3_mode;
@@ -294,3 +297,5 @@ TEST(InterpLineTiming, PhasesOneNanosecondLongerAreSilentAndBitExact) {
     EXPECT_EQ(report_log::get().count(msg::timing), 0u);
     EXPECT_EQ(bench.checker.samples().back().valid - bench.stim.presented().front(), 101.0 * ck.period());
 }
+
+}  // namespace test_interp_line

@@ -11,6 +11,9 @@
 #include "testbenches/common/sim_guard.h"
 #include "testbenches/interp/interp_line_bench.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_line_fast {
+
 using namespace shading;
 using namespace shading::tb;
 using interp::div3_mode;
@@ -76,3 +79,5 @@ TEST(InterpLineFast, BackToBackCase1ShiftAdd) { run_alone<5, sample_set::case1, 
 TEST(InterpLineFast, WithGapsCase2Exact) { run_alone<3, sample_set::case2, div3_mode::exact>(5000, 72, 2); }
 TEST(InterpLineFastPins, SameAsBlockLevelBackToBack) { run_pair<4, sample_set::case1, div3_mode::exact>(3000, 73, 0); }
 TEST(InterpLineFastPins, SameAsBlockLevelWithGaps) { run_pair<2, sample_set::case2, div3_mode::shift_add>(2000, 74, 3); }
+
+}  // namespace test_interp_line_fast

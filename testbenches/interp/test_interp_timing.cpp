@@ -17,6 +17,9 @@
 #include "interp/horner_unit.h"
 #include "interp/interp_line_unit.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_interp_timing {
+
 using namespace shading;
 using interp::div3_grouping;
 using interp::div3_mode;
@@ -245,3 +248,5 @@ TEST(InterpTiming, ASlowerBlockMovesTheRequirements) {
     EXPECT_EQ(f_adder.dut.min_low(), sc_time(1200, SC_PS));
     EXPECT_EQ(line.dut.sample_to_load().delay, sc_time(10100, SC_PS));  // 9.6 + 0.5 (fd.mx_d1)
 }
+
+}  // namespace test_interp_timing

@@ -1,5 +1,5 @@
 # The SystemC shading pipeline (modules/pipeline/): simulate_frame() for the render program and the
-# tests (pipeline_sim.h), and its GoogleTest suite (one elaboration per test process).
+# tests (pipeline_sim.h; the suites are in CMakeLists.txt).
 if(TARGET shading_pipeline)
   add_library(shading_pipeline_sim STATIC ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim.cpp
               ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_horner.cpp ${CMAKE_CURRENT_SOURCE_DIR}/pipeline_sim_fd.cpp
@@ -7,18 +7,6 @@ if(TARGET shading_pipeline)
   target_link_libraries(shading_pipeline_sim PUBLIC shading_pipeline shading_modules shading_ua22802 shading_tb_common)
 endif()
 if(TARGET shading_pipeline_sim)
-  shading_add_gtest(test_pipeline_sim SOURCES test_pipeline_sim.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
-  # The fast pin-level pipeline: side by side with the block level (every pin at every edge, random
-  # jobs, every evaluator and device), and small renders against the golden frame.
-  shading_add_gtest(test_pipeline_fast SOURCES test_pipeline_fast.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
-endif()
-# The cell unit (modules/pipeline/cell_unit.h) against the golden cells (src/golden_pipeline/cells.h),
-# and with the pipeline taking the rest, the scheme's whole frame.
-if(TARGET shading_pipeline_sim)
-  shading_add_gtest(test_cell_unit SOURCES test_cell_unit.cpp LIBS shading_pipeline_sim shading_pipeline TIMEOUT 300)
-  # The cells' geometry-side stores (modules/pipeline/cell_stores.h): their capacities the worst case of
-  # our scenes' cell plans, a replay of the geometry side's writes on each, and too small a capacity flagged.
-  shading_add_gtest(test_cell_stores SOURCES test_cell_stores.cpp LIBS shading_pipeline TIMEOUT 300)
   # The cells rendered in SystemC (render_cells.cpp): exit 0 when the frame is the golden one.
   add_executable(render_cells ${CMAKE_CURRENT_SOURCE_DIR}/render_cells.cpp)
   target_link_libraries(render_cells PRIVATE shading_pipeline_sim shading_pipeline shading_options

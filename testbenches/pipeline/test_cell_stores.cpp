@@ -23,9 +23,10 @@
 #include "testbenches/pipeline/cell_store_replay.h"
 #include "testbenches/scene/test_obj.h"
 
-using namespace shading;
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_cell_stores {
 
-namespace {
+using namespace shading;
 
 // A scene of ours at a size, its cell plan with the race's frozen configuration, what its stores need.
 struct planned {
@@ -71,8 +72,6 @@ tb::cell_store_replay& replay(const planned& pl, unsigned slots, unsigned lines)
     EXPECT_TRUE(tb::run_to_completion(*b, sc_core::sc_time(20.0 * double(ops + 100), sc_core::SC_NS)));
     return *b;
 }
-
-}  // namespace
 
 // The format header's capacities against the plans: the most live triangles over our scenes is the
 // figure cell_store_formats.h states (1492, the cluster at 1024) and fits its 2^11 slots but not
@@ -153,3 +152,5 @@ TEST(CellStoresOverflow, TooFewBandLinesFlagAndReport) {
     EXPECT_FALSE(b.wp.overflow.read());
     EXPECT_EQ(b.walker_counts.mismatches, 0u);
 }
+
+}  // namespace test_cell_stores

@@ -22,6 +22,9 @@
 #include "testbenches/common/sim_guard.h"
 #include "testbenches/common/vcd_names.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_cell_unit {
+
 namespace {
 
 using namespace shading;
@@ -220,3 +223,5 @@ TEST(CellUnitView, GtkwaveViewMatchesItsVcd) {
 }
 
 }  // namespace
+
+}  // namespace test_cell_unit

@@ -17,6 +17,9 @@
 #include "golden_pipeline/frame_setup.h"
 #include "flat_square.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_golden_cells {
+
 namespace {
 
 using namespace shading;
@@ -367,3 +370,5 @@ TEST(GoldenCells, BadInputRefused) {
 }
 
 }  // namespace
+
+}  // namespace test_golden_cells

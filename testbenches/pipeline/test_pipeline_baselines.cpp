@@ -13,6 +13,9 @@
 #include "scene/scanline.h"
 #include "scene/scene.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_baselines {
+
 using namespace shading;
 using namespace shading::pipeline;
 
@@ -257,3 +260,5 @@ TEST(PipelineGeometryPolicy, DegreeCubicInTheHighlight) {
     EXPECT_GT(quad, 0u);
     EXPECT_EQ(p.check_samples, 0u);
 }
+
+}  // namespace test_pipeline_baselines

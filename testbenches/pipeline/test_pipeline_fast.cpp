@@ -33,6 +33,9 @@
 #include "sqmul/sqmul_device.h"
 #include "squared/squared_device.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_fast {
+
 using namespace shading;
 using namespace shading::pipeline;
 
@@ -217,3 +220,5 @@ INSTANTIATE_TEST_SUITE_P(
     render_case_name);
 
 }  // namespace
+
+}  // namespace test_pipeline_fast

@@ -15,6 +15,9 @@
 
 #include "golden_test_fixtures.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_frame {
+
 using namespace shading;
 using namespace shading::pipeline;
 using namespace golden_test;
@@ -364,3 +367,5 @@ TEST(PipelineOps, CarriedSamplesAreNotFormedAgain) {
     EXPECT_EQ(h.interpolation, plain.interpolation);
     EXPECT_EQ(h.geometry, plain.geometry);
 }
+
+}  // namespace test_pipeline_frame

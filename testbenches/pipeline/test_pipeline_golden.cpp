@@ -16,6 +16,9 @@
 
 #include "golden_test_fixtures.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_golden {
+
 using namespace shading;
 using namespace shading::pipeline;
 using namespace golden_test;
@@ -313,3 +316,5 @@ TEST(PipelineInterval, RejectsInvalidJobs) {
     bad(0, 2, false);                 // exact pixel of 2
     bad(0, 1, true);                  // exact pixel as a quadratic
 }
+
+}  // namespace test_pipeline_golden

@@ -4,6 +4,9 @@
 // check points. Fixtures in plan_test_fixtures.h. No simulation here: these tests may share a process.
 #include "plan_test_fixtures.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_plan {
+
 using namespace shading;
 using namespace shading::pipeline;
 using namespace plan_test;
@@ -585,3 +588,5 @@ TEST(PipelinePlan, Case2SamplePoints) {
     EXPECT_GT(quad, 0u);
     EXPECT_GT(cubic, 0u);
 }
+
+}  // namespace test_pipeline_plan

@@ -4,6 +4,9 @@
 // Fixtures in plan_test_fixtures.h. No simulation here: these tests may share a process.
 #include "plan_test_fixtures.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_refine {
+
 using namespace shading;
 using namespace shading::pipeline;
 using namespace plan_test;
@@ -222,3 +225,5 @@ TEST(PipelinePlan, LitGuardJumpsNoLitPixel) {
             EXPECT_GT(guarded.decision.mul, free.decision.mul);
         }
 }
+
+}  // namespace test_pipeline_refine

@@ -19,6 +19,13 @@
 #include "pipeline_sim.h"
 #include "pipeline_test.h"
 
+namespace shading::pipeline {
+void PrintTo(evaluator e, std::ostream* os) { *os << evaluator_name(e); }
+}  // namespace shading::pipeline
+
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_sim {
+
 using namespace shading;
 using namespace shading::pipeline;
 
@@ -224,10 +231,6 @@ TEST_P(PipelineSimFdLength, EveryLengthOfItsM) {
     expect_golden_frame(r, p, k, patent, c);
 }
 INSTANTIATE_TEST_SUITE_P(M, PipelineSimFdLength, ::testing::Values(2u, 3u, 4u, 5u));
-
-namespace shading::pipeline {
-void PrintTo(evaluator e, std::ostream* os) { *os << evaluator_name(e); }
-}  // namespace shading::pipeline
 
 // Samples that saturate the colour adder (ambient + diffuse + specular > 255.996) and the output
 // clamp (the cubic overshoots above 0xFFFF and below 0 between bright and dark samples).
@@ -514,3 +517,5 @@ TEST(PipelineSimView, GtkwaveViewMatchesItsVcd) {
                                             {"tb.px_valid", "tb.px_x", "tb.px_y", "tb.px_r", "tb.px_g", "tb.px_b"});
     EXPECT_TRUE(problems.empty()) << tb::joined(problems);
 }
+
+}  // namespace test_pipeline_sim

@@ -2,6 +2,9 @@
 // zones policy and every policy on the head. No simulation here: these tests may share a process.
 #include "plan_test_fixtures.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_pipeline_zones {
+
 using namespace shading;
 using namespace shading::pipeline;
 using namespace plan_test;
@@ -149,3 +152,5 @@ TEST(PipelinePlan, HeadWithEveryPolicy) {
             expect_valid_plan(f.r, p, c);
         }
 }
+
+}  // namespace test_pipeline_zones

@@ -22,6 +22,9 @@
 #include "testbenches/scene/test_obj.h"
 #include "testbenches/scene/tiny_scenes.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_race {
+
 namespace {
 
 using namespace shading;
@@ -298,3 +301,5 @@ TEST(TestObj, NormalsAgreeWithTheFaces) {
 }
 
 }  // namespace
+
+}  // namespace test_race

@@ -14,15 +14,16 @@ endforeach()
 shading_rtl_lint(blocks.ram -GDEPTH=64 --top-module ram ${SHADING_RTL_DIR}/blocks/ram.v)
 shading_rtl_lint(blocks.ram_partial -GDEPTH=48 --top-module ram ${SHADING_RTL_DIR}/blocks/ram.v)
 
-shading_rtl_cosim_or_skip(_cosim rtl.cosim.cell_unit test_rtl_cell_unit)
+shading_rtl_cosim_or_skip(_cosim rtl.cosim.cell_unit test_rtl)
 if(NOT _cosim)
   return()
 endif()
 
-shading_add_gtest(test_rtl_cell_unit SOURCES test_rtl_cell_unit.cpp LIBS shading_pipeline_sim shading_pipeline
-                  TIMEOUT 300)
+# The suite, in test_rtl (CMakeLists.txt).
+target_sources(test_rtl PRIVATE test_rtl_cell_unit.cpp)
+target_link_libraries(test_rtl PRIVATE shading_pipeline_sim shading_pipeline)
 # The largest verilated model (its C++ took 44 CPU s at -O1, 35 at -Og in the build, the mean of two
 # back-to-back compiles on the shared machine; -O0 made its tests run 3.3 times as long, -Og 1.2
 # times, about 0.4 CPU s): -Og, like the suites.
-shading_verilate_rtl(test_rtl_cell_unit Vrtl_cell_unit TOP cell_unit SOURCE ${SHADING_RTL_DIR}/pipeline/cell_unit.v
+shading_verilate_rtl(test_rtl Vrtl_cell_unit TOP cell_unit SOURCE ${SHADING_RTL_DIR}/pipeline/cell_unit.v
                      DIRS ${SHADING_RTL_CELL_DIRS} OPT "${SHADING_TEST_OPT_FLAGS}")

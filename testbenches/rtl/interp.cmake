@@ -20,7 +20,7 @@ endforeach()
 shading_rtl_lint(fd_eval_var --top-module fd_eval_var ${SHADING_RTL_DIR}/interp/fd_eval_var.v ${_interp_ydirs})
 if(NOT SHADING_RTL)
   shading_add_skipped(rtl.cosim.interp test_rtl_interp "${SHADING_RTL_SKIP_REASON}")
-  shading_add_skipped(rtl.cosim.fd test_rtl_fd "${SHADING_RTL_SKIP_REASON}")
+  shading_add_skipped(rtl.cosim.fd test_rtl_interp "${SHADING_RTL_SKIP_REASON}")
   shading_add_skipped(synth.smoke synth "the synthesis flow reads RTL generated with the RTL targets: ${SHADING_RTL_SKIP_REASON}")
   return()
 endif()
@@ -69,8 +69,10 @@ function(shading_verilate_interp target prefix top)
   shading_verilated_finish(${target} ${prefix})  # cmake/verilator.cmake: the runtime once, the model as one unit
 endfunction()
 
-# The co-simulation suite: the RTL coefficient unit (4 variants) and Horner unit beside ours.
-shading_add_gtest(test_rtl_interp SOURCES test_rtl_interp.cpp TIMEOUT 300)  # 3-6 s each idle; x3-5 under sanitizers
+# The co-simulation suites, one program: the RTL coefficient unit (4 variants) and Horner unit beside
+# ours (test_rtl_interp.cpp: 3-6 s a test idle, x3-5 under sanitizers), and the forward-difference
+# evaluators' (test_rtl_fd.cpp, below).
+shading_add_gtest(test_rtl_interp SOURCES test_rtl_interp.cpp test_rtl_fd.cpp TIMEOUT 300)
 target_link_libraries(test_rtl_interp PRIVATE Threads::Threads)
 shading_verilate_interp(test_rtl_interp Vrtl_coef_c1sa coef_unit_cubic -GSET=0 -GDIV=0)
 shading_verilate_interp(test_rtl_interp Vrtl_coef_c1ex coef_unit_cubic -GSET=0 -GDIV=1)
@@ -79,12 +81,10 @@ shading_verilate_interp(test_rtl_interp Vrtl_coef_c2ex coef_unit_cubic -GSET=1 -
 shading_verilate_interp(test_rtl_interp Vrtl_horner_unit horner_unit)
 
 # The forward-difference evaluators' RTL beside ours: fd_eval at every M, fd_eval_var for m in 2..6.
-shading_add_gtest(test_rtl_fd SOURCES test_rtl_fd.cpp TIMEOUT 120)
-target_link_libraries(test_rtl_fd PRIVATE Threads::Threads)
 foreach(_m 2 3 4 5 6)
-  shading_verilate_interp(test_rtl_fd Vrtl_fd_eval_m${_m} fd_eval -GM=${_m})
+  shading_verilate_interp(test_rtl_interp Vrtl_fd_eval_m${_m} fd_eval -GM=${_m})
 endforeach()
-shading_verilate_interp(test_rtl_fd Vrtl_fd_eval_var fd_eval_var)
+shading_verilate_interp(test_rtl_interp Vrtl_fd_eval_var fd_eval_var)
 
 # Synthesis smoke test (scripts/synth.sh, docs/synthesis.md): the flow runs on the
 # smallest unit (UA 60553's generator), and yosys, reading the generated ROM case tables as memories,

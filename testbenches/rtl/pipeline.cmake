@@ -57,7 +57,7 @@ foreach(_c IN LISTS _frame_cases)
   list(APPEND _frame_tests rtl.frame.${_name})
 endforeach()
 
-set(_skips rtl.cosim.pipeline test_rtl_pipeline)
+set(_skips rtl.cosim.pipeline test_rtl)
 foreach(_t IN LISTS _frame_tests)
   list(APPEND _skips ${_t} render_pipeline_rtl)
 endforeach()
@@ -80,11 +80,10 @@ endforeach()
 target_compile_definitions(shading_rtl_pipeline_models PUBLIC VM_COVERAGE=0 VM_SC=1 VM_TRACE=1 VM_TRACE_FST=0
                            VM_TRACE_VCD=1)
 
-shading_add_gtest(test_rtl_pipeline SOURCES test_rtl_pipeline.cpp LIBS shading_pipeline shading_pipeline_sim
-                  shading_rtl_pipeline_models TIMEOUT 300)
-# The head's planned frame (AnotherSampleSetIsSeenOnAFrame): the scan in this tree's data/head/.
-target_compile_definitions(test_rtl_pipeline PRIVATE SHADING_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-target_compile_options(test_rtl_pipeline PRIVATE -Wno-unused-parameter)  # Verilator's headers
+# The suite, in test_rtl (CMakeLists.txt). The head's planned frame (AnotherSampleSetIsSeenOnAFrame)
+# reads the scan in this tree's data/head/ (SHADING_SOURCE_DIR, as every suite).
+target_sources(test_rtl PRIVATE test_rtl_pipeline.cpp)
+target_link_libraries(test_rtl PRIVATE shading_pipeline shading_pipeline_sim shading_rtl_pipeline_models)
 
 # render_pipeline_rtl: render_pipeline's scene options and setup (shading_render, which needs
 # nlohmann-json), the three variants verilated into it.

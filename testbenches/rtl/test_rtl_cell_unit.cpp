@@ -33,6 +33,9 @@
 // The verilated cell unit (testbenches/rtl/cell.cmake).
 #include "Vrtl_cell_unit.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_cell_unit {
+
 using namespace shading;
 using tb::cell_input;
 
@@ -261,3 +264,5 @@ TEST(RtlCellUnitVerdict, MiswiredLatticePinIsSeen) {
     EXPECT_EQ(b.chk_b.mismatches(), 0u);  // the model against the golden model
     EXPECT_GT(b.chk_o.mismatches(), 10u);  // the RTL against it
 }
+
+}  // namespace test_rtl_cell_unit

@@ -18,6 +18,9 @@
 #include "testbenches/common/sim_guard.h"
 #include "testbenches/rtl/rtl_fd_cosim.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_fd {
+
 using namespace shading;
 using namespace shading::tb;
 
@@ -127,3 +130,5 @@ TEST(RtlFdEval, ComparisonCatchesAWrongGolden) {
     EXPECT_EQ(b.edge_mismatches, 0u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 1u);
 }
+
+}  // namespace test_rtl_fd

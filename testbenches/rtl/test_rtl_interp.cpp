@@ -18,6 +18,9 @@
 #include "testbenches/interp/interp_line.h"
 #include "testbenches/rtl/rtl_interp_cosim.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_interp {
+
 using namespace shading;
 using namespace shading::tb;
 using interp::div3_mode;
@@ -148,3 +151,5 @@ TEST(RtlHorner, ComparisonCatchesAWrongGolden) {
     EXPECT_EQ(b.counts.rtl_vs_ours, 0u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 1u);
 }
+
+}  // namespace test_rtl_interp

@@ -35,6 +35,9 @@
 #include "scene/scanline.h"
 #include "testbenches/pipeline/cell_store_replay.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_memories {
+
 using namespace shading;
 
 namespace {
@@ -283,3 +286,5 @@ TEST(RtlCellStores, HeadAt512ReplayEveryWordBack) {
     EXPECT_EQ(b->band_counts.mismatches + b->band_counts.mismatches_o, 0u);
     for (const auto* of : {&b->wp.overflow, &b->wp.overflow_o, &b->bp.overflow, &b->bp.overflow_o}) EXPECT_FALSE(of->read());
 }
+
+}  // namespace test_rtl_memories

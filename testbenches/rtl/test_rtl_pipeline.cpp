@@ -33,10 +33,11 @@
 #include "verilated.h"
 #include "verilated_vcd_sc.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_pipeline {
+
 using namespace shading;
 using namespace shading::pipeline;
-
-namespace {
 
 using namespace shading::pipeline::rtl_variants;
 
@@ -132,8 +133,6 @@ void PrintTo(const rtl_case& c, std::ostream* os) { *os << c.name; }
 
 class RtlPipeline : public ::testing::TestWithParam<rtl_case> {};
 
-}  // namespace
-
 TEST_P(RtlPipeline, SameAsModelAtEveryEdge) {
     const rtl_case rc = GetParam();
     rc.run(rc.seed, rc.kind);
@@ -187,3 +186,5 @@ TEST(RtlPipelineVerdict, AnotherSampleSetIsSeenOnAFrame) {
     EXPECT_GT(bench->chk_o.mismatches(), 10u);  // the RTL against the model's
     bench.release();  // elaborated for the process's life
 }
+
+}  // namespace test_rtl_pipeline

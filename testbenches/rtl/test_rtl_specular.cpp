@@ -34,6 +34,9 @@
 #include "Vrtl_ua60553_saturate.h"
 #include "Vrtl_ua60553_wrap.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_specular {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -256,3 +259,5 @@ TEST(RtlCosimView, BothTracesAndTheirViewsReadAtFirstSight) {
     EXPECT_TRUE(problems.empty()) << "traces/rtl_cosim_rtl.gtkw:" << joined(problems);
     EXPECT_GE(gtkw_read(view).traces.size(), 20u);
 }
+
+}  // namespace test_rtl_specular

@@ -29,6 +29,9 @@
 #include "Vrtl_sqmul_saturate.h"
 #include "Vrtl_sqmul_wrap.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_sqmul {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -248,3 +251,5 @@ TEST(RtlSqmulCheck, AnRtlThatDiffersFromGoldenIsCaught) {
     EXPECT_EQ(bench.cross_mismatches(), 0u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
 }
+
+}  // namespace test_rtl_sqmul

@@ -27,12 +27,13 @@
 #include "Vrtl_squared_saturate.h"
 #include "Vrtl_squared_wrap.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_squared {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
 using sc_core::sc_time;
-
-namespace {
 
 template <typename T>
 class RtlSquared : public ::testing::Test {
@@ -107,8 +108,6 @@ protected:
 
 using variants = ::testing::Types<squared_variant<Vrtl_squared_saturate, overflow_mode::saturate>,
                                   squared_variant<Vrtl_squared_wrap, overflow_mode::wrap>>;
-
-}  // namespace
 
 TYPED_TEST_SUITE(RtlSquared, variants, squared_variant_names);
 
@@ -222,3 +221,5 @@ TEST(RtlSquaredCheck, AnRtlThatDiffersFromGoldenIsCaught) {
     EXPECT_EQ(bench.cross_mismatches(), 0u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
 }
+
+}  // namespace test_rtl_squared

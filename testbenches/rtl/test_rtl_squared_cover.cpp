@@ -32,12 +32,13 @@
 #include "Vrtl_squared_saturate.h"
 #include "Vrtl_squared_wrap.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_squared_cover {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
 using sc_core::sc_time;
-
-namespace {
 
 // The co-simulation bench driven by the restart stimulus, which reads the model's output 29.
 template <typename Rtl, typename ModelMonitor = specular_monitor>
@@ -150,8 +151,6 @@ private:
     bool pending_ = false;
 };
 
-}  // namespace
-
 TYPED_TEST_SUITE(RtlSquaredCover, variants, squared_variant_names);
 
 // Every n 0..1023, the restart plan of squared_restart_tb.h: per n 15 strobes, 7 of them dropping
@@ -205,3 +204,5 @@ TEST(RtlSquaredCoverCheck, AMonitorThatMissesARestartIsCaught) {
     EXPECT_EQ(bench.cross_mismatches(), 1u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 2u);
 }
+
+}  // namespace test_rtl_squared_cover

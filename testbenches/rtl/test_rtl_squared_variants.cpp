@@ -32,12 +32,13 @@
 #include "Vrtl_sqmul_saturate.h"
 #include "Vrtl_squared_series_saturate.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_rtl_squared_variants {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
 using sc_core::sc_time;
-
-namespace {
 
 constexpr auto sat = overflow_mode::saturate;
 
@@ -127,8 +128,6 @@ class RtlSquaredVariants : public ::testing::Test {
 protected:
     void SetUp() override { Verilated::traceEverOn(true); }
 };
-
-}  // namespace
 
 // The series variant: Fig. 3's strobe timing (20 ns per pixel), no clock.
 TEST_F(RtlSquaredVariants, SeriesRandom) {
@@ -264,3 +263,5 @@ TEST_F(RtlSquaredVariants, TheR2lQ116RtlIsNotTheQ118One) {
     report_log::get().expect(msg::mismatch);
     EXPECT_EQ(run_rtl<Vrtl_sqmul_r2l_p16>(near_one_at_n1000(), 64, sqmul_timing(), sqmul_r2l_golden()), 64u);
 }
+
+}  // namespace test_rtl_squared_variants

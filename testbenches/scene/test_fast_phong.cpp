@@ -15,6 +15,9 @@
 #include "scene/scene.h"
 #include "scene/shade.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_fast_phong {
+
 using namespace shading::scene;
 
 namespace {
@@ -434,3 +437,5 @@ TEST(FastPhong, BadConfigThrows) {
     expect_config_error(c, "max_depth");
     EXPECT_THROW(make_power_table(20, 0, nullptr), scene_error);
 }
+
+}  // namespace test_fast_phong

@@ -18,6 +18,9 @@
 #include "scene/shade.h"
 #include "tiny_scenes.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_peers_gl {
+
 using namespace shading::scene;
 using shading::scene::tiny::counts;
 using shading::scene::tiny::one_triangle;
@@ -347,3 +350,5 @@ TEST(Peers, HeadEveryCoveredPixelAndCounts) {
                 double(l.total().long_ops()) / P, double(p.total().long_ops()) / P);
     EXPECT_LT(dl.nmse, dg.nmse);
 }
+
+}  // namespace test_peers_gl

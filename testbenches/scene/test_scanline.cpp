@@ -14,6 +14,9 @@
 #include "scene/shade.h"
 #include "tiny_scenes.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_scanline {
+
 using namespace shading::scene;
 using shading::scene::tiny::counts;
 using shading::scene::tiny::one_triangle;
@@ -312,3 +315,5 @@ TEST(ScanlineEdgeWalk, HeadImageEqualsPerPixelPhong) {
               54 * steps.triangle_setups + 14 * (steps.run_starts - steps.walked_starts) + 27 * steps.points);
     EXPECT_EQ(steps.run_starts - steps.walked_starts, steps.triangle_setups);  // one evaluated start a triangle
 }
+
+}  // namespace test_scanline

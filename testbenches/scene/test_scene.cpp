@@ -18,6 +18,9 @@
 #include "scene/scene.h"
 #include "scene/shade.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_scene {
+
 using namespace shading;
 using namespace shading::scene;
 
@@ -506,3 +509,5 @@ TEST(SceneRaster, UncountedGeometrySameValues) {
     EXPECT_EQ(dot(a.n, a.h[0]).value(), dot(b.n, b.h[0]).value());
     EXPECT_EQ(dot(a.n, a.l[0]).value(), dot(b.n, b.l[0]).value());
 }
+
+}  // namespace test_scene

@@ -10,6 +10,9 @@
 
 #include "scene/image.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_scene_images {
+
 using namespace shading;
 using namespace shading::scene;
 
@@ -106,3 +109,5 @@ TEST(SceneImage, StackedAndLegend) {
 }
 
 // Uncounted geometry (ops = nullptr) gives the same values as counted geometry.
+
+}  // namespace test_scene_images

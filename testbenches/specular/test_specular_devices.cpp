@@ -15,6 +15,9 @@
 #include "testbenches/specular/device_traits.h"
 #include "testbenches/specular/specular_tb.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_specular_devices {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -169,3 +172,5 @@ TYPED_TEST(SpecularDevice, CheckerCatchesAnotherDevicesGoldenModel) {
     EXPECT_EQ(bench.checker.mismatches(), 3u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 3u);
 }
+
+}  // namespace test_specular_devices

@@ -17,13 +17,14 @@
 #include "testbenches/specular/device_traits.h"
 #include "testbenches/specular/specular_tb.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_specular_fast {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
 using sc_core::SC_NS;
 using sc_core::sc_time;
-
-namespace {
 
 // Records the instants at which a model's outputs 25-27 change (one entry per time step).
 class change_recorder : public sc_core::sc_module {
@@ -169,8 +170,6 @@ void random_differential(overflow_mode mode) {
     EXPECT_LT(tb.fst_rec.at.size(), tb.blk_rec.at.size());
 }
 
-}  // namespace
-
 TYPED_TEST_SUITE(SpecularFast, devices, device_names);
 
 TYPED_TEST(SpecularFast, RandomSaturateMatchesBlockLevelAndGolden) { random_differential<TypeParam>(overflow_mode::saturate); }
@@ -217,3 +216,5 @@ TYPED_TEST(SpecularFast, OutOfRangeInputsAndShortStrobesReportedAsTheBlockLevel)
     EXPECT_GE(tb.fst.timing_violations(), 7u);
     EXPECT_EQ(tb.fst.timing_violations(), tb.blk.chk_timing.violations());
 }
+
+}  // namespace test_specular_fast

@@ -26,6 +26,9 @@
 #include "sqmul/sqmul_count.h"
 #include "sqmul/sqmul_device.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_sqmul_device {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -516,3 +519,5 @@ TEST(SqmulTrace, GtkwaveViewReadsAtFirstSight) {
                                          "tb.out27_b", "tb.dut.p_brdf", "tb.dut.stage.mx_p_sel"});
     EXPECT_TRUE(problems.empty()) << joined(problems);
 }
+
+}  // namespace test_sqmul_device

@@ -18,6 +18,9 @@
 #include "testbenches/squared/squared_phase_sweep.h"
 #include "sqmul/sqmul.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_sqmul_fast {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -273,3 +276,5 @@ INSTANTIATE_TEST_SUITE_P(Mode, SqmulFastPaths, ::testing::Values(overflow_mode::
                          [](const ::testing::TestParamInfo<overflow_mode>& i) {
                              return i.param == overflow_mode::saturate ? std::string("Saturate") : std::string("Wrap");
                          });
+
+}  // namespace test_sqmul_fast

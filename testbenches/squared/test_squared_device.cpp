@@ -23,6 +23,9 @@
 #include "squared/squared_device.h"
 #include "squared_script.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_squared_device {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_NS;
@@ -474,3 +477,5 @@ TEST(SquaredTrace, GtkwaveViewReadsAtFirstSight) {
                                          "tb.out27_b", "tb.dut.sq_brdf", "tb.dut.sq.mx_sq_sel"});
     EXPECT_TRUE(problems.empty()) << joined(problems);
 }
+
+}  // namespace test_squared_device

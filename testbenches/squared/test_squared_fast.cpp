@@ -18,6 +18,9 @@
 #include "testbenches/squared/squared_phase_sweep.h"
 #include "squared/squared.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_squared_fast {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -257,3 +260,5 @@ TEST(SquaredFast, PathsAreTheBlockModelsDerivedOnes) {
     EXPECT_EQ(b.fst.min_low(), b.blk.min_low());
     EXPECT_EQ(b.fst.colour_path(), b.blk.chk_timing.path(0));
 }
+
+}  // namespace test_squared_fast

@@ -10,6 +10,9 @@
 #include "formats/squared_formats.h"
 #include "reference/brdf_reference.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_squared_golden {
+
 using namespace shading;
 
 namespace {
@@ -153,3 +156,5 @@ TEST(SquaredGolden, CloseToItsRealValuedLaw) {
         }
     EXPECT_LT(worst, 0.002);
 }
+
+}  // namespace test_squared_golden

@@ -18,6 +18,9 @@
 #include "tlm_bad_access.h"
 #include "tlm_initiator.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_line_tlm {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_NS;
@@ -315,3 +318,5 @@ TEST(LineTlmDebug, DebugReadHasNoSideEffects) {
 }
 
 }  // namespace
+
+}  // namespace test_line_tlm

@@ -24,6 +24,9 @@
 #include "tlm_bad_access.h"
 #include "tlm_initiator.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_specular_tlm {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_NS;
@@ -509,3 +512,5 @@ TEST(SpecularTlmDebug, DebugReadHasNoSideEffects) { debug_read_has_no_side_effec
 TEST(SpecularTlmDebug, DebugReadHasNoSideEffectsSquared) { debug_read_has_no_side_effects<squared_device>(3); }
 
 }  // namespace
+
+}  // namespace test_specular_tlm

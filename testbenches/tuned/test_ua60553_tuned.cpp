@@ -12,6 +12,9 @@
 #include "tuned/ua60553_tuned.h"
 #include "arith/ua60553_tuned_arith.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_ua60553_tuned {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -79,3 +82,5 @@ TEST(UA60553Tuned, RomMatchedGeneratorBitExactAgainstItsGolden) {
     EXPECT_EQ(bench.dut.a_gen.node32_k.read().to_uint64(), 0x100u - 73u) << "-0.5703125 on the Q1.7 bus";
     EXPECT_EQ(bench.dut.a_coef.read().to_uint64(), 1000u * 101u - 73u);
 }
+
+}  // namespace test_ua60553_tuned

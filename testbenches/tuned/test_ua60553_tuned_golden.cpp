@@ -10,6 +10,9 @@
 #include "arith/ua22802_arith.h"
 #include "arith/ua60553_tuned_arith.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_ua60553_tuned_golden {
+
 using namespace shading;
 
 TEST(UA60553TunedGolden, HandWorkedCoefficients) {
@@ -77,3 +80,5 @@ TEST(UA60553TunedGolden, RomMatchedFollowsTheRomNByN) {
         ASSERT_LT(tuned, 0.0316) << "below the ROM's own worst case, n = " << n;
     }
 }
+
+}  // namespace test_ua60553_tuned_golden

@@ -21,6 +21,9 @@
 #include "arith/ua22802_arith.h"
 #include "ua60553/ua60553.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_ua22802 {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_MS;
@@ -131,3 +134,5 @@ TEST(UA22802, GtkwaveSaveFileNamesEveryTracedNetItShows) {
     }
     EXPECT_EQ(listed, 27u);
 }
+
+}  // namespace test_ua22802

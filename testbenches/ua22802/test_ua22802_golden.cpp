@@ -12,6 +12,9 @@
 #include "arith/ua22802_arith.h"
 #include "ua22802_a_rom.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_ua22802_golden {
+
 using namespace shading;
 
 namespace {
@@ -98,3 +101,5 @@ TEST(UA22802Golden, BrdfPaperAccuracyClaimHoldsBitAccurately) {
     EXPECT_LT(worst, 0.04);
     EXPECT_GT(worst, 0.03) << "the quadratic model's own error at large n (3.16 %) must show";
 }
+
+}  // namespace test_ua22802_golden

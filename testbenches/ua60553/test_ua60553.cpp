@@ -16,6 +16,9 @@
 #include "core/trace.h"
 #include "ua60553/ua60553.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_ua60553 {
+
 using namespace shading;
 using namespace shading::tb;
 using sc_core::SC_NS;
@@ -296,3 +299,5 @@ TEST(UA60553Checker, AWrongGoldenValueIsCaught) {
     EXPECT_EQ(bench.checker.mismatches(), 10u);
     EXPECT_EQ(report_log::get().count(msg::mismatch), 10u);
 }
+
+}  // namespace test_ua60553

@@ -10,6 +10,9 @@
 #include "formats/specular_formats.h"
 #include "formats/ua60553_formats.h"
 
+// A folder's suites compile as one unit (cmake/shading.cmake): this file's names stay in its own namespace.
+namespace test_ua60553_golden {
+
 using namespace shading;
 
 TEST(UA60553Golden, PatentConstantsGiveAOf0_7890625nPlusHalf) {
@@ -102,3 +105,5 @@ TEST(Scene, SphereLineHasItsHighlightWhereNEqualsH) {
     EXPECT_EQ(scene::cos_code(1.0), 0x8000u);
     EXPECT_EQ(scene::cos_code(0.5), 0x4000u);
 }
+
+}  // namespace test_ua60553_golden
