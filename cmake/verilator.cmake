@@ -77,10 +77,10 @@ find_package(Threads REQUIRED)
 
 # Verilator's runtime, compiled once: verilate() adds verilated.cpp, verilated_threads.cpp and (with
 # TRACE) verilated_vcd_c.cpp to every program that verilates a model (test_rtl, test_rtl_interp,
-# perf_models), 15-18 CPU seconds at -O3 each time; the
-# shading_verilate_* functions take them out of the program again and link this library. These
-# sources read VM_TRACE only to define WAVES, which nothing reads, so one object serves the models
-# without tracing (test_rtl_interp) too. -O3 like the rest of the build (perf_models' RTL row).
+# perf_models), 15-18 CPU seconds at -O3 each time; the shading_verilate_* functions take them out
+# of the program again and link this library. These sources read VM_TRACE only to define WAVES,
+# which nothing reads, so one object serves the models without tracing (test_rtl_interp) too. -O3
+# like the rest of the build (perf_models' RTL row).
 set(SHADING_VERILATED_RUNTIME ${VERILATOR_ROOT}/include/verilated.cpp ${VERILATOR_ROOT}/include/verilated_threads.cpp
     ${VERILATOR_ROOT}/include/verilated_vcd_c.cpp)
 add_library(shading_verilated STATIC ${SHADING_VERILATED_RUNTIME})
@@ -110,8 +110,9 @@ set(SHADING_RTL_OPT_FLAGS "-O1" CACHE STRING
 #   Verilator's headers (Vrtl_squared_saturate's 10 files: 38.8 CPU s one by one, 5.3 s as one).
 #   The models of one target at one level share that unit, <target>.dir/rtl_models<level>__unity.cpp,
 #   for the same reason: the squared-quadratic and square-and-multiply devices' eight models took
-#   29.6 CPU s as eight units and 6.2 s as one. ALONE: a unit of its own, <prefix>__unity.cpp (a large model, the pipeline's 2-7 MB of C++,
-#   whose headers are a small share and which then compiles beside the others).
+#   29.6 CPU s as eight units and 6.2 s as one. ALONE: a unit of its own, <prefix>__unity.cpp (a
+#   large model, the pipeline's 2-7 MB of C++, whose headers are a small share and which then
+#   compiles beside the others).
 # - that unit compiled at SHADING_RTL_OPT_FLAGS (below) in a Release build, or at -O3 with SPEED (the
 #   perf_models row, whose rate docs/speed.md quotes), or at OPT's flags.
 function(shading_verilated_finish target prefix)
