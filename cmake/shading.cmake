@@ -112,9 +112,9 @@ endfunction()
 
 # SHADING_UNITY_SUITES: a test program's files compiled as one unit (CMake's UNITY_BUILD), each file's
 # names in a namespace of its own. The suites instantiate the same SystemC modules, GoogleTest
-# fixtures and checkers, and g++ generated that code again in every file: the 13 interpolation suites
-# took 103 CPU s one by one and 20 as one unit, all the folders' suites 447 and 176 (docs/tests.md).
-# OFF compiles file by file (quicker to rebuild after editing one suite).
+# fixtures and checkers, and g++ generated that code again in every file: the default build from an
+# empty folder took 816 CPU s with it and 937 without (docs/tests.md). OFF compiles file by file
+# (quicker to rebuild after editing one suite).
 option(SHADING_UNITY_SUITES "Compile each test program's files as one unit" ON)
 
 function(shading_add_gtest name)
