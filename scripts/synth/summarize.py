@@ -150,7 +150,7 @@ for _f in range(15, 21):
 # Rising edges of clk from strobe 17's fall to output 29's rise (the synchroniser sync17's two,
 # the taking edge, one per step, the done edge) of the clocked designs, as rtl/squared/sq_ctrl.v,
 # rtl/sqmul/sqmul_ctrl.v and rtl/sqmul/sqmul_r2l_ctrl.v define them (checked against the golden
-# models' counts by test_rtl_squared.cpp): k + 4 = floor(log2 n) + 4, floor(log2 n) + popcount(n) + 3
+# models' counts by test_rtl_sqmul.cpp and test_rtl_squared_variants.cpp): k + 4 = floor(log2 n) + 4, floor(log2 n) + popcount(n) + 3
 # and floor(log2 n) + 5 (bit_length is floor(log2 n) + 1). None for the combinational ones.
 CLOCKS = {
     "squared_saturate": lambda n: n.bit_length() + 3,
